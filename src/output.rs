@@ -1,0 +1,189 @@
+//! Image files (SPEC §3): the report's `.raw`, and PNG, JPEG and PPM, chosen by extension.
+//!
+//! - `.raw`: width·height·3 bytes, RGB, rows top to bottom, no header (the report's);
+//! - `.png`: 8-bit RGB, fast deflate (frames are written by the hundred);
+//! - `.jpg`/`.jpeg`: baseline JPEG, quality 90 unless set;
+//! - `.ppm`: binary P6 with maxval 255.
+//!
+//! `write_atomic` writes to a temporary file in the destination folder and renames it into
+//! place, so a file under its final name is always complete.
+
+use crate::render::Frame;
+use image::codecs::jpeg::JpegEncoder;
+use image::codecs::png::{CompressionType, FilterType, PngEncoder};
+use image::{ExtendedColorType, ImageEncoder};
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+/// JPEG quality when none is given.
+pub const DEFAULT_JPEG_QUALITY: u8 = 90;
+
+/// An output image format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ImageFormat {
+    Raw,
+    Png,
+    Jpeg { quality: u8 },
+    Ppm,
+}
+
+/// Why an image could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    #[error("{path}: unknown image extension (use .png, .jpg, .jpeg, .ppm or .raw)")]
+    UnknownExtension { path: PathBuf },
+    #[error("{path}: {source}")]
+    Io {
+        path: PathBuf,
+        #[source]
+        source: std::io::Error,
+    },
+    #[error("cannot encode the image: {0}")]
+    Encode(#[from] image::ImageError),
+    #[error("cannot write the image: {0}")]
+    Stream(#[from] std::io::Error),
+}
+
+impl ImageFormat {
+    /// The format named by a path's extension (case-insensitive).
+    pub fn from_path(path: &Path) -> Result<ImageFormat, OutputError> {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(|e| e.to_ascii_lowercase());
+        match ext.as_deref() {
+            Some("png") => Ok(ImageFormat::Png),
+            Some("jpg" | "jpeg") => Ok(ImageFormat::Jpeg {
+                quality: DEFAULT_JPEG_QUALITY,
+            }),
+            Some("ppm") => Ok(ImageFormat::Ppm),
+            Some("raw") => Ok(ImageFormat::Raw),
+            _ => Err(OutputError::UnknownExtension {
+                path: path.to_path_buf(),
+            }),
+        }
+    }
+
+    /// The usual file extension.
+    pub fn extension(&self) -> &'static str {
+        match self {
+            ImageFormat::Raw => "raw",
+            ImageFormat::Png => "png",
+            ImageFormat::Jpeg { .. } => "jpg",
+            ImageFormat::Ppm => "ppm",
+        }
+    }
+}
+
+/// Encodes `frame` in `format` into `out`.
+pub fn encode(frame: &Frame, format: ImageFormat, out: &mut dyn Write) -> Result<(), OutputError> {
+    let (w, h) = (frame.width, frame.height);
+    match format {
+        ImageFormat::Raw => out.write_all(&frame.pixels)?,
+        ImageFormat::Ppm => {
+            write!(out, "P6\n{w} {h}\n255\n")?;
+            out.write_all(&frame.pixels)?;
+        }
+        ImageFormat::Png => {
+            let enc =
+                PngEncoder::new_with_quality(out, CompressionType::Fast, FilterType::Adaptive);
+            enc.write_image(&frame.pixels, w, h, ExtendedColorType::Rgb8)?;
+        }
+        ImageFormat::Jpeg { quality } => {
+            let enc = JpegEncoder::new_with_quality(out, quality.clamp(1, 100));
+            enc.write_image(&frame.pixels, w, h, ExtendedColorType::Rgb8)?;
+        }
+    }
+    Ok(())
+}
+
+/// Writes `frame` to `path` atomically: a temporary file beside it, then a rename. On any
+/// error the temporary file is removed and nothing appears under `path`.
+pub fn write_atomic(path: &Path, frame: &Frame, format: ImageFormat) -> Result<(), OutputError> {
+    let io = |source| OutputError::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("image");
+    let tmp = tempfile::Builder::new()
+        .prefix(&format!(".{name}."))
+        .suffix(".tmp")
+        .tempfile_in(dir)
+        .map_err(io)?;
+    {
+        let mut w = BufWriter::new(tmp.as_file());
+        encode(frame, format, &mut w)?;
+        w.flush().map_err(io)?;
+    }
+    tmp.persist(path).map_err(|e| io(e.error))?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn frame() -> Frame {
+        Frame {
+            width: 2,
+            height: 1,
+            pixels: vec![255, 0, 0, 0, 128, 255],
+        }
+    }
+
+    #[test]
+    fn format_from_extension() {
+        assert_eq!(
+            ImageFormat::from_path(Path::new("a/b.PNG")).unwrap(),
+            ImageFormat::Png
+        );
+        assert_eq!(
+            ImageFormat::from_path(Path::new("x.jpeg")).unwrap(),
+            ImageFormat::Jpeg { quality: 90 }
+        );
+        assert_eq!(
+            ImageFormat::from_path(Path::new("x.raw")).unwrap(),
+            ImageFormat::Raw
+        );
+        assert_eq!(
+            ImageFormat::from_path(Path::new("x.ppm")).unwrap(),
+            ImageFormat::Ppm
+        );
+        assert!(ImageFormat::from_path(Path::new("x.tiff")).is_err());
+        assert!(ImageFormat::from_path(Path::new("noext")).is_err());
+    }
+
+    #[test]
+    fn raw_and_ppm_bytes() {
+        let mut raw = Vec::new();
+        encode(&frame(), ImageFormat::Raw, &mut raw).unwrap();
+        assert_eq!(raw, frame().pixels);
+        let mut ppm = Vec::new();
+        encode(&frame(), ImageFormat::Ppm, &mut ppm).unwrap();
+        assert_eq!(&ppm[..11], b"P6\n2 1\n255\n");
+        assert_eq!(&ppm[11..], &frame().pixels[..]);
+    }
+
+    #[test]
+    fn png_round_trips() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("f.png");
+        write_atomic(&path, &frame(), ImageFormat::Png).unwrap();
+        let back = image::open(&path).unwrap().to_rgb8();
+        assert_eq!(back.into_raw(), frame().pixels);
+        // Only the final file is left in the folder.
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[test]
+    fn failed_write_leaves_nothing() {
+        let dir = tempfile::tempdir().unwrap();
+        let missing = dir.path().join("no/such/dir/f.png");
+        assert!(write_atomic(&missing, &frame(), ImageFormat::Png).is_err());
+        assert!(!missing.exists());
+    }
+}

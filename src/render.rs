@@ -1,0 +1,99 @@
+//! One image: every pixel's camera ray traced, in parallel over rows with rayon.
+//!
+//! Each pixel depends only on the scene and its own coordinates, so the bytes are the
+//! same whatever the thread count. With `samples` = n > 1 the pixel is the mean of an
+//! n×n stratified grid of sub-pixel centres, each sample clamped before averaging (see
+//! docs/decisions.md); n = 1 samples the pixel centre, as the report does.
+
+use crate::camera::Camera;
+use crate::scene::Scene;
+use crate::texture::Color;
+use crate::trace::{RayCount, Tracer};
+use rayon::prelude::*;
+
+/// An 8-bit RGB image, rows top to bottom.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Frame {
+    pub width: u32,
+    pub height: u32,
+    /// width·height·3 bytes.
+    pub pixels: Vec<u8>,
+}
+
+/// Clamp to 0..1, then round(255·c).
+#[inline]
+pub fn to_byte(c: f64) -> u8 {
+    // NaN clamps to NaN and `as u8` turns it into 0: a broken pixel is black, never a panic.
+    (c.clamp(0.0, 1.0) * 255.0).round() as u8
+}
+
+/// Renders `scene`'s objects and lights through `camera` at `width`×`height` with
+/// `samples`² samples per pixel. Runs on the current rayon pool.
+pub fn render(
+    scene: &Scene,
+    camera: &Camera,
+    width: u32,
+    height: u32,
+    samples: u32,
+) -> (Frame, RayCount) {
+    let tracer = Tracer::new(scene);
+    let row_len = width as usize * 3;
+    let mut pixels = vec![0u8; row_len * height as usize];
+    let n = samples.max(1);
+    let count = pixels
+        .par_chunks_mut(row_len)
+        .enumerate()
+        .map(|(j, row)| {
+            let mut count = RayCount::default();
+            for (i, px) in row.chunks_exact_mut(3).enumerate() {
+                let c = pixel(&tracer, camera, i as f64, j as f64, n, &mut count);
+                px.copy_from_slice(&[to_byte(c.x), to_byte(c.y), to_byte(c.z)]);
+            }
+            count
+        })
+        .reduce(RayCount::default, |a, b| a + b);
+    let frame = Frame {
+        width,
+        height,
+        pixels,
+    };
+    (frame, count)
+}
+
+/// The colour of pixel (i, j) from an n×n grid of samples.
+#[inline]
+fn pixel(tracer: &Tracer, camera: &Camera, i: f64, j: f64, n: u32, count: &mut RayCount) -> Color {
+    if n == 1 {
+        return tracer.primary(&camera.ray(i + 0.5, j + 0.5), count);
+    }
+    let step = 1.0 / n as f64;
+    let mut sum = Color::ZERO;
+    for b in 0..n {
+        for a in 0..n {
+            let x = i + (a as f64 + 0.5) * step;
+            let y = j + (b as f64 + 0.5) * step;
+            let c = tracer.primary(&camera.ray(x, y), count);
+            sum += c.clamp(Color::ZERO, Color::ONE);
+        }
+    }
+    sum / (n * n) as f64
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn clamp_then_round() {
+        assert_eq!(to_byte(-0.5), 0);
+        assert_eq!(to_byte(0.0), 0);
+        assert_eq!(to_byte(1.0), 255);
+        assert_eq!(to_byte(3.7), 255);
+        // 255·0.5 = 127.5 rounds half away from zero to 128.
+        assert_eq!(to_byte(0.5), 128);
+        // 255·0.2 = 51.00000000000001 → 51; 255·0.1 = 25.5 → 26.
+        assert_eq!(to_byte(0.2), 51);
+        assert_eq!(to_byte(0.1), 26);
+        assert_eq!(to_byte(f64::NAN), 0);
+    }
+}

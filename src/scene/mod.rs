@@ -1,0 +1,72 @@
+//! A scene as Scene.txt describes it (report III.1, SPEC §1), and loading one.
+//!
+//! ```text
+//! 640 480                 # ResX ResY
+//! 0 2 10                  # camera position
+//! 0 1 0                   # point looked at
+//! 0 20                    # FogType FogDistance (0 none, 1 linear, 2 exp, 3 exp²)
+//! 1 1 0 1                 # NSpheres NPlanes NCylinders NLights
+//! 1 0 1 0   1 1 0 0   0.7 0.3 0 1 0 0            # sphere: R Cx Cy Cz TEXTURE MATERIAL
+//! 0 0 0  0 1 0   2 1 1 1 1 0 0 0 0 0 0   1 0 0 1 0 0   # plane: P N TEXTURE MATERIAL
+//! 5 10 5  1 1 1  1        # light: position, colour, intensity
+//! ```
+//!
+//! TEXTURE is `1 R G B` or `2 Type C1 C2 C3` (Type 1 checker, 2 Perlin, 3 wood,
+//! 4 marble); MATERIAL is `Kd Kr Kt Ior BumpType BumpValue`. Cylinders are
+//! `Ax Ay Az Px Py Pz Radius TEXTURE MATERIAL`, infinite, with an axis of any direction.
+
+mod error;
+mod lexer;
+mod parser;
+
+pub use error::{FileLoc, SceneError};
+
+use crate::camera::Camera;
+use crate::fog::Fog;
+use crate::object::{Light, Object};
+use glam::DVec3;
+use std::path::Path;
+
+/// The largest image side accepted.
+pub const MAX_SIDE: u32 = 16384;
+/// The largest pixel count accepted (2^26: 201 MB of RGB bytes, more in the float pipeline).
+pub const MAX_PIXELS: u64 = 1 << 26;
+/// The largest count of each kind of object or light.
+pub const MAX_COUNT: u64 = 1_000_000;
+
+/// Everything one Scene.txt holds.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Scene {
+    pub width: u32,
+    pub height: u32,
+    pub eye: DVec3,
+    pub look_at: DVec3,
+    pub fog: Fog,
+    /// Spheres, then planes, then cylinders, in file order.
+    pub objects: Vec<Object>,
+    pub lights: Vec<Light>,
+}
+
+impl Scene {
+    /// Parses Scene.txt source; `file` is the name errors carry.
+    pub fn parse(src: &str, file: &str) -> Result<Scene, SceneError> {
+        parser::parse(src, file)
+    }
+
+    /// Reads and parses a scene file.
+    pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        let name = path.display().to_string();
+        let bytes = std::fs::read(path).map_err(|source| SceneError::Io {
+            path: name.clone(),
+            source,
+        })?;
+        let src = parser::decode(&bytes, &name)?;
+        Scene::parse(src, &name)
+    }
+
+    /// The scene's own camera, at its resolution.
+    pub fn camera(&self) -> Camera {
+        Camera::new(self.eye, self.look_at, self.width, self.height)
+            .expect("the parser refuses an eye placed on its look-at point")
+    }
+}

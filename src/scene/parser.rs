@@ -1,0 +1,343 @@
+//! The Scene.txt grammar: records in a fixed order (SPEC §1), checked as they are read.
+//! Every error points at the token that broke a rule and names its place in the
+//! structure; nothing is rendered from a scene that failed.
+
+use super::error::{FileLoc, SceneError};
+use super::lexer::{Lexer, Token};
+use super::{Scene, MAX_COUNT, MAX_PIXELS, MAX_SIDE};
+use crate::bump::Bump;
+use crate::camera::Camera;
+use crate::fog::Fog;
+use crate::object::{Light, Material, Object};
+use crate::shapes::{Plane, Quadric, Shape, Sphere};
+use crate::texture::{Color, Texture};
+use glam::DVec3;
+
+/// Decodes file bytes as UTF-8, or says where the first invalid byte is.
+pub(super) fn decode<'a>(bytes: &'a [u8], file: &str) -> Result<&'a str> {
+    std::str::from_utf8(bytes).map_err(|e| {
+        let good = std::str::from_utf8(&bytes[..e.valid_up_to()]).unwrap_or_default();
+        let line = good.matches('\n').count() + 1;
+        let column = good.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+        SceneError::Syntax {
+            loc: FileLoc {
+                file: file.to_string(),
+                line,
+                column,
+            },
+            message: "the file is not UTF-8 text".to_string(),
+            context: "byte that cannot be read".to_string(),
+        }
+    })
+}
+
+/// Where the parser is in the structure, for messages: a record (with its index among
+/// its kind), an optional part (texture, material), and the field.
+#[derive(Clone, Copy)]
+struct Place {
+    record: &'static str,
+    index: Option<(u64, u64)>,
+    part: Option<&'static str>,
+}
+
+impl Place {
+    fn describe(&self, field: &str) -> String {
+        let mut s = self.record.to_string();
+        if let Some((i, n)) = self.index {
+            s += &format!(" {i} of {n}");
+        }
+        if let Some(part) = self.part {
+            s += &format!(", {part}");
+        }
+        if !field.is_empty() {
+            s += &format!(", field {field}");
+        }
+        s
+    }
+}
+
+struct Parser<'a> {
+    lexer: Lexer<'a>,
+    file: &'a str,
+    place: Place,
+}
+
+type Result<T> = std::result::Result<T, SceneError>;
+
+impl<'a> Parser<'a> {
+    fn error_at(&self, line: usize, column: usize, message: String, field: &str) -> SceneError {
+        SceneError::Syntax {
+            loc: FileLoc {
+                file: self.file.to_string(),
+                line,
+                column,
+            },
+            message,
+            context: self.place.describe(field),
+        }
+    }
+
+    fn error(&self, tok: &Token, message: String, field: &str) -> SceneError {
+        self.error_at(tok.line, tok.column, message, field)
+    }
+
+    /// The next token, or an error at the end of the file naming what was expected.
+    fn token(&mut self, field: &str, what: &str) -> Result<Token<'a>> {
+        match self.lexer.next() {
+            Some(tok) => Ok(tok),
+            None => {
+                let (line, column) = self.lexer.position();
+                let msg = format!("expected {what} for {field}, found the end of the file");
+                Err(self.error_at(line, column, msg, field))
+            }
+        }
+    }
+
+    /// A finite floating-point number.
+    fn number(&mut self, field: &str) -> Result<(f64, Token<'a>)> {
+        let tok = self.token(field, "a number")?;
+        match tok.text.parse::<f64>() {
+            Ok(v) if v.is_finite() => Ok((v, tok)),
+            Ok(_) => Err(self.error(
+                &tok,
+                format!("expected a finite number for {field}, found '{}'", tok.text),
+                field,
+            )),
+            Err(_) => Err(self.error(
+                &tok,
+                format!("expected a number for {field}, found '{}'", tok.text),
+                field,
+            )),
+        }
+    }
+
+    /// A number that must be > 0.
+    fn positive(&mut self, field: &str) -> Result<f64> {
+        let (v, tok) = self.number(field)?;
+        if v > 0.0 {
+            Ok(v)
+        } else {
+            let msg = format!("{field} must be greater than 0, found '{}'", tok.text);
+            Err(self.error(&tok, msg, field))
+        }
+    }
+
+    /// An integer literal within `lo..=hi`; `what` describes the allowed values.
+    fn integer(&mut self, field: &str, lo: u64, hi: u64, what: &str) -> Result<(u64, Token<'a>)> {
+        let tok = self.token(field, what)?;
+        let v = tok.text.strip_prefix('+').unwrap_or(tok.text);
+        let bad = |p: &Self, m: String| Err(p.error(&tok, m, field));
+        if v.is_empty() || !v.bytes().all(|b| b.is_ascii_digit()) {
+            let kind = if tok.text.parse::<f64>().is_ok() {
+                "an integer"
+            } else {
+                "a number"
+            };
+            return bad(
+                self,
+                format!(
+                    "expected {what} for {field}, found '{}' (not {kind})",
+                    tok.text
+                ),
+            );
+        }
+        match v.parse::<u64>() {
+            Ok(n) if (lo..=hi).contains(&n) => Ok((n, tok)),
+            _ => bad(
+                self,
+                format!("expected {what} for {field}, found '{}'", tok.text),
+            ),
+        }
+    }
+
+    fn vector(&mut self, fields: [&str; 3]) -> Result<(DVec3, Token<'a>)> {
+        let (x, tok) = self.number(fields[0])?;
+        let (y, _) = self.number(fields[1])?;
+        let (z, _) = self.number(fields[2])?;
+        Ok((DVec3::new(x, y, z), tok))
+    }
+
+    /// A vector that must not be zero (a normal or an axis).
+    fn direction(&mut self, fields: [&str; 3], name: &str) -> Result<DVec3> {
+        let (v, tok) = self.vector(fields)?;
+        if v.try_normalize().is_none() {
+            let msg = format!("the {name} ({} {} {}) has zero length", v.x, v.y, v.z);
+            return Err(self.error(&tok, msg, fields[0]));
+        }
+        Ok(v)
+    }
+
+    fn color(&mut self, fields: [&str; 3]) -> Result<Color> {
+        Ok(self.vector(fields)?.0)
+    }
+
+    fn texture(&mut self) -> Result<Texture> {
+        self.place.part = Some("texture");
+        let (kind, _) = self.integer("kind", 1, 2, "1 (one colour) or 2 (procedural)")?;
+        let tex = if kind == 1 {
+            Texture::Uniform(self.color(["R", "G", "B"])?)
+        } else {
+            let what = "1 (checker), 2 (Perlin), 3 (wood) or 4 (marble)";
+            let (ty, _) = self.integer("Type", 1, 4, what)?;
+            let c1 = self.color(["C1.r", "C1.g", "C1.b"])?;
+            let c2 = self.color(["C2.r", "C2.g", "C2.b"])?;
+            let c3 = self.color(["C3.r", "C3.g", "C3.b"])?;
+            match ty {
+                1 => Texture::Checker(c1, c2),
+                2 => Texture::Perlin(c1, c2, c3),
+                3 => Texture::Wood(c1, c2),
+                _ => Texture::Marble(c1, c2),
+            }
+        };
+        self.place.part = None;
+        Ok(tex)
+    }
+
+    fn material(&mut self) -> Result<Material> {
+        self.place.part = Some("material");
+        let (kd, _) = self.number("Kd")?;
+        let (kr, _) = self.number("Kr")?;
+        let (kt, _) = self.number("Kt")?;
+        let ior = self.positive("Ior")?;
+        let what = "0 (none), 1 (uniform) or 2 (plane/water)";
+        let (bump_type, _) = self.integer("BumpType", 0, 2, what)?;
+        let (eps, _) = self.number("BumpValue")?;
+        self.place.part = None;
+        let bump = match bump_type {
+            0 => Bump::None,
+            1 => Bump::Uniform(eps),
+            _ => Bump::Water(eps),
+        };
+        Ok(Material {
+            kd,
+            kr,
+            kt,
+            ior,
+            bump,
+        })
+    }
+
+    fn object(&mut self, shape: Shape) -> Result<Object> {
+        let texture = self.texture()?;
+        let material = self.material()?;
+        Ok(Object {
+            shape,
+            texture,
+            material,
+        })
+    }
+
+    fn enter(&mut self, record: &'static str, index: Option<(u64, u64)>) {
+        self.place = Place {
+            record,
+            index,
+            part: None,
+        };
+    }
+}
+
+pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
+    let mut p = Parser {
+        lexer: Lexer::new(src),
+        file,
+        place: Place {
+            record: "resolution",
+            index: None,
+            part: None,
+        },
+    };
+    let side = format!("an integer from 1 to {MAX_SIDE}");
+    let (width, _) = p.integer("ResX", 1, MAX_SIDE as u64, &side)?;
+    let (height, tok) = p.integer("ResY", 1, MAX_SIDE as u64, &side)?;
+    if width * height > MAX_PIXELS {
+        let msg = format!(
+            "{width}×{height} is {} pixels, past the limit of {MAX_PIXELS} (2^26): it would need gigabytes",
+            width * height
+        );
+        return Err(p.error(&tok, msg, "ResY"));
+    }
+
+    p.enter("camera position", None);
+    let (eye, _) = p.vector(["x", "y", "z"])?;
+    p.enter("point looked at", None);
+    let (look_at, look_tok) = p.vector(["x", "y", "z"])?;
+    if Camera::new(eye, look_at, 1, 1).is_none() {
+        let msg = "the camera is placed on the point it looks at".to_string();
+        return Err(p.error(&look_tok, msg, "x"));
+    }
+
+    p.enter("fog", None);
+    let (fog_type, _) = p.integer("FogType", 0, 3, "0 (none), 1, 2 or 3")?;
+    let (fog_distance, tok) = p.number("FogDistance")?;
+    if fog_type != 0 && fog_distance <= 0.0 {
+        let msg = format!(
+            "FogDistance must be greater than 0 with fog, found '{}'",
+            tok.text
+        );
+        return Err(p.error(&tok, msg, "FogDistance"));
+    }
+    let fog = match fog_type {
+        0 => Fog::None,
+        1 => Fog::Linear(fog_distance),
+        2 => Fog::Exponential(fog_distance),
+        _ => Fog::ExponentialSquared(fog_distance),
+    };
+
+    p.enter("counts", None);
+    let count = format!("a count from 0 to {MAX_COUNT}");
+    let (ns, _) = p.integer("NSpheres", 0, MAX_COUNT, &count)?;
+    let (np, _) = p.integer("NPlanes", 0, MAX_COUNT, &count)?;
+    let (nc, _) = p.integer("NCylinders", 0, MAX_COUNT, &count)?;
+    let (nl, _) = p.integer("NLights", 0, MAX_COUNT, &count)?;
+
+    let mut objects = Vec::new();
+    for i in 1..=ns {
+        p.enter("sphere", Some((i, ns)));
+        let radius = p.positive("Radius")?;
+        let (center, _) = p.vector(["Cx", "Cy", "Cz"])?;
+        objects.push(p.object(Shape::Sphere(Sphere::new(center, radius)))?);
+    }
+    for i in 1..=np {
+        p.enter("plane", Some((i, np)));
+        let (point, _) = p.vector(["Px", "Py", "Pz"])?;
+        let normal = p.direction(["Nx", "Ny", "Nz"], "normal")?;
+        objects.push(p.object(Shape::Plane(Plane::new(point, normal)))?);
+    }
+    for i in 1..=nc {
+        p.enter("cylinder", Some((i, nc)));
+        let axis = p.direction(["Ax", "Ay", "Az"], "axis")?;
+        let (point, _) = p.vector(["Px", "Py", "Pz"])?;
+        let radius = p.positive("Radius")?;
+        objects.push(p.object(Shape::Quadric(Quadric::cylinder(axis, point, radius)))?);
+    }
+    let mut lights = Vec::new();
+    for i in 1..=nl {
+        p.enter("light", Some((i, nl)));
+        let (position, _) = p.vector(["Lx", "Ly", "Lz"])?;
+        let color = p.color(["R", "G", "B"])?;
+        let (intensity, _) = p.number("Intensity")?;
+        lights.push(Light {
+            position,
+            color,
+            intensity,
+        });
+    }
+
+    if let Some(tok) = p.lexer.next() {
+        p.enter("after the last record", None);
+        let msg = format!(
+            "expected the end of the file after the last light, found '{}' (do the counts match the records?)",
+            tok.text
+        );
+        return Err(p.error(&tok, msg, ""));
+    }
+    Ok(Scene {
+        width: width as u32,
+        height: height as u32,
+        eye,
+        look_at,
+        fog,
+        objects,
+        lights,
+    })
+}

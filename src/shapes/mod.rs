@@ -1,0 +1,127 @@
+//! Geometry: the shapes a Scene.txt can hold and how a ray meets them (report IV.1).
+//!
+//! Every shape answers one question, `roots`: the parameters t (up to two, ascending, any
+//! sign) where the ray's line crosses its surface. From that the tracer gets the nearest
+//! hit (`hit`, t in (0.01, t_max)) and the list of surface crossings a shadow ray makes
+//! (`crossings`). `normal` gives the outward unit geometric normal at a surface point;
+//! deciding entering or leaving, and flipping the normal to face the ray, is the tracer's
+//! job (SPEC §2). A plane's "outward" side is the side its normal points to.
+//!
+//! Shapes are a closed enum, not trait objects, so the hot loop has no virtual calls.
+
+mod plane;
+mod quadric;
+mod sphere;
+
+pub use plane::Plane;
+pub use quadric::Quadric;
+pub use sphere::Sphere;
+
+use crate::optics::{Ray, T_MIN};
+use glam::DVec3;
+
+/// Where a line crosses a surface: up to two parameters, ascending.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Roots {
+    t: [f64; 2],
+    n: usize,
+}
+
+impl Roots {
+    pub const NONE: Roots = Roots { t: [0.0; 2], n: 0 };
+
+    pub fn one(t: f64) -> Roots {
+        Roots { t: [t, t], n: 1 }
+    }
+
+    /// Two roots, stored in ascending order.
+    pub fn two(a: f64, b: f64) -> Roots {
+        Roots {
+            t: [a.min(b), a.max(b)],
+            n: 2,
+        }
+    }
+
+    /// The roots as a slice, ascending.
+    pub fn as_slice(&self) -> &[f64] {
+        &self.t[..self.n]
+    }
+}
+
+/// A surface of the scene.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Shape {
+    Sphere(Sphere),
+    Plane(Plane),
+    Quadric(Quadric),
+}
+
+impl Shape {
+    /// The line parameters where `ray` crosses the surface, ascending, any sign.
+    #[inline]
+    pub fn roots(&self, ray: &Ray) -> Roots {
+        match self {
+            Shape::Sphere(s) => s.roots(ray),
+            Shape::Plane(p) => p.roots(ray),
+            Shape::Quadric(q) => q.roots(ray),
+        }
+    }
+
+    /// The nearest hit with T_MIN < t < t_max, if any.
+    #[inline]
+    pub fn hit(&self, ray: &Ray, t_max: f64) -> Option<f64> {
+        self.roots(ray)
+            .as_slice()
+            .iter()
+            .copied()
+            .find(|&t| t > T_MIN && t < t_max)
+    }
+
+    /// Every crossing with T_MIN < t < t_max (what a shadow ray passes through).
+    #[inline]
+    pub fn crossings(&self, ray: &Ray, t_max: f64) -> impl Iterator<Item = f64> {
+        let roots = self.roots(ray);
+        (0..roots.n)
+            .map(move |i| roots.t[i])
+            .filter(move |&t| t > T_MIN && t < t_max)
+    }
+
+    /// The outward unit normal at a point `p` of the surface.
+    #[inline]
+    pub fn normal(&self, p: DVec3) -> DVec3 {
+        match self {
+            Shape::Sphere(s) => s.normal(p),
+            Shape::Plane(pl) => pl.normal(),
+            Shape::Quadric(q) => q.normal(p),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hit_skips_roots_at_or_below_epsilon_and_beyond_t_max() {
+        // A sphere of radius 1 around the origin, ray from inside along +x: roots −1 and 1.
+        let s = Shape::Sphere(Sphere::new(DVec3::ZERO, 1.0));
+        let r = Ray::new(DVec3::ZERO, DVec3::X);
+        assert_eq!(s.hit(&r, f64::INFINITY), Some(1.0));
+        assert_eq!(s.hit(&r, 0.5), None);
+        // From a point on the surface the ray does not hit itself at t = 0.
+        let r = Ray::new(DVec3::new(-1.0, 0.0, 0.0), DVec3::X);
+        assert_eq!(s.hit(&r, f64::INFINITY), Some(2.0));
+        assert_eq!(
+            s.crossings(&r, f64::INFINITY).collect::<Vec<_>>(),
+            vec![2.0]
+        );
+    }
+
+    #[test]
+    fn crossings_lists_both_sides() {
+        let s = Shape::Sphere(Sphere::new(DVec3::new(0.0, 0.0, -5.0), 1.0));
+        let r = Ray::new(DVec3::ZERO, -DVec3::Z);
+        assert_eq!(s.crossings(&r, 100.0).collect::<Vec<_>>(), vec![4.0, 6.0]);
+        assert_eq!(s.crossings(&r, 5.0).collect::<Vec<_>>(), vec![4.0]);
+    }
+}

@@ -1,0 +1,215 @@
+//! General quadrics (report IV.1.3) and the infinite cylinder built from one (IV.1.4).
+//!
+//! F(x,y,z) = A·x² + B·y² + C·z² + D·xy + E·xz + F·yz + G·x + H·y + I·z + J = 0, written in
+//! coordinates relative to `origin` (for a cylinder, its point on the axis), which keeps
+//! the coefficients small and the roots exact far from the world origin. Putting the ray in
+//! gives Aq·t² + Bq·t + Cq = 0 with the report's Aq, Bq, Cq; Aq ≈ 0 leaves the linear root
+//! −Cq/Bq. The normal is the gradient of F, so "outward" is where F grows: for a cylinder,
+//! away from the axis.
+//!
+//! A cylinder of unit axis a and radius r is |x|² − (a·x)² − r² = 0, i.e.
+//! A = 1 − ax², B = 1 − ay², C = 1 − az², D = −2·ax·ay, E = −2·ax·az, F = −2·ay·az, J = −r².
+//! With a = x̂ this is the report's y² + z² − 1 = 0 (B = C = 1, J = −1).
+
+use super::Roots;
+use crate::optics::Ray;
+use glam::DVec3;
+
+/// Below this |Aq| the equation is treated as linear (the ray runs along a ruling).
+const LINEAR_EPS: f64 = 1e-12;
+
+/// A quadric surface F = 0, F in coordinates relative to `origin`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Quadric {
+    pub origin: DVec3,
+    /// The ten coefficients A, B, C, D, E, F, G, H, I, J of the report.
+    pub coef: [f64; 10],
+}
+
+impl Quadric {
+    /// The infinite cylinder of radius `radius` around the line through `point` along
+    /// `axis` (any direction, not zero).
+    pub fn cylinder(axis: DVec3, point: DVec3, radius: f64) -> Quadric {
+        let a = axis.normalize();
+        Quadric {
+            origin: point,
+            coef: [
+                1.0 - a.x * a.x,
+                1.0 - a.y * a.y,
+                1.0 - a.z * a.z,
+                -2.0 * a.x * a.y,
+                -2.0 * a.x * a.z,
+                -2.0 * a.y * a.z,
+                0.0,
+                0.0,
+                0.0,
+                -radius * radius,
+            ],
+        }
+    }
+
+    /// F at a world point (negative inside a cylinder, zero on it).
+    pub fn value(&self, p: DVec3) -> f64 {
+        let [a, b, c, d, e, f, g, h, i, j] = self.coef;
+        let p = p - self.origin;
+        a * p.x * p.x
+            + b * p.y * p.y
+            + c * p.z * p.z
+            + d * p.x * p.y
+            + e * p.x * p.z
+            + f * p.y * p.z
+            + g * p.x
+            + h * p.y
+            + i * p.z
+            + j
+    }
+
+    #[inline]
+    pub fn roots(&self, ray: &Ray) -> Roots {
+        let [a, b, c, d, e, f, g, h, i, j] = self.coef;
+        let o = ray.origin - self.origin;
+        let v = ray.dir;
+        let aq = a * v.x * v.x
+            + b * v.y * v.y
+            + c * v.z * v.z
+            + d * v.x * v.y
+            + e * v.x * v.z
+            + f * v.y * v.z;
+        let bq = 2.0 * (a * o.x * v.x + b * o.y * v.y + c * o.z * v.z)
+            + d * (o.x * v.y + o.y * v.x)
+            + e * (o.x * v.z + v.x * o.z)
+            + f * (o.y * v.z + v.y * o.z)
+            + g * v.x
+            + h * v.y
+            + i * v.z;
+        let cq = a * o.x * o.x
+            + b * o.y * o.y
+            + c * o.z * o.z
+            + d * o.x * o.y
+            + e * o.x * o.z
+            + f * o.y * o.z
+            + g * o.x
+            + h * o.y
+            + i * o.z
+            + j;
+        if aq.abs() < LINEAR_EPS {
+            if bq.abs() < LINEAR_EPS {
+                return Roots::NONE;
+            }
+            return Roots::one(-cq / bq);
+        }
+        let disc = bq * bq - 4.0 * aq * cq;
+        if disc < 0.0 {
+            return Roots::NONE;
+        }
+        // The cancellation-free form of (−Bq ∓ √disc) / 2Aq.
+        let q = -0.5 * (bq + disc.sqrt().copysign(bq));
+        if q == 0.0 {
+            return Roots::two(0.0, 0.0);
+        }
+        Roots::two(q / aq, cq / q)
+    }
+
+    /// Outward unit normal: the normalised gradient of F at `p`.
+    #[inline]
+    pub fn normal(&self, p: DVec3) -> DVec3 {
+        let [a, b, c, d, e, f, g, h, i, _] = self.coef;
+        let p = p - self.origin;
+        DVec3::new(
+            2.0 * a * p.x + d * p.y + e * p.z + g,
+            2.0 * b * p.y + d * p.x + f * p.z + h,
+            2.0 * c * p.z + e * p.x + f * p.y + i,
+        )
+        .normalize_or_zero()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn report_cylinder_coefficients() {
+        let q = Quadric::cylinder(DVec3::new(3.0, 0.0, 0.0), DVec3::ZERO, 1.0);
+        assert_eq!(
+            q.coef,
+            [0.0, 1.0, 1.0, -0.0, -0.0, -0.0, 0.0, 0.0, 0.0, -1.0]
+        );
+    }
+
+    #[test]
+    fn vertical_cylinder_hit_by_hand() {
+        // Axis y through (0,0,−5), radius 1; ray from the origin along −z: t = 4 and 6.
+        let q = Quadric::cylinder(DVec3::Y, DVec3::new(0.0, 0.0, -5.0), 1.0);
+        let r = Ray::new(DVec3::ZERO, -DVec3::Z);
+        assert_eq!(q.roots(&r).as_slice(), &[4.0, 6.0]);
+        assert_eq!(q.normal(r.at(4.0)), DVec3::Z);
+        assert_eq!(q.normal(r.at(6.0)), -DVec3::Z);
+    }
+
+    #[test]
+    fn slanted_axis_hit_by_hand() {
+        // Axis (1,1,0)/√2 through the origin, radius 1. A ray from (0,0,5) along −z meets
+        // the axis line at the origin at right angles: roots 5 ∓ 1.
+        let q = Quadric::cylinder(DVec3::new(1.0, 1.0, 0.0), DVec3::ZERO, 1.0);
+        let r = Ray::new(DVec3::new(0.0, 0.0, 5.0), -DVec3::Z);
+        let roots = q.roots(&r);
+        assert!((roots.as_slice()[0] - 4.0).abs() < 1e-12);
+        assert!((roots.as_slice()[1] - 6.0).abs() < 1e-12);
+        // A ray along x at height z = 0 crosses the slanted cylinder where the distance to
+        // the axis, |y − x|/√2 for a point (x, 0, 0) ... = |x|/√2, equals 1: x = ±√2.
+        let r = Ray::new(DVec3::new(-10.0, 0.0, 0.0), DVec3::X);
+        let roots = q.roots(&r);
+        let s2 = 2f64.sqrt();
+        assert!(
+            (roots.as_slice()[0] - (10.0 - s2)).abs() < 1e-9,
+            "{roots:?}"
+        );
+        assert!(
+            (roots.as_slice()[1] - (10.0 + s2)).abs() < 1e-9,
+            "{roots:?}"
+        );
+        // Normal at (−√2, 0, 0): away from the axis, (−1, 1, 0)/√2.
+        let n = q.normal(DVec3::new(-s2, 0.0, 0.0));
+        assert!((n - DVec3::new(-1.0, 1.0, 0.0).normalize()).length() < 1e-12);
+    }
+
+    #[test]
+    fn miss_tangent_and_inside() {
+        let q = Quadric::cylinder(DVec3::Y, DVec3::ZERO, 1.0);
+        // Passes at distance 2 from the axis: miss.
+        let r = Ray::new(DVec3::new(2.0, 0.0, 5.0), -DVec3::Z);
+        assert_eq!(q.roots(&r), Roots::NONE);
+        // Tangent at x = 1: double root at t = 5.
+        let r = Ray::new(DVec3::new(1.0, 0.0, 5.0), -DVec3::Z);
+        assert_eq!(q.roots(&r).as_slice(), &[5.0, 5.0]);
+        // Origin on the axis: one root behind, one ahead.
+        let r = Ray::new(DVec3::new(0.0, 3.0, 0.0), DVec3::X);
+        assert_eq!(q.roots(&r).as_slice(), &[-1.0, 1.0]);
+    }
+
+    #[test]
+    fn ray_along_the_axis_never_hits() {
+        let q = Quadric::cylinder(DVec3::Y, DVec3::ZERO, 1.0);
+        for o in [
+            DVec3::ZERO,
+            DVec3::new(0.5, -3.0, 0.0),
+            DVec3::new(5.0, 0.0, 0.0),
+        ] {
+            assert_eq!(q.roots(&Ray::new(o, DVec3::Y)), Roots::NONE);
+        }
+    }
+
+    #[test]
+    fn linear_case_of_a_general_quadric() {
+        // Paraboloid y = x² + z², i.e. x² + z² − y = 0: a vertical ray meets it once.
+        let q = Quadric {
+            origin: DVec3::ZERO,
+            coef: [1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0],
+        };
+        let r = Ray::new(DVec3::new(1.0, 10.0, 1.0), -DVec3::Y);
+        // Aq = 0, Bq = −H·(−1)... = 1, Cq = 1 + 1 − 10 = −8: t = 8, at y = 2 = 1 + 1.
+        assert_eq!(q.roots(&r).as_slice(), &[8.0]);
+        assert_eq!(q.value(r.at(8.0)), 0.0);
+    }
+}

@@ -1,0 +1,141 @@
+//! Solid textures (report V.1, SPEC §2): the object's colour C at a world point.
+//!
+//! In Scene.txt a texture is `1 R G B` (one colour) or
+//! `2 Type C1r C1g C1b C2r C2g C2b C3r C3g C3b` with Type 1 checker, 2 Perlin, 3 wood,
+//! 4 marble. All of them are evaluated at the world hit point, so no mapping coordinates
+//! are needed.
+//!
+//! - checker: ⌊x+1e-4⌋ + ⌊y+1e-4⌋ + ⌊z+1e-4⌋ even → C1, odd → C2 (unit squares; C3 unused)
+//! - Perlin: n = clamp((noise(p)+1)/2, 0, 1) on a ramp C1 at 0, C2 at ½, C3 at 1
+//! - wood: T = 20·noise(p), n = T − ⌊T⌋, f = (1 − cos πn)/2, C = C1(1−f) + C2·f
+//! - marble: n = (1 + cos(x + noise(p)))/2, C = C1(1−n) + C2·n
+
+use crate::noise::noise;
+use glam::DVec3;
+
+/// An RGB colour, channels nominally in 0..1.
+pub type Color = DVec3;
+
+/// Offset that keeps the plane y = 0 from flickering between checker squares.
+pub const CHECKER_OFFSET: f64 = 1e-4;
+
+/// The colour pattern of an object.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Texture {
+    Uniform(Color),
+    Checker(Color, Color),
+    Perlin(Color, Color, Color),
+    Wood(Color, Color),
+    Marble(Color, Color),
+}
+
+impl Texture {
+    /// The colour at world point `p`.
+    #[inline]
+    pub fn color_at(&self, p: DVec3) -> Color {
+        match *self {
+            Texture::Uniform(c) => c,
+            Texture::Checker(c1, c2) => {
+                let q = (p + DVec3::splat(CHECKER_OFFSET)).floor();
+                // rem_euclid: the parity of a negative sum is still 0 or 1.
+                if (q.x + q.y + q.z).rem_euclid(2.0) == 0.0 {
+                    c1
+                } else {
+                    c2
+                }
+            }
+            Texture::Perlin(c1, c2, c3) => {
+                let n = ((noise(p.x, p.y, p.z) + 1.0) / 2.0).clamp(0.0, 1.0);
+                if n < 0.5 {
+                    c1.lerp(c2, n * 2.0)
+                } else {
+                    c2.lerp(c3, (n - 0.5) * 2.0)
+                }
+            }
+            Texture::Wood(c1, c2) => {
+                let t = 20.0 * noise(p.x, p.y, p.z);
+                let n = t - t.floor();
+                let f = (1.0 - (std::f64::consts::PI * n).cos()) / 2.0;
+                c1 * (1.0 - f) + c2 * f
+            }
+            Texture::Marble(c1, c2) => {
+                let n = (1.0 + (p.x + noise(p.x, p.y, p.z)).cos()) / 2.0;
+                c1 * (1.0 - n) + c2 * n
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+#[allow(clippy::approx_constant)] // 3.14 is the reference input, not π
+mod tests {
+    use super::*;
+
+    const RED: Color = DVec3::new(1.0, 0.0, 0.0);
+    const BLUE: Color = DVec3::new(0.0, 0.0, 1.0);
+    const GREEN: Color = DVec3::new(0.0, 1.0, 0.0);
+
+    fn close(a: Color, b: Color) -> bool {
+        (a - b).length() < 1e-12
+    }
+
+    #[test]
+    fn checker_squares_and_the_floor_offset() {
+        let t = Texture::Checker(RED, BLUE);
+        assert_eq!(t.color_at(DVec3::new(0.5, 0.0, 0.5)), RED); // 0+0+0
+        assert_eq!(t.color_at(DVec3::new(1.5, 0.0, 0.5)), BLUE); // 1+0+0
+        assert_eq!(t.color_at(DVec3::new(-0.5, 0.0, 0.5)), BLUE); // −1+0+0, odd
+        assert_eq!(t.color_at(DVec3::new(-0.5, 0.0, -0.5)), RED); // −2, even
+                                                                  // A floor point computed as y = −1e-9 would flicker without the offset.
+        assert_eq!(t.color_at(DVec3::new(0.5, -1e-9, 0.5)), RED);
+        assert_eq!(t.color_at(DVec3::new(0.5, 1e-9, 0.5)), RED);
+    }
+
+    #[test]
+    fn perlin_ramp_at_lattice_points_is_c2() {
+        // noise = 0 at integer points: n = 0.5, exactly the middle stop C2.
+        let t = Texture::Perlin(RED, GREEN, BLUE);
+        assert_eq!(t.color_at(DVec3::new(3.0, -2.0, 7.0)), GREEN);
+    }
+
+    #[test]
+    fn perlin_ramp_at_the_reference_point() {
+        // noise(3.14, 42, 7) = 0.13691995878400012: n = 0.568459979392, upper half of the
+        // ramp, f = (n − 0.5)·2 = 0.136919958784 from C2 towards C3.
+        let t = Texture::Perlin(RED, GREEN, BLUE);
+        let c = t.color_at(DVec3::new(3.14, 42.0, 7.0));
+        let f = 0.13691995878400012;
+        assert!(close(c, DVec3::new(0.0, 1.0 - f, f)), "{c}");
+    }
+
+    #[test]
+    fn wood_by_hand() {
+        // At the reference point T = 2.7383991756800024, n = 0.7383991756800024,
+        // f = (1 − cos(0.7383991756800024 π))/2 = 0.8397..; at a lattice point T = 0, f = 0.
+        let t = Texture::Wood(RED, BLUE);
+        assert_eq!(t.color_at(DVec3::new(1.0, 2.0, 3.0)), RED);
+        let n: f64 = 0.7383991756800024;
+        let f = (1.0 - (std::f64::consts::PI * n).cos()) / 2.0;
+        assert!((f - 0.8397).abs() < 1e-3);
+        let c = t.color_at(DVec3::new(3.14, 42.0, 7.0));
+        assert!(close(c, DVec3::new(1.0 - f, 0.0, f)), "{c}");
+    }
+
+    #[test]
+    fn marble_by_hand() {
+        // At a lattice point with x = 0: n = (1 + cos 0)/2 = 1 → C2. With x = π: n = 0 → C1
+        // (π is not a lattice point, so take x = 2 where noise = 0: n = (1 + cos 2)/2).
+        let t = Texture::Marble(RED, BLUE);
+        assert_eq!(t.color_at(DVec3::new(0.0, 5.0, 5.0)), BLUE);
+        let n = (1.0 + 2f64.cos()) / 2.0; // 0.29192658172642888
+        let c = t.color_at(DVec3::new(2.0, 1.0, 1.0));
+        assert!(close(c, DVec3::new(1.0 - n, 0.0, n)), "{c}");
+        assert!((n - 0.2919265817264289).abs() < 1e-15);
+    }
+
+    #[test]
+    fn uniform_is_constant() {
+        let t = Texture::Uniform(GREEN);
+        assert_eq!(t.color_at(DVec3::new(9.0, -3.0, 0.1)), GREEN);
+    }
+}

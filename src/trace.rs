@@ -1,0 +1,149 @@
+//! The recursive trace loop (report IV, SPEC §2): nearest hit, local lighting, then
+//! reflection and refraction, with fog on primary rays.
+//!
+//! At a hit the shape's outward normal decides entering (V·N < 0) or leaving; bump
+//! perturbs that normal, and it is flipped to face the ray to become the shading normal.
+//! - reflection (Kr > 0): `+ Kr · trace(reflect(V, N))`;
+//! - refraction (Kt > 0): η = 1/Ior entering, Ior leaving (the outside is always air);
+//!   `+ Kt · C ⊙ trace(T)`, or `+ Kt · trace(reflect(V, N))` on total internal reflection;
+//! - at most `MAX_DEPTH` bounces after the primary ray, and no secondary ray whose weight
+//!   (the product of the Kr / Kt along its path) is below 1/256;
+//! - a ray that hits nothing is black.
+
+use crate::object::Object;
+use crate::optics::{reflect, refract, Ray};
+use crate::scene::Scene;
+use crate::shading;
+use crate::texture::Color;
+
+/// Bounces allowed after the primary ray.
+pub const MAX_DEPTH: u32 = 5;
+/// Secondary rays weighing less than this are not traced.
+pub const MIN_WEIGHT: f64 = 1.0 / 256.0;
+
+/// Counts of rays cast, for rays-per-second figures.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct RayCount {
+    /// Camera rays.
+    pub primary: u64,
+    /// Reflected and refracted rays.
+    pub secondary: u64,
+    /// Rays towards lights.
+    pub shadow: u64,
+}
+
+impl RayCount {
+    pub fn total(&self) -> u64 {
+        self.primary + self.secondary + self.shadow
+    }
+}
+
+impl std::ops::Add for RayCount {
+    type Output = RayCount;
+    fn add(self, o: RayCount) -> RayCount {
+        RayCount {
+            primary: self.primary + o.primary,
+            secondary: self.secondary + o.secondary,
+            shadow: self.shadow + o.shadow,
+        }
+    }
+}
+
+/// Traces rays through one scene.
+pub struct Tracer<'a> {
+    scene: &'a Scene,
+}
+
+impl<'a> Tracer<'a> {
+    pub fn new(scene: &'a Scene) -> Tracer<'a> {
+        Tracer { scene }
+    }
+
+    /// The nearest object hit, with its t.
+    #[inline]
+    fn nearest(&self, ray: &Ray) -> Option<(f64, &'a Object)> {
+        let mut best: Option<(f64, &Object)> = None;
+        let mut t_max = f64::INFINITY;
+        for obj in &self.scene.objects {
+            if let Some(t) = obj.shape.hit(ray, t_max) {
+                t_max = t;
+                best = Some((t, obj));
+            }
+        }
+        best
+    }
+
+    /// The colour seen along a camera ray: the traced colour with the scene's fog, not
+    /// clamped.
+    pub fn primary(&self, ray: &Ray, count: &mut RayCount) -> Color {
+        count.primary += 1;
+        match self.nearest(ray) {
+            Some((t, obj)) => {
+                let c = self.shade(ray, t, obj, 0, 1.0, count);
+                self.scene.fog.apply(c, t)
+            }
+            None => self.scene.fog.apply(Color::ZERO, f64::INFINITY),
+        }
+    }
+
+    /// The colour along a secondary ray at recursion `depth` with path weight `weight`.
+    fn trace(&self, ray: &Ray, depth: u32, weight: f64, count: &mut RayCount) -> Color {
+        count.secondary += 1;
+        match self.nearest(ray) {
+            Some((t, obj)) => self.shade(ray, t, obj, depth, weight, count),
+            None => Color::ZERO,
+        }
+    }
+
+    fn shade(
+        &self,
+        ray: &Ray,
+        t: f64,
+        obj: &Object,
+        depth: u32,
+        weight: f64,
+        count: &mut RayCount,
+    ) -> Color {
+        let p = ray.at(t);
+        let v = ray.dir;
+        let m = &obj.material;
+        let c = obj.texture.color_at(p);
+        let outward = obj.shape.normal(p);
+        let entering = v.dot(outward) < 0.0;
+        let bumped = m.bump.apply(outward, p);
+        let n = if entering { bumped } else { -bumped };
+
+        let scene = self.scene;
+        let mut out = shading::direct(
+            &scene.objects,
+            &scene.lights,
+            p,
+            n,
+            v,
+            c,
+            m.kd,
+            &mut count.shadow,
+        );
+        if depth >= MAX_DEPTH {
+            return out;
+        }
+        if m.kr > 0.0 && weight * m.kr >= MIN_WEIGHT {
+            let r = Ray::new(p, reflect(v, n).normalize());
+            out += m.kr * self.trace(&r, depth + 1, weight * m.kr, count);
+        }
+        if m.kt > 0.0 && weight * m.kt >= MIN_WEIGHT {
+            let eta = if entering { 1.0 / m.ior } else { m.ior };
+            match refract(v, n, eta) {
+                Some(dir) => {
+                    let r = Ray::new(p, dir.normalize());
+                    out += m.kt * c * self.trace(&r, depth + 1, weight * m.kt, count);
+                }
+                None => {
+                    let r = Ray::new(p, reflect(v, n).normalize());
+                    out += m.kt * self.trace(&r, depth + 1, weight * m.kt, count);
+                }
+            }
+        }
+        out
+    }
+}
