@@ -6,7 +6,6 @@
 //! docs/decisions.md); n = 1 samples the pixel centre, as the report does.
 
 use crate::camera::Camera;
-use crate::scene::Scene;
 use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
@@ -27,16 +26,16 @@ pub fn to_byte(c: f64) -> u8 {
     (c.clamp(0.0, 1.0) * 255.0).round() as u8
 }
 
-/// Renders `scene`'s objects and lights through `camera` at `width`×`height` with
-/// `samples`² samples per pixel. Runs on the current rayon pool.
+/// Renders the tracer's scene through `camera` at `width`×`height` with `samples`²
+/// samples per pixel. Runs on the current rayon pool. The `Tracer` is built once per
+/// scene and shared by every frame drawn of it.
 pub fn render(
-    scene: &Scene,
+    tracer: &Tracer,
     camera: &Camera,
     width: u32,
     height: u32,
     samples: u32,
 ) -> (Frame, RayCount) {
-    let tracer = Tracer::new(scene);
     let row_len = width as usize * 3;
     let mut pixels = vec![0u8; row_len * height as usize];
     let n = samples.max(1);
@@ -46,7 +45,7 @@ pub fn render(
         .map(|(j, row)| {
             let mut count = RayCount::default();
             for (i, px) in row.chunks_exact_mut(3).enumerate() {
-                let c = pixel(&tracer, camera, i as f64, j as f64, n, &mut count);
+                let c = pixel(tracer, camera, i as f64, j as f64, n, &mut count);
                 px.copy_from_slice(&[to_byte(c.x), to_byte(c.y), to_byte(c.z)]);
             }
             count

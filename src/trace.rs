@@ -49,12 +49,18 @@ impl std::ops::Add for RayCount {
     }
 }
 
-/// Traces rays through one scene.
+/// Traces rays through one scene: everything prepared once per scene (and shared by every
+/// frame of an animation) lives here.
 pub struct Tracer<'a> {
     scene: &'a Scene,
 }
 
 impl<'a> Tracer<'a> {
+    /// The scene this tracer draws.
+    pub fn scene(&self) -> &'a Scene {
+        self.scene
+    }
+
     pub fn new(scene: &'a Scene) -> Tracer<'a> {
         Tracer { scene }
     }

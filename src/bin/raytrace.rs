@@ -8,6 +8,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use whitted::output::{write_atomic, ImageFormat};
+use whitted::trace::Tracer;
 use whitted::{render, Scene};
 
 /// Render one Scene.txt to an image (PNG, JPEG, PPM or the report's RAW, by extension).
@@ -51,8 +52,9 @@ fn run(args: Args) -> Result<(), Failure> {
 
     let start = Instant::now();
     let camera = scene.camera();
+    let tracer = Tracer::new(&scene);
     let (frame, rays) =
-        pool.install(|| render(&scene, &camera, scene.width, scene.height, args.samples));
+        pool.install(|| render(&tracer, &camera, scene.width, scene.height, args.samples));
     let traced = start.elapsed().as_secs_f64();
     write_atomic(&out, &frame, format)
         .with_context(|| format!("cannot write {}", out.display()))
