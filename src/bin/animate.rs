@@ -1,1 +1,411 @@
-fn main() {}
+//! `animate MANIFEST.toml`: renders every frame of an animation manifest (SPEC §5) in
+//! parallel into a folder, or streams them in order to standard output or ffmpeg.
+//! Exit status: 0 success, 1 a frame failed to render or write, 2 bad input,
+//! 130/143 interrupted by SIGINT/SIGTERM (finished frames are kept).
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use indicatif::{ProgressBar, ProgressStyle};
+use std::io::IsTerminal;
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::atomic::AtomicUsize;
+use std::sync::Arc;
+use std::time::Instant;
+use whitted::anim::diff::Tolerance;
+use whitted::anim::pipeline::{render_to_folder, render_to_stream};
+use whitted::anim::record::Record;
+use whitted::anim::regress;
+use whitted::anim::select::{parse_frames, parse_shard, shard};
+use whitted::anim::video::Ffmpeg;
+use whitted::anim::{AnimError, Animation, Manifest, Summary};
+use whitted::output::ImageFormat;
+use whitted::Scene;
+
+/// Render the frames of an animation manifest (a Scene.txt and a camera path).
+#[derive(Parser, Debug)]
+#[command(
+    name = "animate",
+    version,
+    about,
+    args_conflicts_with_subcommands = true,
+    subcommand_negates_reqs = true
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+    #[command(flatten)]
+    render: RenderArgs,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Render the `[check]` frames (or --frames) and compare them with the references
+    /// (OpenImageIO idiff's rules). Exit 0 all pass, 1 any fails, 2 the check cannot run.
+    Check(CheckArgs),
+    /// Render the `[check]` frames (or --frames) and write them as the references.
+    Bless(BlessArgs),
+}
+
+#[derive(Args, Debug)]
+struct BlessArgs {
+    #[command(flatten)]
+    common: Common,
+    /// The references folder, instead of the manifest's `[check] references`.
+    #[arg(long, value_name = "DIR")]
+    references: Option<PathBuf>,
+}
+
+#[derive(Args, Debug)]
+struct CheckArgs {
+    #[command(flatten)]
+    bless: BlessArgs,
+    /// Where images of failing frames go (default: the frame folder's name + `-check`).
+    #[arg(long, value_name = "DIR")]
+    report: Option<PathBuf>,
+    /// A pixel fails when a channel differs by more than this (0..255).
+    #[arg(long)]
+    fail: Option<u8>,
+    /// A frame fails when more than this percentage of its pixels fail.
+    #[arg(long, value_name = "PERCENT")]
+    fail_percent: Option<f64>,
+    /// A frame fails when any channel differs by more than this (0..255).
+    #[arg(long)]
+    hard_fail: Option<u8>,
+    /// Print the results as JSON on standard output instead of a table.
+    #[arg(long)]
+    json: bool,
+}
+
+/// Options shared by every subcommand.
+#[derive(Args, Debug, Clone)]
+struct Common {
+    /// The animation manifest (TOML).
+    #[arg(required = true)]
+    manifest: Option<PathBuf>,
+    /// Worker threads (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    threads: Option<u32>,
+    /// Only these frames: `0-99`, `0,10,20-30` (inclusive ranges).
+    #[arg(long, value_name = "LIST")]
+    frames: Option<String>,
+    /// No progress bar and no summary.
+    #[arg(short, long)]
+    quiet: bool,
+}
+
+/// How frames leave the program when they are not files.
+#[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
+enum StreamFormat {
+    Raw,
+    Ppm,
+    Png,
+}
+
+#[derive(Args, Debug)]
+struct RenderArgs {
+    #[command(flatten)]
+    common: Common,
+    /// The frame folder, instead of the manifest's `[output] dir`.
+    #[arg(short, long, value_name = "DIR")]
+    out: Option<PathBuf>,
+    /// Render the K-th of N contiguous chunks of the frames (0-based), e.g. for
+    /// `--shard $SLURM_ARRAY_TASK_ID/16`.
+    #[arg(long, value_name = "K/N")]
+    shard: Option<String>,
+    /// Skip frames whose file already exists.
+    #[arg(long, conflicts_with_all = ["stdout", "video"])]
+    resume: bool,
+    /// With --resume: accept a folder whose frames came from another scene or settings.
+    #[arg(long, requires = "resume")]
+    force: bool,
+    /// Write the frames in order to standard output instead of files.
+    #[arg(long, value_enum, value_name = "FORMAT", conflicts_with_all = ["video", "out"])]
+    stdout: Option<StreamFormat>,
+    /// Pipe the frames into ffmpeg (from PATH) to make this video file.
+    #[arg(long, value_name = "FILE", conflicts_with = "out")]
+    video: Option<PathBuf>,
+}
+
+/// The manifest, its scene and the scene's bytes, loaded.
+struct Loaded {
+    manifest: Manifest,
+    scene: Scene,
+    scene_bytes: Vec<u8>,
+}
+
+fn load(path: &Path) -> Result<Loaded, AnimError> {
+    let manifest = Manifest::load(path)?;
+    let (scene, scene_bytes) = Scene::load_with_bytes(&manifest.scene)?;
+    Ok(Loaded {
+        manifest,
+        scene,
+        scene_bytes,
+    })
+}
+
+/// The frames a run covers: all, or `--frames`, then `--shard`.
+fn selection(
+    manifest: &Manifest,
+    frames: Option<&str>,
+    shard_spec: Option<&str>,
+) -> Result<Vec<u32>, AnimError> {
+    let mut list = match frames {
+        Some(spec) => parse_frames(spec, manifest.frames)?,
+        None => (0..manifest.frames).collect(),
+    };
+    if let Some(spec) = shard_spec {
+        let (k, n) = parse_shard(spec)?;
+        list = shard(&list, k, n);
+    }
+    Ok(list)
+}
+
+fn progress_bar(total: usize, quiet: bool) -> ProgressBar {
+    if quiet || !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(total as u64);
+    let style = ProgressStyle::with_template(
+        "{elapsed_precise} [{wide_bar}] {pos}/{len} frames  {per_sec}  ETA {eta}",
+    )
+    .unwrap_or_else(|_| ProgressStyle::default_bar());
+    bar.set_style(style.progress_chars("=> "));
+    bar
+}
+
+/// Stops the run between frames on SIGINT or SIGTERM; the flag holds the signal number.
+fn watch_signals() -> Arc<AtomicUsize> {
+    let stop = Arc::new(AtomicUsize::new(0));
+    for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
+        // If a handler cannot be installed the default action (terminate) remains, and
+        // temporary files are still never visible under final names.
+        let _ = signal_hook::flag::register_usize(sig, Arc::clone(&stop), sig as usize);
+    }
+    stop
+}
+
+fn pool(threads: Option<u32>) -> Result<rayon::ThreadPool, AnimError> {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads.unwrap_or(0) as usize)
+        .build()
+        .map_err(|e| AnimError::Usage(format!("cannot start the worker threads: {e}")))
+}
+
+fn render_command(args: RenderArgs) -> Result<(), AnimError> {
+    let manifest_path = args.common.manifest.clone().unwrap_or_default();
+    let loaded = load(&manifest_path)?;
+    let manifest = &loaded.manifest;
+    let anim = Animation::new(manifest, &loaded.scene)?;
+    let frames = selection(
+        manifest,
+        args.common.frames.as_deref(),
+        args.shard.as_deref(),
+    )?;
+    for &f in &frames {
+        anim.camera(f)?;
+    }
+    let stop = watch_signals();
+    let pool = pool(args.common.threads)?;
+    let progress = progress_bar(frames.len(), args.common.quiet);
+    let start = Instant::now();
+
+    let (summary, place) = if let Some(kind) = args.stdout {
+        let format = match kind {
+            StreamFormat::Raw => ImageFormat::Raw,
+            StreamFormat::Ppm => ImageFormat::Ppm,
+            StreamFormat::Png => ImageFormat::Png,
+        };
+        let mut out = std::io::BufWriter::with_capacity(1 << 20, std::io::stdout());
+        let s =
+            pool.install(|| render_to_stream(&anim, &frames, &mut out, format, &progress, &stop))?;
+        (s, "standard output".to_string())
+    } else if let Some(video) = &args.video {
+        let mut ffmpeg = Ffmpeg::start(video, anim.width, anim.height, manifest.fps)?;
+        let result = match ffmpeg.input() {
+            Ok(input) => pool.install(|| {
+                render_to_stream(&anim, &frames, input, ImageFormat::Raw, &progress, &stop)
+            }),
+            Err(e) => Err(e),
+        };
+        match result {
+            Ok(s) => {
+                ffmpeg.finish()?;
+                (s, video.display().to_string())
+            }
+            Err(e) => {
+                ffmpeg.abort();
+                return Err(e);
+            }
+        }
+    } else {
+        let dir = args
+            .out
+            .clone()
+            .unwrap_or_else(|| manifest.output.dir.clone());
+        let folder = |source| AnimError::Folder {
+            dir: dir.clone(),
+            source,
+        };
+        std::fs::create_dir_all(&dir).map_err(folder)?;
+        let record = Record::new(
+            &manifest.path,
+            &manifest.scene,
+            &loaded.scene_bytes,
+            &anim.settings(),
+        );
+        if args.resume && !args.force {
+            if let Some(old) = Record::read(&dir).map_err(folder)? {
+                if !record.compatible(&old) {
+                    let which = if old.scene_sha256 != record.scene_sha256 {
+                        "scene digest"
+                    } else {
+                        "settings digest"
+                    };
+                    return Err(AnimError::ForeignFrames { dir, record: which });
+                }
+            }
+        }
+        record.write(&dir).map_err(folder)?;
+        let s =
+            pool.install(|| render_to_folder(&anim, &frames, &dir, args.resume, &progress, &stop))?;
+        (s, dir.display().to_string())
+    };
+    progress.finish_and_clear();
+    if !args.common.quiet {
+        report(&summary, start.elapsed().as_secs_f64(), &place);
+    }
+    Ok(())
+}
+
+/// The frames and references folder of `check` and `bless`.
+fn regression_setup(
+    manifest: &Manifest,
+    args: &BlessArgs,
+) -> Result<(Vec<u32>, PathBuf), AnimError> {
+    let frames = match (&args.common.frames, &manifest.check) {
+        (Some(spec), _) => parse_frames(spec, manifest.frames)?,
+        (None, Some(check)) => check.frames.clone(),
+        (None, None) => {
+            return Err(AnimError::Usage(format!(
+                "{}: no [check] section; name the frames with --frames",
+                manifest.path.display()
+            )))
+        }
+    };
+    let refs = match (&args.references, &manifest.check) {
+        (Some(dir), _) => dir.clone(),
+        (None, Some(check)) => check.references.clone(),
+        (None, None) => {
+            return Err(AnimError::Usage(format!(
+                "{}: no [check] section; name the folder with --references",
+                manifest.path.display()
+            )))
+        }
+    };
+    Ok((frames, refs))
+}
+
+fn bless_command(args: BlessArgs) -> Result<(), AnimError> {
+    let loaded = load(args.common.manifest.as_deref().unwrap_or(Path::new("")))?;
+    let anim = Animation::new(&loaded.manifest, &loaded.scene)?;
+    let (frames, refs) = regression_setup(&loaded.manifest, &args)?;
+    let paths = pool(args.common.threads)?.install(|| regress::bless(&anim, &frames, &refs))?;
+    if !args.common.quiet {
+        eprintln!(
+            "animate: blessed {} reference(s) in {}",
+            paths.len(),
+            refs.display()
+        );
+    }
+    Ok(())
+}
+
+/// Runs a check; `Ok(false)` when a frame failed.
+fn check_command(args: CheckArgs) -> Result<bool, AnimError> {
+    let common = &args.bless.common;
+    let loaded = load(common.manifest.as_deref().unwrap_or(Path::new("")))?;
+    let manifest = &loaded.manifest;
+    let anim = Animation::new(manifest, &loaded.scene)?;
+    let (frames, refs) = regression_setup(manifest, &args.bless)?;
+    let base = manifest
+        .check
+        .as_ref()
+        .map_or(Tolerance::DEFAULT, |c| Tolerance {
+            fail: c.fail,
+            fail_percent: c.fail_percent,
+            hard_fail: c.hard_fail,
+        });
+    let tol = Tolerance {
+        fail: args.fail.unwrap_or(base.fail),
+        fail_percent: args.fail_percent.unwrap_or(base.fail_percent),
+        hard_fail: args.hard_fail.unwrap_or(base.hard_fail),
+    };
+    if !(tol.fail_percent.is_finite() && tol.fail_percent >= 0.0) {
+        return Err(AnimError::Usage(
+            "--fail-percent must be a number ≥ 0".into(),
+        ));
+    }
+    let report = args.report.clone().unwrap_or_else(|| {
+        let mut name = manifest.output.dir.clone().into_os_string();
+        name.push("-check");
+        PathBuf::from(name)
+    });
+    let results =
+        pool(common.threads)?.install(|| regress::check(&anim, &frames, &refs, tol, &report))?;
+    let pass = results.iter().all(|r| r.comparison.pass);
+    if args.json {
+        let doc = serde_json::json!({
+            "manifest": manifest.path,
+            "references": refs,
+            "report": report,
+            "tolerance": tol,
+            "pass": pass,
+            "frames": results,
+        });
+        println!("{}", serde_json::to_string_pretty(&doc).unwrap_or_default());
+    } else {
+        print!("{}", regress::table(&results));
+        let failed = results.iter().filter(|r| !r.comparison.pass).count();
+        if failed == 0 {
+            println!("PASS: {} frame(s) within tolerance", results.len());
+        } else {
+            println!(
+                "FAIL: {failed} of {} frame(s); rendered frames and diff images in {}",
+                results.len(),
+                report.display()
+            );
+        }
+    }
+    Ok(pass)
+}
+
+/// The one-line summary: frames, wall time, frames/s, rays/s.
+fn report(s: &Summary, secs: f64, place: &str) {
+    let secs = secs.max(1e-9);
+    eprintln!(
+        "animate: {} frames rendered ({} skipped) in {:.2} s: {:.2} frames/s, {:.1} Mrays/s -> {}",
+        s.rendered,
+        s.skipped,
+        secs,
+        s.rendered as f64 / secs,
+        s.rays.total() as f64 / secs / 1e6,
+        place
+    );
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        None => render_command(cli.render).map(|()| true),
+        Some(Command::Bless(args)) => bless_command(args).map(|()| true),
+        Some(Command::Check(args)) => check_command(args),
+    };
+    match result {
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::from(1),
+        Err(e) => {
+            eprintln!("animate: {e}");
+            ExitCode::from(e.exit_code())
+        }
+    }
+}

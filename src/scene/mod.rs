@@ -55,13 +55,19 @@ impl Scene {
 
     /// Reads and parses a scene file.
     pub fn load(path: &Path) -> Result<Scene, SceneError> {
+        Scene::load_with_bytes(path).map(|(scene, _)| scene)
+    }
+
+    /// Reads and parses a scene file, returning its bytes too (to fingerprint exactly
+    /// what was parsed).
+    pub fn load_with_bytes(path: &Path) -> Result<(Scene, Vec<u8>), SceneError> {
         let name = path.display().to_string();
         let bytes = std::fs::read(path).map_err(|source| SceneError::Io {
             path: name.clone(),
             source,
         })?;
-        let src = parser::decode(&bytes, &name)?;
-        Scene::parse(src, &name)
+        let scene = Scene::parse(parser::decode(&bytes, &name)?, &name)?;
+        Ok((scene, bytes))
     }
 
     /// The scene's own camera, at its resolution.

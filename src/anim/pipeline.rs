@@ -1,0 +1,227 @@
+//! Rendering a frame sequence: one `Animation` per manifest (the scene parsed and its
+//! `Tracer` built once, shared by every frame), frames rendered in parallel with rayon,
+//! then either written into a folder or streamed in frame order.
+//!
+//! - Folder: each frame is encoded and written to a temporary name in the folder, then
+//!   renamed, so a file under a final name is always complete; `resume` skips frames whose
+//!   file exists. Memory holds only the frames in flight.
+//! - Stream (`--stdout`, `--video`): frames render in windows of twice the thread count
+//!   and are written in order, so memory stays bounded whatever the frame count.
+//!
+//! Both stop between frames when `stop` holds a signal number, and after the first
+//! failure; the frames already finished stay finished.
+
+use super::error::AnimError;
+use super::manifest::{FrameFormat, Manifest};
+use crate::camera::Camera;
+use crate::output::{encode, write_atomic, ImageFormat};
+use crate::render::{render, Frame};
+use crate::scene::{Scene, MAX_PIXELS};
+use crate::trace::{RayCount, Tracer};
+use indicatif::ProgressBar;
+use rayon::prelude::*;
+use std::io::Write;
+use std::path::Path;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+/// A manifest bound to its scene: everything needed to draw any of its frames.
+pub struct Animation<'a> {
+    pub manifest: &'a Manifest,
+    tracer: Tracer<'a>,
+    pub width: u32,
+    pub height: u32,
+    pub samples: u32,
+}
+
+/// What a run did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Summary {
+    pub rendered: usize,
+    pub skipped: usize,
+    pub rays: RayCount,
+}
+
+impl<'a> Animation<'a> {
+    /// Binds `manifest` to `scene`, applying `[render]` overrides.
+    pub fn new(manifest: &'a Manifest, scene: &'a Scene) -> Result<Animation<'a>, AnimError> {
+        let width = manifest.render.width.unwrap_or(scene.width);
+        let height = manifest.render.height.unwrap_or(scene.height);
+        if width as u64 * height as u64 > MAX_PIXELS {
+            return Err(AnimError::Usage(format!(
+                "{}: {width}×{height} frames are past the limit of {MAX_PIXELS} pixels",
+                manifest.path.display()
+            )));
+        }
+        Ok(Animation {
+            manifest,
+            tracer: Tracer::new(scene),
+            width,
+            height,
+            samples: manifest.render.samples.max(1),
+        })
+    }
+
+    /// The camera of frame `frame`.
+    pub fn camera(&self, frame: u32) -> Result<Camera, AnimError> {
+        let scene = self.tracer.scene();
+        let (eye, look_at) = self
+            .manifest
+            .camera
+            .at(frame, self.manifest.frames, scene.look_at);
+        Camera::new(eye, look_at, self.width, self.height).ok_or(AnimError::Camera { frame })
+    }
+
+    /// Draws frame `frame`: exactly what `raytrace` draws of the scene with that camera.
+    pub fn render(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
+        let camera = self.camera(frame)?;
+        Ok(render(
+            &self.tracer,
+            &camera,
+            self.width,
+            self.height,
+            self.samples,
+        ))
+    }
+
+    /// The image format of the frame files.
+    pub fn format(&self) -> ImageFormat {
+        let out = &self.manifest.output;
+        match out.format {
+            FrameFormat::Png => ImageFormat::Png,
+            FrameFormat::Jpeg => ImageFormat::Jpeg {
+                quality: out.jpeg_quality,
+            },
+            FrameFormat::Ppm => ImageFormat::Ppm,
+            FrameFormat::Raw => ImageFormat::Raw,
+        }
+    }
+
+    /// A canonical text of every setting that decides the frames' bytes (for the record).
+    pub fn settings(&self) -> String {
+        format!(
+            "frames={} size={}x{} samples={} format={:?} camera={:?}",
+            self.manifest.frames,
+            self.width,
+            self.height,
+            self.samples,
+            self.format(),
+            self.manifest.camera
+        )
+    }
+
+    /// The final path of frame `frame` inside `dir`.
+    pub fn frame_path(&self, dir: &Path, frame: u32) -> std::path::PathBuf {
+        dir.join(self.manifest.output.file_name(frame, self.manifest.frames))
+    }
+}
+
+/// The signal number held in `stop`, if any.
+fn stopped(stop: &AtomicUsize) -> Option<i32> {
+    match stop.load(Ordering::SeqCst) {
+        0 => None,
+        sig => Some(sig as i32),
+    }
+}
+
+/// Renders `frames` into `dir` (created if missing), in parallel. With `resume`, frames
+/// whose file exists are skipped and counted as done on `progress`.
+pub fn render_to_folder(
+    anim: &Animation,
+    frames: &[u32],
+    dir: &Path,
+    resume: bool,
+    progress: &ProgressBar,
+    stop: &AtomicUsize,
+) -> Result<Summary, AnimError> {
+    let todo: Vec<u32> = frames
+        .iter()
+        .copied()
+        .filter(|&f| !(resume && anim.frame_path(dir, f).exists()))
+        .collect();
+    let skipped = frames.len() - todo.len();
+    progress.set_position(skipped as u64);
+    progress.reset_eta();
+
+    let format = anim.format();
+    let failure: Mutex<Option<AnimError>> = Mutex::new(None);
+    let failed = || failure.lock().map(|f| f.is_some()).unwrap_or(true);
+    let rays = todo
+        .par_iter()
+        .map(|&frame| {
+            if stopped(stop).is_some() || failed() {
+                return RayCount::default();
+            }
+            let result = anim.render(frame).and_then(|(image, rays)| {
+                write_atomic(&anim.frame_path(dir, frame), &image, format)
+                    .map_err(|source| AnimError::Write { frame, source })?;
+                Ok(rays)
+            });
+            match result {
+                Ok(rays) => {
+                    progress.inc(1);
+                    rays
+                }
+                Err(e) => {
+                    if let Ok(mut slot) = failure.lock() {
+                        slot.get_or_insert(e);
+                    }
+                    RayCount::default()
+                }
+            }
+        })
+        .reduce(RayCount::default, |a, b| a + b);
+
+    if let Some(e) = failure.into_inner().unwrap_or(None) {
+        return Err(e);
+    }
+    if let Some(sig) = stopped(stop) {
+        return Err(AnimError::Interrupted(sig));
+    }
+    Ok(Summary {
+        rendered: todo.len(),
+        skipped,
+        rays,
+    })
+}
+
+/// Renders `frames` and writes them, encoded in `format`, one after another in frame order
+/// into `out`. Frames render in parallel windows; memory is bounded by the window.
+pub fn render_to_stream(
+    anim: &Animation,
+    frames: &[u32],
+    out: &mut dyn Write,
+    format: ImageFormat,
+    progress: &ProgressBar,
+    stop: &AtomicUsize,
+) -> Result<Summary, AnimError> {
+    let window = 2 * rayon::current_num_threads().max(1);
+    let mut rays = RayCount::default();
+    for chunk in frames.chunks(window) {
+        if let Some(sig) = stopped(stop) {
+            return Err(AnimError::Interrupted(sig));
+        }
+        let encoded: Vec<Result<(Vec<u8>, RayCount), AnimError>> = chunk
+            .par_iter()
+            .map(|&frame| {
+                let (image, rays) = anim.render(frame)?;
+                let mut bytes = Vec::with_capacity(image.pixels.len() + 32);
+                encode(&image, format, &mut bytes)
+                    .map_err(|source| AnimError::Write { frame, source })?;
+                Ok((bytes, rays))
+            })
+            .collect();
+        for item in encoded {
+            let (bytes, r) = item?;
+            out.write_all(&bytes).map_err(AnimError::Stream)?;
+            rays = rays + r;
+            progress.inc(1);
+        }
+    }
+    out.flush().map_err(AnimError::Stream)?;
+    Ok(Summary {
+        rendered: frames.len(),
+        skipped: 0,
+        rays,
+    })
+}
