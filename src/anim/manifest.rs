@@ -1,7 +1,58 @@
-//! STUB — being written. The animation manifest (SPEC §5).
+//! The animation manifest of SPEC §5. `Manifest::parse` and `Manifest::load` read the
+//! TOML (`raw`), check every value, resolve paths against the manifest's own folder and
+//! build the camera path (`camera`). Every refusal, syntax or meaning, is a
+//! `ManifestError::Invalid` rendered `path:line:column: message` at the offending key or
+//! value; unknown keys are refused and the valid ones named. Never panics.
+//!
+//! ```toml
+//! scene = "../scenes/orbit.txt"    # required, relative to the manifest's folder
+//! frames = 250                     # required, 1..=1000000
+//! fps = 25                         # > 0; default 25
+//!
+//! [camera]                         # required: path = "circle" | "spline" (see `path`, `spline`)
+//! path = "circle"
+//! center = [0.0, 1.0, 0.0]
+//! radius = 12.0
+//! height = 3.0
+//!
+//! [output]                         # optional
+//! dir = "../out/orbit"             # default: the manifest's name without .toml + "-frames"
+//! name = "frame_####"              # default; #### = zero-padded frame number; no / or \
+//! format = "png"                   # png | jpeg | ppm | raw; default png
+//! jpeg_quality = 90                # 1..=100; default 90
+//!
+//! [render]                         # optional overrides of the scene file
+//! width = 1280                     # 1..=16384, and width·height <= 2^26 when both given
+//! height = 960
+//! samples = 2                      # n×n per pixel, 1..=16; default 1
+//!
+//! [check]                          # optional; frames and references required
+//! frames = [0, 62, 125, 187, 249]  # each < frames, no repeats
+//! references = "../tests/golden/orbit"
+//! fail = 2                         # 0..=255; default 2
+//! fail_percent = 0.1               # 0..=100; default 0.1
+//! hard_fail = 64                   # 0..=255; default 64
+//! ```
+
+mod camera;
+mod locate;
+mod raw;
+mod sections;
+
+pub use camera::MAX_TURNS;
+pub use sections::{MAX_PIXELS, MAX_SAMPLES, MAX_SIDE};
 
 use super::path::CameraPath;
+use locate::{key_path, line_column};
+use raw::{Probe, RawCircle, RawManifest, RawSpline};
+use std::ops::{Range, RangeInclusive};
 use std::path::{Path, PathBuf};
+use toml::Spanned;
+
+/// The most frames a manifest may ask for.
+pub const MAX_FRAMES: u32 = 1_000_000;
+/// `fps` when not given.
+pub const DEFAULT_FPS: f64 = 25.0;
 
 /// The frame file format of `[output] format`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -10,6 +61,18 @@ pub enum FrameFormat {
     Jpeg,
     Ppm,
     Raw,
+}
+
+impl FrameFormat {
+    /// The file extension, without the dot: `png`, `jpg`, `ppm` or `raw`.
+    pub fn extension(self) -> &'static str {
+        match self {
+            FrameFormat::Png => "png",
+            FrameFormat::Jpeg => "jpg",
+            FrameFormat::Ppm => "ppm",
+            FrameFormat::Raw => "raw",
+        }
+    }
 }
 
 /// `[output]`, paths resolved.
@@ -25,10 +88,25 @@ pub struct OutputSpec {
 
 impl OutputSpec {
     /// The file name (no folder) of frame `frame` of a `frames`-frame sequence, with the
-    /// format's extension.
+    /// format's extension. The first run of `#` becomes the frame number, zero-padded to
+    /// the run's length or to the digits of `frames - 1` if more, so that names sort;
+    /// without a `#` the name gets `_` and the number padded to at least 4 digits.
     pub fn file_name(&self, frame: u32, frames: u32) -> String {
-        let _ = (frame, frames);
-        todo!()
+        let needed = frames.saturating_sub(1).to_string().len();
+        let ext = self.format.extension();
+        let name = &self.name;
+        match name.find('#') {
+            Some(start) => {
+                let run = name[start..].bytes().take_while(|&b| b == b'#').count();
+                let (head, tail) = (&name[..start], &name[start + run..]);
+                let width = run.max(needed);
+                format!("{head}{frame:0width$}{tail}.{ext}")
+            }
+            None => {
+                let width = needed.max(4);
+                format!("{name}_{frame:0width$}.{ext}")
+            }
+        }
     }
 }
 
@@ -86,13 +164,138 @@ pub enum ManifestError {
 
 impl Manifest {
     pub fn load(path: &Path) -> Result<Manifest, ManifestError> {
-        let _ = path;
-        todo!()
+        let src = std::fs::read_to_string(path).map_err(|source| ManifestError::Io {
+            path: path.display().to_string(),
+            source,
+        })?;
+        Manifest::parse(&src, path)
     }
 
     /// Parses manifest text; `path` is where it came from (for errors and relative paths).
     pub fn parse(src: &str, path: &Path) -> Result<Manifest, ManifestError> {
-        let _ = (src, path);
-        todo!()
+        let source = Source { text: src, path };
+        let probe: Probe = source.deserialize()?;
+        let Some(camera) = probe.camera else {
+            let message = "missing the [camera] table (path = \"circle\" or \"spline\")";
+            return Err(source.error(0..0, message));
+        };
+        let Some(kind) = &camera.get_ref().path else {
+            let message = "[camera] needs a `path`: \"circle\" or \"spline\"";
+            return Err(source.error(camera.span(), message));
+        };
+        match kind.get_ref().as_str() {
+            "circle" => {
+                let raw: RawManifest<RawCircle> = source.deserialize()?;
+                source.manifest(raw, |s, c, _| s.circle(c))
+            }
+            "spline" => {
+                let raw: RawManifest<RawSpline> = source.deserialize()?;
+                source.manifest(raw, |s, c, frames| s.spline(c, frames))
+            }
+            other => {
+                let message =
+                    format!("unknown camera path `{other}`, expected `circle` or `spline`");
+                Err(source.error(kind.span(), message))
+            }
+        }
     }
 }
+
+/// The manifest text and where it came from: turns spans into located errors.
+struct Source<'a> {
+    text: &'a str,
+    path: &'a Path,
+}
+
+impl Source<'_> {
+    /// An error at the start of `span`.
+    fn error(&self, span: Range<usize>, message: impl Into<String>) -> ManifestError {
+        let (line, column) = line_column(self.text, span.start);
+        ManifestError::Invalid {
+            path: self.path.display().to_string(),
+            line,
+            column,
+            message: message.into(),
+        }
+    }
+
+    fn deserialize<T: serde::de::DeserializeOwned>(&self) -> Result<T, ManifestError> {
+        toml::from_str(self.text).map_err(|e| {
+            let span = e.span().unwrap_or(0..0);
+            let message = in_toml_words(e.message());
+            match key_path(self.text, span.start) {
+                Some(key) => self.error(span, format!("{key}: {message}")),
+                None => self.error(span, message),
+            }
+        })
+    }
+
+    /// A path of the manifest, relative to its folder; refused when empty.
+    fn resolve(&self, v: &Spanned<String>, what: &str) -> Result<PathBuf, ManifestError> {
+        if v.get_ref().is_empty() {
+            return Err(self.error(v.span(), format!("`{what}` must not be empty")));
+        }
+        let folder = self.path.parent().unwrap_or(Path::new(""));
+        Ok(folder.join(v.get_ref()))
+    }
+
+    /// An integer, refused outside `range`.
+    fn int(
+        &self,
+        v: &Spanned<i64>,
+        what: &str,
+        range: RangeInclusive<i64>,
+    ) -> Result<i64, ManifestError> {
+        let x = *v.get_ref();
+        if range.contains(&x) {
+            return Ok(x);
+        }
+        let (lo, hi) = (range.start(), range.end());
+        let message = format!("`{what}` must be between {lo} and {hi}, found {x}");
+        Err(self.error(v.span(), message))
+    }
+
+    fn manifest<C>(
+        &self,
+        raw: RawManifest<C>,
+        camera: impl FnOnce(&Self, C, u32) -> Result<CameraPath, ManifestError>,
+    ) -> Result<Manifest, ManifestError> {
+        let scene = self.resolve(&raw.scene, "scene")?;
+        let frames = self.int(&raw.frames, "frames", 1..=i64::from(MAX_FRAMES))? as u32;
+        let fps = match &raw.fps {
+            Some(v) if !(v.get_ref().is_finite() && *v.get_ref() > 0.0) => {
+                let message = format!(
+                    "`fps` must be a finite number above 0, found {}",
+                    v.get_ref()
+                );
+                return Err(self.error(v.span(), message));
+            }
+            Some(v) => *v.get_ref(),
+            None => DEFAULT_FPS,
+        };
+        Ok(Manifest {
+            path: self.path.to_path_buf(),
+            scene,
+            frames,
+            fps,
+            camera: camera(self, raw.camera, frames)?,
+            output: self.output(raw.output)?,
+            render: self.render(raw.render)?,
+            check: raw.check.map(|c| self.check(c, frames)).transpose()?,
+        })
+    }
+}
+
+/// serde's words for TOML types, in TOML's words.
+fn in_toml_words(message: &str) -> String {
+    message
+        .trim_end()
+        .replace("expected i64", "expected an integer")
+        .replace("expected f64", "expected a number")
+        .replace("expected a sequence", "expected an array")
+}
+
+#[cfg(test)]
+mod refusal_tests;
+#[cfg(test)]
+mod tests;

@@ -1,4 +1,22 @@
-//! STUB — being written. Camera paths of SPEC §5: circle and spline.
+//! Camera paths of SPEC §5: where the camera is, and what it looks at, on each frame.
+//! `CameraPath` owns the circle (the report's orbit) and dispatches splines to `spline`.
+//! The manifest's `[camera]` table for a circle:
+//!
+//! ```toml
+//! [camera]
+//! path = "circle"
+//! center = [0.0, 1.0, 0.0]         # the camera turns around this point and looks at it
+//! radius = 12.0                    # > 0
+//! height = 3.0                     # camera y
+//! start_angle = 0.0                # degrees; 0 puts the camera on the +z side of center
+//! turns = 1.0                      # negative turns go the other way
+//! # look_at = [x, y, z]            # optional, defaults to center
+//! ```
+//!
+//! Frame i of N is at θ = start_angle + 360°·turns·i/N and the eye at
+//! (center.x + radius·sin θ, height, center.z + radius·cos θ). The fraction turns·i/N is
+//! reduced modulo 1 before it becomes an angle, so frame N is exactly frame 0 when turns
+//! is a whole number and the video loops without a repeated frame.
 
 use super::spline::Spline;
 use glam::DVec3;
@@ -24,7 +42,115 @@ impl CameraPath {
     /// Eye and look-at point of frame `frame` of a `frames`-frame sequence;
     /// `scene_look_at` is the scene file's point, used when the path gives none.
     pub fn at(&self, frame: u32, frames: u32, scene_look_at: DVec3) -> (DVec3, DVec3) {
-        let _ = (frame, frames, scene_look_at);
-        todo!()
+        match self {
+            CameraPath::Circle {
+                center,
+                radius,
+                height,
+                start_angle,
+                turns,
+                look_at,
+            } => {
+                let n = f64::from(frames.max(1));
+                let fraction = (turns * f64::from(frame) / n).rem_euclid(1.0);
+                let theta = (start_angle + 360.0 * fraction).to_radians();
+                let (sin, cos) = theta.sin_cos();
+                let eye = DVec3::new(center.x + radius * sin, *height, center.z + radius * cos);
+                (eye, look_at.unwrap_or(*center))
+            }
+            CameraPath::Spline(spline) => spline.at(frame, frames, scene_look_at),
+        }
+    }
+
+    /// The path's name as the manifest writes it: `circle` or `spline`.
+    pub fn name(&self) -> &'static str {
+        match self {
+            CameraPath::Circle { .. } => "circle",
+            CameraPath::Spline(_) => "spline",
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn orbit(start_angle: f64, turns: f64, look_at: Option<DVec3>) -> CameraPath {
+        CameraPath::Circle {
+            center: DVec3::new(2.0, 1.0, -3.0),
+            radius: 12.0,
+            height: 3.0,
+            start_angle,
+            turns,
+            look_at,
+        }
+    }
+
+    fn assert_close(a: DVec3, b: DVec3) {
+        assert!(a.distance(b) < 1e-12, "{a} is not {b}");
+    }
+
+    #[test]
+    fn frame_zero_is_on_the_plus_z_side_looking_at_the_center() {
+        let (eye, look) = orbit(0.0, 1.0, None).at(0, 100, DVec3::ZERO);
+        assert_close(eye, DVec3::new(2.0, 3.0, 9.0));
+        assert_eq!(look, DVec3::new(2.0, 1.0, -3.0));
+    }
+
+    #[test]
+    fn a_quarter_turn_moves_to_plus_x_and_negative_turns_to_minus_x() {
+        let (eye, _) = orbit(0.0, 1.0, None).at(25, 100, DVec3::ZERO);
+        assert_close(eye, DVec3::new(14.0, 3.0, -3.0));
+        let (eye, _) = orbit(0.0, -1.0, None).at(25, 100, DVec3::ZERO);
+        assert_close(eye, DVec3::new(-10.0, 3.0, -3.0));
+        // Half a turn in 100 frames: frame 50 is a quarter.
+        let (eye, _) = orbit(0.0, 0.5, None).at(50, 100, DVec3::ZERO);
+        assert_close(eye, DVec3::new(14.0, 3.0, -3.0));
+    }
+
+    #[test]
+    fn start_angle_is_in_degrees() {
+        let (eye, _) = orbit(180.0, 1.0, None).at(0, 100, DVec3::ZERO);
+        assert_close(eye, DVec3::new(2.0, 3.0, -15.0));
+        let (eye, _) = orbit(-90.0, 2.0, None).at(25, 100, DVec3::ZERO);
+        assert_close(eye, DVec3::new(14.0, 3.0, -3.0));
+    }
+
+    #[test]
+    fn frame_n_is_frame_zero() {
+        for turns in [1.0, -1.0, 3.0] {
+            let path = orbit(37.0, turns, None);
+            let (first, _) = path.at(0, 250, DVec3::ZERO);
+            let (wrapped, _) = path.at(250, 250, DVec3::ZERO);
+            assert_close(first, wrapped);
+            let (last, _) = path.at(249, 250, DVec3::ZERO);
+            assert!(last.distance(first) > 0.1);
+        }
+    }
+
+    #[test]
+    fn an_explicit_look_at_wins() {
+        let p = DVec3::new(0.0, 0.0, 5.0);
+        assert_eq!(orbit(0.0, 1.0, Some(p)).at(7, 100, DVec3::ONE).1, p);
+    }
+
+    #[test]
+    fn splines_are_delegated() {
+        use super::super::spline::Key;
+        let keys = vec![
+            Key {
+                frame: 0,
+                position: DVec3::ZERO,
+                look_at: None,
+            },
+            Key {
+                frame: 4,
+                position: DVec3::X,
+                look_at: None,
+            },
+        ];
+        let path = CameraPath::Spline(Spline::new(keys, false, false, None).unwrap());
+        assert_eq!(path.at(4, 5, DVec3::ONE), (DVec3::X, DVec3::ONE));
+        assert_eq!(path.name(), "spline");
     }
 }

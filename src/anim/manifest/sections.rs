@@ -1,0 +1,167 @@
+//! `[output]`, `[render]` and `[check]` of the manifest: defaults, ranges and paths.
+//!
+//! ```toml
+//! [output]
+//! dir = "../out/orbit"      # default: <manifest name without .toml>-frames, beside it
+//! name = "frame_####"       # default "frame_####"; a file name: no / or \, not empty
+//! format = "png"            # png | jpeg | ppm | raw; default png
+//! jpeg_quality = 90         # 1..=100; default 90
+//!
+//! [render]
+//! width = 1280              # 1..=16384 each, width·height <= 2^26 when both are given
+//! height = 960
+//! samples = 2               # 1..=16; default 1
+//!
+//! [check]
+//! frames = [0, 125, 249]    # required, not empty, each < frames, no repeats
+//! references = "golden"     # required
+//! fail = 2                  # 0..=255; default 2
+//! fail_percent = 0.1        # 0..=100; default 0.1
+//! hard_fail = 64            # 0..=255; default 64
+//! ```
+
+use super::raw::{RawCheck, RawFormat, RawOutput, RawRender};
+use super::{CheckSpec, FrameFormat, ManifestError, OutputSpec, RenderSpec, Source};
+use std::collections::HashSet;
+use std::path::Path;
+use toml::Spanned;
+
+/// The largest `[render]` width or height.
+pub const MAX_SIDE: u32 = 16384;
+/// The most pixels a frame may have (2^26, 64 Mpixel).
+pub const MAX_PIXELS: u64 = 1 << 26;
+/// The largest `samples` (a 16×16 grid).
+pub const MAX_SAMPLES: u32 = 16;
+
+impl Source<'_> {
+    pub(super) fn output(&self, raw: Option<RawOutput>) -> Result<OutputSpec, ManifestError> {
+        let raw = raw.unwrap_or(RawOutput {
+            dir: None,
+            name: None,
+            format: None,
+            jpeg_quality: None,
+        });
+        let dir = match &raw.dir {
+            Some(dir) => self.resolve(dir, "dir")?,
+            None => default_dir(self.path),
+        };
+        let name = match raw.name {
+            Some(name) => self.file_name_pattern(name)?,
+            None => "frame_####".to_string(),
+        };
+        let format = match raw.format.unwrap_or(RawFormat::Png) {
+            RawFormat::Png => FrameFormat::Png,
+            RawFormat::Jpeg => FrameFormat::Jpeg,
+            RawFormat::Ppm => FrameFormat::Ppm,
+            RawFormat::Raw => FrameFormat::Raw,
+        };
+        let jpeg_quality = match &raw.jpeg_quality {
+            Some(q) => self.int(q, "jpeg_quality", 1..=100)? as u8,
+            None => 90,
+        };
+        Ok(OutputSpec {
+            dir,
+            name,
+            format,
+            jpeg_quality,
+        })
+    }
+
+    fn file_name_pattern(&self, name: Spanned<String>) -> Result<String, ManifestError> {
+        let text = name.get_ref();
+        let bad = |c: char| c == '/' || c == '\\' || c.is_control();
+        if text.is_empty() || text.contains(bad) {
+            let message = format!(
+                "`name` must be a plain file name, not empty and without `/`, `\\` or control characters, found {text:?}"
+            );
+            return Err(self.error(name.span(), message));
+        }
+        Ok(name.into_inner())
+    }
+
+    pub(super) fn render(&self, raw: Option<RawRender>) -> Result<RenderSpec, ManifestError> {
+        let Some(raw) = raw else {
+            return Ok(RenderSpec {
+                samples: 1,
+                ..RenderSpec::default()
+            });
+        };
+        let side = |v: &Option<Spanned<i64>>, what| match v {
+            Some(v) => self
+                .int(v, what, 1..=i64::from(MAX_SIDE))
+                .map(|x| Some(x as u32)),
+            None => Ok(None),
+        };
+        let width = side(&raw.width, "width")?;
+        let height = side(&raw.height, "height")?;
+        if let (Some(w), Some(h), Some(at)) = (width, height, &raw.height) {
+            if u64::from(w) * u64::from(h) > MAX_PIXELS {
+                let message = format!(
+                    "{w}×{h} is more than {MAX_PIXELS} pixels (2^26): it would exhaust memory"
+                );
+                return Err(self.error(at.span(), message));
+            }
+        }
+        let samples = match &raw.samples {
+            Some(v) => self.int(v, "samples", 1..=i64::from(MAX_SAMPLES))? as u32,
+            None => 1,
+        };
+        Ok(RenderSpec {
+            width,
+            height,
+            samples,
+        })
+    }
+
+    pub(super) fn check(&self, raw: RawCheck, frames: u32) -> Result<CheckSpec, ManifestError> {
+        if raw.frames.get_ref().is_empty() {
+            let message = "[check] `frames` must list at least one frame";
+            return Err(self.error(raw.frames.span(), message));
+        }
+        let mut list = Vec::with_capacity(raw.frames.get_ref().len());
+        let mut seen = HashSet::new();
+        for f in raw.frames.get_ref() {
+            let frame = self.int(f, "check frame", 0..=i64::from(frames) - 1)? as u32;
+            if !seen.insert(frame) {
+                return Err(self.error(f.span(), format!("frame {frame} is listed twice")));
+            }
+            list.push(frame);
+        }
+        let references = self.resolve(&raw.references, "references")?;
+        let byte = |v: &Option<Spanned<i64>>, what, default| match v {
+            Some(v) => self.int(v, what, 0..=255).map(|x| x as u8),
+            None => Ok(default),
+        };
+        let fail = byte(&raw.fail, "fail", 2)?;
+        let hard_fail = byte(&raw.hard_fail, "hard_fail", 64)?;
+        let fail_percent = match &raw.fail_percent {
+            Some(v) if !(0.0..=100.0).contains(v.get_ref()) => {
+                let message = format!(
+                    "`fail_percent` must be between 0 and 100, found {}",
+                    v.get_ref()
+                );
+                return Err(self.error(v.span(), message));
+            }
+            Some(v) => *v.get_ref(),
+            None => 0.1,
+        };
+        Ok(CheckSpec {
+            frames: list,
+            references,
+            fail,
+            fail_percent,
+            hard_fail,
+        })
+    }
+}
+
+/// `<manifest name without .toml>-frames`, beside the manifest.
+fn default_dir(manifest: &Path) -> std::path::PathBuf {
+    let name = manifest
+        .file_name()
+        .map(|n| n.to_string_lossy().into_owned())
+        .unwrap_or_else(|| "animation".to_string());
+    let stem = name.strip_suffix(".toml").unwrap_or(&name);
+    let folder = manifest.parent().unwrap_or(Path::new(""));
+    folder.join(format!("{stem}-frames"))
+}
