@@ -97,6 +97,26 @@ pub fn encode(frame: &Frame, format: ImageFormat, out: &mut dyn Write) -> Result
     Ok(())
 }
 
+/// A hidden temporary file (`.NAME.XXXXXX.tmp`) in `path`'s folder, to be renamed onto
+/// `path` once complete. It gets the permissions of an ordinary new file (0666 less the
+/// umask), not tempfile's private 0600, so renamed frames are readable as usual.
+pub fn temp_beside(path: &Path) -> std::io::Result<tempfile::NamedTempFile> {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("image");
+    let prefix = format!(".{name}.");
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(".tmp");
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        builder.permissions(std::fs::Permissions::from_mode(0o666));
+    }
+    builder.tempfile_in(dir)
+}
+
 /// Writes `frame` to `path` atomically: a temporary file beside it, then a rename. On any
 /// error the temporary file is removed and nothing appears under `path`.
 pub fn write_atomic(path: &Path, frame: &Frame, format: ImageFormat) -> Result<(), OutputError> {
@@ -104,16 +124,7 @@ pub fn write_atomic(path: &Path, frame: &Frame, format: ImageFormat) -> Result<(
         path: path.to_path_buf(),
         source,
     };
-    let dir = match path.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d,
-        _ => Path::new("."),
-    };
-    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("image");
-    let tmp = tempfile::Builder::new()
-        .prefix(&format!(".{name}."))
-        .suffix(".tmp")
-        .tempfile_in(dir)
-        .map_err(io)?;
+    let tmp = temp_beside(path).map_err(io)?;
     {
         let mut w = BufWriter::new(tmp.as_file());
         encode(frame, format, &mut w)?;
@@ -175,8 +186,14 @@ mod tests {
         write_atomic(&path, &frame(), ImageFormat::Png).unwrap();
         let back = image::open(&path).unwrap().to_rgb8();
         assert_eq!(back.into_raw(), frame().pixels);
-        // Only the final file is left in the folder.
+        // Only the final file is left in the folder, readable by others as a new file is.
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::PermissionsExt;
+            let mode = std::fs::metadata(&path).unwrap().permissions().mode();
+            assert_eq!(mode & 0o044, 0o044, "{mode:o}");
+        }
     }
 
     #[test]

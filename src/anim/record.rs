@@ -66,13 +66,11 @@ impl Record {
     /// Writes the record into `dir` atomically.
     pub fn write(&self, dir: &Path) -> std::io::Result<()> {
         let text = toml::to_string(self).map_err(std::io::Error::other)?;
-        let mut tmp = tempfile::Builder::new()
-            .prefix(".animate-record.")
-            .suffix(".tmp")
-            .tempfile_in(dir)?;
+        let path = dir.join(RECORD_FILE);
+        let mut tmp = crate::output::temp_beside(&path)?;
         tmp.write_all(b"# What produced these frames; `animate --resume` compares it.\n")?;
         tmp.write_all(text.as_bytes())?;
-        tmp.persist(dir.join(RECORD_FILE)).map_err(|e| e.error)?;
+        tmp.persist(path).map_err(|e| e.error)?;
         Ok(())
     }
 }

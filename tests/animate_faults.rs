@@ -1,0 +1,223 @@
+//! Faults a render farm meets: signals, output folders that are files or vanish, broken
+//! pipes, full disks, and several processes writing one folder at once.
+
+mod support;
+
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+use support::*;
+
+/// Frames big enough that a run lasts a few seconds.
+const SLOW: &str = "\n[render]\nwidth = 320\nheight = 240\nsamples = 3\n";
+
+fn spawn(manifest: &std::path::Path, args: &[&str]) -> std::process::Child {
+    Command::new(assert_cmd::cargo::cargo_bin("animate"))
+        .arg(manifest)
+        .args(args)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap()
+}
+
+fn signal(child: &std::process::Child, sig: &str) {
+    let ok = Command::new("kill")
+        .args(["-s", sig, &child.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(ok.success());
+}
+
+/// Sends `sig` mid-run; checks the exit status, that no temporary file is left, that
+/// finished frames are complete, and that `--resume` completes the same bytes.
+fn interrupted_run_resumes(sig: &str, code: i32) {
+    let (dir, manifest) = project(&circle_manifest(SLOW));
+    let whole = dir.path().join("whole");
+    animate()
+        .arg(&manifest)
+        .arg("-o")
+        .arg(&whole)
+        .assert()
+        .success();
+    let mut child = spawn(&manifest, &[]);
+    std::thread::sleep(Duration::from_millis(400));
+    let sent = Instant::now();
+    signal(&child, sig);
+    let status = child.wait().unwrap();
+    let took = sent.elapsed();
+    assert_eq!(status.code(), Some(code));
+    assert!(took < Duration::from_secs(3), "took {took:?} to stop");
+    let mut err = String::new();
+    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+    assert!(
+        err.contains("interrupted") && err.contains("--resume"),
+        "{err}"
+    );
+    let frames = dir.path().join("frames");
+    let leftovers: Vec<String> = std::fs::read_dir(&frames)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".tmp"))
+        .collect();
+    assert!(leftovers.is_empty(), "{leftovers:?}");
+    let done = files(&frames);
+    assert!(done.len() < 12, "the signal came too late to test anything");
+    for (name, bytes) in &done {
+        assert!(image::load_from_memory(bytes).is_ok(), "{name}");
+    }
+    animate().arg(&manifest).arg("--resume").assert().success();
+    assert_eq!(files(&frames), files(&whole));
+}
+
+#[test]
+fn sigint_stops_after_frames_in_flight_and_resume_completes() {
+    interrupted_run_resumes("INT", 130);
+}
+
+#[test]
+fn sigterm_stops_after_frames_in_flight_and_resume_completes() {
+    interrupted_run_resumes("TERM", 143);
+}
+
+#[test]
+fn output_folder_that_is_a_file() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    let file = dir.path().join("taken");
+    std::fs::write(&file, b"not a folder").unwrap();
+    let out = animate()
+        .arg(&manifest)
+        .arg("-o")
+        .arg(&file)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("cannot use the frame folder") && err.contains("taken"),
+        "{err}"
+    );
+    assert_eq!(std::fs::read(&file).unwrap(), b"not a folder");
+}
+
+#[test]
+fn unwritable_output_folder() {
+    // Root ignores permission bits, so use a folder no one can create files in.
+    let (_dir, manifest) = project(&circle_manifest(""));
+    let out = animate()
+        .arg(&manifest)
+        .args(["-o", "/proc/animate-frames"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("/proc/animate-frames"), "{err}");
+}
+
+#[test]
+fn output_folder_vanishing_mid_run() {
+    let (dir, manifest) = project(&circle_manifest(SLOW));
+    let frames = dir.path().join("frames");
+    let child = spawn(&manifest, &[]);
+    // Wait for the first frame, then pull the folder away.
+    let start = Instant::now();
+    while files_or_none(&frames) == 0 && start.elapsed() < Duration::from_secs(20) {
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    std::fs::remove_dir_all(&frames).unwrap();
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("frame "), "{err}");
+}
+
+fn files_or_none(dir: &std::path::Path) -> usize {
+    std::fs::read_dir(dir)
+        .map(|d| d.count())
+        .unwrap_or(0)
+        .saturating_sub(1)
+}
+
+#[test]
+fn broken_pipe_on_stdout() {
+    let (_dir, manifest) = project(&circle_manifest(""));
+    let mut child = Command::new(assert_cmd::cargo::cargo_bin("animate"))
+        .arg(&manifest)
+        .args(["--stdout", "raw"])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    // Read one frame's worth, then close the pipe, as an ffmpeg that exits early.
+    let mut stdout = child.stdout.take().unwrap();
+    let mut first = vec![0u8; 64 * 48 * 3];
+    std::io::Read::read_exact(&mut stdout, &mut first).unwrap();
+    drop(stdout);
+    let out = child.wait_with_output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("output stream"), "{err}");
+}
+
+#[test]
+fn full_disk_on_stdout() {
+    let (_dir, manifest) = project(&circle_manifest(""));
+    let full = std::fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/full")
+        .unwrap();
+    let out = Command::new(assert_cmd::cargo::cargo_bin("animate"))
+        .arg(&manifest)
+        .args(["--stdout", "raw"])
+        .stdout(full)
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("No space left"), "{err}");
+}
+
+#[test]
+fn four_shards_at_once_into_one_folder() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    animate()
+        .arg(&manifest)
+        .arg("-o")
+        .arg(dir.path().join("single"))
+        .assert()
+        .success();
+    let shards: Vec<_> = (0..4)
+        .map(|k| spawn(&manifest, &["--shard", &format!("{k}/4")]))
+        .collect();
+    for child in shards {
+        assert!(child.wait_with_output().unwrap().status.success());
+    }
+    assert_eq!(
+        files(&dir.path().join("frames")),
+        files(&dir.path().join("single"))
+    );
+}
+
+#[test]
+fn two_resume_runs_racing_on_the_same_frames() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    animate()
+        .arg(&manifest)
+        .arg("-o")
+        .arg(dir.path().join("single"))
+        .assert()
+        .success();
+    let racers: Vec<_> = (0..2).map(|_| spawn(&manifest, &["--resume"])).collect();
+    for child in racers {
+        assert!(child.wait_with_output().unwrap().status.success());
+    }
+    let frames = dir.path().join("frames");
+    assert_eq!(files(&frames), files(&dir.path().join("single")));
+    let temps = std::fs::read_dir(&frames).unwrap().filter(|e| {
+        e.as_ref()
+            .unwrap()
+            .file_name()
+            .to_string_lossy()
+            .ends_with(".tmp")
+    });
+    assert_eq!(temps.count(), 0);
+}

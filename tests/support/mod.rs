@@ -1,0 +1,79 @@
+//! Shared by the `animate` integration tests: a small scene, manifests written into a
+//! temporary folder, and helpers to run the built binaries and read their frames.
+
+#![allow(dead_code)]
+
+use assert_cmd::Command;
+use std::path::{Path, PathBuf};
+
+/// A small scene with every feature: checker floor, mirror, glass, wood, a cylinder, two
+/// lights and fog. `{EYE}` is replaced by the camera position.
+pub const SCENE: &str = "\
+64 48
+{EYE}
+0 1 0
+2 40
+3 1 1 2
+1.0  -1.3 1 0   1 0.9 0.9 0.9                                0.1 0.9 0 1 0 0
+0.9   1.2 0.9 0.5   1 1 1 1                                0.1 0 0.9 1.5 0 0
+0.6   0 0.6 -1.5   2 3 0.6 0.4 0.2 0.3 0.15 0.05 0 0 0     0.8 0 0 1 0 0
+0 0 0  0 1 0   2 1 1 1 1 0.1 0.1 0.1 0 0 0                 0.9 0 0 1 0 0
+0 1 0  -2 0 -2  0.3   1 0.2 0.5 0.8                        0.7 0 0 1 0 0
+5 10 5  1 1 1  0.9
+-6 8 4  0.6 0.6 0.8  0.6
+";
+
+/// The scene with its camera at `eye`.
+pub fn scene_with_eye(eye: [f64; 3]) -> String {
+    SCENE.replace("{EYE}", &format!("{:?} {:?} {:?}", eye[0], eye[1], eye[2]))
+}
+
+/// A 12-frame circle manifest over `scene.txt` in the same folder; `extra` is appended.
+pub fn circle_manifest(extra: &str) -> String {
+    format!(
+        "scene = \"scene.txt\"\nframes = 12\nfps = 12\n\n[camera]\npath = \"circle\"\n\
+         center = [0.0, 1.0, 0.0]\nradius = 8.0\nheight = 3.0\nstart_angle = 0.0\nturns = 1.0\n\n\
+         [output]\ndir = \"frames\"\nname = \"frame_####\"\nformat = \"png\"\n{extra}"
+    )
+}
+
+/// A temporary folder holding `scene.txt` and `anim.toml` (the given manifest text).
+pub fn project(manifest: &str) -> (tempfile::TempDir, PathBuf) {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("scene.txt"),
+        scene_with_eye([0.0, 3.0, 8.0]),
+    )
+    .unwrap();
+    let path = dir.path().join("anim.toml");
+    std::fs::write(&path, manifest).unwrap();
+    (dir, path)
+}
+
+pub fn animate() -> Command {
+    Command::cargo_bin("animate").unwrap()
+}
+
+pub fn raytrace() -> Command {
+    Command::cargo_bin("raytrace").unwrap()
+}
+
+/// The visible files of a folder, sorted, with their bytes.
+pub fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
+    let mut out: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap())
+        .filter(|e| !e.file_name().to_string_lossy().starts_with('.'))
+        .map(|e| {
+            let name = e.file_name().to_string_lossy().into_owned();
+            (name, std::fs::read(e.path()).unwrap())
+        })
+        .collect();
+    out.sort();
+    out
+}
+
+/// The RGB pixels of a PNG file.
+pub fn pixels(path: &Path) -> Vec<u8> {
+    image::open(path).unwrap().to_rgb8().into_raw()
+}
