@@ -9,6 +9,7 @@
 //! `raytrace` (one image) and `animate` (frame sequences) are thin binaries over it, so
 //! both draw exactly the same pixels.
 
+pub mod accel;
 pub mod anim;
 pub mod bump;
 pub mod camera;

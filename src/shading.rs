@@ -40,11 +40,25 @@ pub fn transmission(objects: &[Object], p: DVec3, to_light: DVec3, dist: f64) ->
     through
 }
 
+/// What stands between a point and a light: answers `transmission` queries.
+pub trait Occluders {
+    /// What a shadow ray from `p` along the unit `to_light` lets through over a distance
+    /// `dist`, as the free function `transmission` defines it.
+    fn transmission(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color;
+}
+
+/// The reference: a linear scan over the objects.
+impl Occluders for [Object] {
+    fn transmission(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color {
+        transmission(self, p, to_light, dist)
+    }
+}
+
 /// The local colour at `p`: ambient plus each light's diffuse and specular, shadowed.
 /// `shadow_rays` counts the shadow rays cast.
 #[allow(clippy::too_many_arguments)]
-pub fn direct(
-    objects: &[Object],
+pub fn direct<O: Occluders + ?Sized>(
+    occluders: &O,
     lights: &[Light],
     p: DVec3,
     n: DVec3,
@@ -66,7 +80,7 @@ pub fn direct(
             continue;
         }
         *shadow_rays += 1;
-        let through = transmission(objects, p, l, dist);
+        let through = occluders.transmission(p, l, dist);
         if through == Color::ZERO {
             continue;
         }
@@ -85,6 +99,8 @@ mod tests {
     use crate::object::Material;
     use crate::shapes::{Shape, Sphere};
     use crate::texture::Texture;
+
+    const NONE: &[Object] = &[];
 
     fn white_light(at: DVec3) -> Light {
         Light {
@@ -115,7 +131,16 @@ mod tests {
         let light = white_light(DVec3::new(1.0, 1.0, 0.0));
         let v = DVec3::new(0.0, -1.0, 0.0);
         let mut n_rays = 0;
-        let got = direct(&[], &[light], DVec3::ZERO, DVec3::Y, v, c, 1.0, &mut n_rays);
+        let got = direct(
+            NONE,
+            &[light],
+            DVec3::ZERO,
+            DVec3::Y,
+            v,
+            c,
+            1.0,
+            &mut n_rays,
+        );
         let k = 0.2 + std::f64::consts::FRAC_1_SQRT_2;
         assert!((got - c * k).length() < 1e-12, "{got}");
         assert_eq!(n_rays, 1);
@@ -129,7 +154,7 @@ mod tests {
         let s = std::f64::consts::FRAC_1_SQRT_2;
         let v = DVec3::new(s, -s, 0.0);
         let light = white_light(DVec3::new(0.0, 5.0, 0.0));
-        let got = direct(&[], &[light], DVec3::ZERO, DVec3::Y, v, c, 0.5, &mut 0);
+        let got = direct(NONE, &[light], DVec3::ZERO, DVec3::Y, v, c, 0.5, &mut 0);
         let spec = 0.5 / 1024.0;
         let want = Color::new(0.2 + 0.5 + spec, spec, spec);
         assert!((got - want).length() < 1e-12, "{got}");
@@ -140,7 +165,7 @@ mod tests {
         let c = Color::ONE;
         let light = white_light(DVec3::new(0.0, -5.0, 0.0));
         let got = direct(
-            &[],
+            NONE,
             &[light],
             DVec3::ZERO,
             DVec3::Y,

@@ -10,11 +10,13 @@
 //!   (the product of the Kr / Kt along its path) is below 1/256;
 //! - a ray that hits nothing is black.
 
+use crate::accel::Accel;
 use crate::object::Object;
 use crate::optics::{reflect, refract, Ray};
 use crate::scene::Scene;
-use crate::shading;
+use crate::shading::{self, Occluders};
 use crate::texture::Color;
+use glam::DVec3;
 
 /// Bounces allowed after the primary ray.
 pub const MAX_DEPTH: u32 = 5;
@@ -50,9 +52,10 @@ impl std::ops::Add for RayCount {
 }
 
 /// Traces rays through one scene: everything prepared once per scene (and shared by every
-/// frame of an animation) lives here.
+/// frame of an animation) lives here — the acceleration structures of `accel`.
 pub struct Tracer<'a> {
     scene: &'a Scene,
+    accel: Accel,
 }
 
 impl<'a> Tracer<'a> {
@@ -61,13 +64,26 @@ impl<'a> Tracer<'a> {
         self.scene
     }
 
+    /// Prepares `scene` for tracing: builds its BVH (once; every frame shares it).
     pub fn new(scene: &'a Scene) -> Tracer<'a> {
-        Tracer { scene }
+        Tracer {
+            scene,
+            accel: Accel::new(&scene.objects),
+        }
     }
 
-    /// The nearest object hit, with its t.
+    /// The nearest object hit, with its t: the first object in file order among those at
+    /// the smallest t, exactly as `nearest_linear` finds it.
     #[inline]
-    fn nearest(&self, ray: &Ray) -> Option<(f64, &'a Object)> {
+    pub fn nearest(&self, ray: &Ray) -> Option<(f64, &'a Object)> {
+        let objects = &self.scene.objects;
+        self.accel
+            .nearest(objects, ray)
+            .map(|(t, i)| (t, &objects[i]))
+    }
+
+    /// The reference linear scan over every object (tests and benchmarks).
+    pub fn nearest_linear(&self, ray: &Ray) -> Option<(f64, &'a Object)> {
         let mut best: Option<(f64, &Object)> = None;
         let mut t_max = f64::INFINITY;
         for obj in &self.scene.objects {
@@ -77,6 +93,14 @@ impl<'a> Tracer<'a> {
             }
         }
         best
+    }
+
+    /// What a shadow ray from `p` towards a light `dist` away along the unit `to_light`
+    /// lets through: exactly `shading::transmission(&scene.objects, ..)`.
+    #[inline]
+    pub fn transmission(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color {
+        self.accel
+            .transmission(&self.scene.objects, p, to_light, dist)
     }
 
     /// The colour seen along a camera ray: the traced colour with the scene's fog, not
@@ -119,10 +143,9 @@ impl<'a> Tracer<'a> {
         let bumped = m.bump.apply(outward, p);
         let n = if entering { bumped } else { -bumped };
 
-        let scene = self.scene;
         let mut out = shading::direct(
-            &scene.objects,
-            &scene.lights,
+            self,
+            &self.scene.lights,
             p,
             n,
             v,
@@ -151,5 +174,12 @@ impl<'a> Tracer<'a> {
             }
         }
         out
+    }
+}
+
+impl Occluders for Tracer<'_> {
+    #[inline]
+    fn transmission(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color {
+        Tracer::transmission(self, p, to_light, dist)
     }
 }

@@ -46,6 +46,23 @@ impl Roots {
     pub fn as_slice(&self) -> &[f64] {
         &self.t[..self.n]
     }
+
+    /// Every root with T_MIN < t < t_max, ascending: the surface crossings of a shadow ray.
+    #[inline]
+    pub fn crossings(self, t_max: f64) -> impl Iterator<Item = f64> {
+        (0..self.n)
+            .map(move |i| self.t[i])
+            .filter(move |&t| t > T_MIN && t < t_max)
+    }
+
+    /// The first root with T_MIN < t < t_max, if any: what a ray hits.
+    #[inline]
+    pub fn first_hit(&self, t_max: f64) -> Option<f64> {
+        self.as_slice()
+            .iter()
+            .copied()
+            .find(|&t| t > T_MIN && t < t_max)
+    }
 }
 
 /// A surface of the scene.
@@ -70,20 +87,20 @@ impl Shape {
     /// The nearest hit with T_MIN < t < t_max, if any.
     #[inline]
     pub fn hit(&self, ray: &Ray, t_max: f64) -> Option<f64> {
-        self.roots(ray)
-            .as_slice()
-            .iter()
-            .copied()
-            .find(|&t| t > T_MIN && t < t_max)
+        self.roots(ray).first_hit(t_max)
+    }
+
+    /// True for a shape that fits in a finite box (a sphere); planes and cylinders are
+    /// infinite.
+    #[inline]
+    pub fn is_bounded(&self) -> bool {
+        matches!(self, Shape::Sphere(_))
     }
 
     /// Every crossing with T_MIN < t < t_max (what a shadow ray passes through).
     #[inline]
     pub fn crossings(&self, ray: &Ray, t_max: f64) -> impl Iterator<Item = f64> {
-        let roots = self.roots(ray);
-        (0..roots.n)
-            .map(move |i| roots.t[i])
-            .filter(move |&t| t > T_MIN && t < t_max)
+        self.roots(ray).crossings(t_max)
     }
 
     /// The outward unit normal at a point `p` of the surface.
