@@ -69,6 +69,35 @@ impl Quadric {
         let [a, b, c, d, e, f, g, h, i, j] = self.coef;
         let o = ray.origin - self.origin;
         let v = ray.dir;
+        // Axis-aligned quadrics (an x, y or z cylinder) have D..I = 0: their terms add
+        // signed zeros to Aq, Bq and Cq, which leave a non-zero sum as it is. So when the
+        // sums without them are non-zero (and J ≠ 0, and nothing is large enough to
+        // overflow), the short form below gives the general form's Aq, Bq, Cq bit for bit;
+        // otherwise (a zero Bq, whose sign `copysign` reads) the general form decides.
+        // (Bits with the sign shifted out: zero exactly for ±0.)
+        let zeros =
+            (d.to_bits() | e.to_bits() | f.to_bits() | g.to_bits() | h.to_bits() | i.to_bits())
+                << 1;
+        if zeros == 0 && j != 0.0 {
+            // No overflow, so the zero terms are zeros, not NaN from 0·∞ (a NaN coordinate
+            // may pass: it makes both forms NaN alike).
+            let tame = o.abs().max(v.abs()).max_element() < 1e150;
+            let bq = 2.0 * (a * o.x * v.x + b * o.y * v.y + c * o.z * v.z);
+            if tame && bq != 0.0 {
+                let aq = a * v.x * v.x + b * v.y * v.y + c * v.z * v.z;
+                let cq = a * o.x * o.x + b * o.y * o.y + c * o.z * o.z + j;
+                return Self::solve(aq, bq, cq);
+            }
+        }
+        self.roots_general(ray)
+    }
+
+    /// The report's general form, term by term.
+    #[inline]
+    fn roots_general(&self, ray: &Ray) -> Roots {
+        let [a, b, c, d, e, f, g, h, i, j] = self.coef;
+        let o = ray.origin - self.origin;
+        let v = ray.dir;
         let aq = a * v.x * v.x
             + b * v.y * v.y
             + c * v.z * v.z
@@ -92,6 +121,12 @@ impl Quadric {
             + h * o.y
             + i * o.z
             + j;
+        Self::solve(aq, bq, cq)
+    }
+
+    /// The roots of Aq·t² + Bq·t + Cq = 0.
+    #[inline(always)]
+    fn solve(aq: f64, bq: f64, cq: f64) -> Roots {
         if aq.abs() < LINEAR_EPS {
             if bq.abs() < LINEAR_EPS {
                 return Roots::NONE;
@@ -198,6 +233,55 @@ mod tests {
         ] {
             assert_eq!(q.roots(&Ray::new(o, DVec3::Y)), Roots::NONE);
         }
+    }
+
+    /// The short form for axis-aligned quadrics gives the general form's roots bit for
+    /// bit, on random rays and on the awkward ones: direction components ±0, origins on
+    /// the axis (Bq = ±0, where the sign of zero picks the root formula), tangents.
+    #[test]
+    fn axis_aligned_short_form_is_bit_exact() {
+        let mut state = 0x9e3779b97f4a7c15u64;
+        let mut rnd = move || {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            (state >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
+        };
+        let pick = |x: f64, k: u64| match k % 5 {
+            0 => 0.0,
+            1 => -0.0,
+            2 => x.round(),
+            _ => x,
+        };
+        let bits = |r: Roots| {
+            let s = r.as_slice();
+            (s.len(), s.iter().map(|t| t.to_bits()).collect::<Vec<_>>())
+        };
+        let mut k = 0u64;
+        let mut tested = 0;
+        for axis in [DVec3::X, DVec3::Y, DVec3::Z, -DVec3::Y] {
+            for _ in 0..4000 {
+                k += 1;
+                let point = DVec3::new(pick(rnd() * 5.0, k), rnd() * 3.0, pick(rnd(), k / 3));
+                let q = Quadric::cylinder(axis, point, 0.1 + rnd().abs());
+                let o = DVec3::new(
+                    pick(rnd() * 8.0, k / 5),
+                    pick(rnd() * 8.0, k / 7),
+                    pick(rnd() * 8.0, k / 11),
+                );
+                let o = if k % 13 == 0 {
+                    q.origin + axis * rnd()
+                } else {
+                    o
+                };
+                let d = DVec3::new(pick(rnd(), k / 2), pick(rnd(), k / 17), pick(rnd(), k / 19));
+                let Some(d) = d.try_normalize() else { continue };
+                let r = Ray::new(o, d);
+                assert_eq!(bits(q.roots(&r)), bits(q.roots_general(&r)), "{q:?} {r:?}");
+                tested += 1;
+            }
+        }
+        assert!(tested > 10000);
     }
 
     #[test]
