@@ -77,9 +77,7 @@ impl<'a> Tracer<'a> {
     #[inline]
     pub fn nearest(&self, ray: &Ray) -> Option<(f64, &'a Object)> {
         let objects = &self.scene.objects;
-        self.accel
-            .nearest(objects, ray)
-            .map(|(t, i)| (t, &objects[i]))
+        self.accel.nearest(ray).map(|(t, i)| (t, &objects[i]))
     }
 
     /// The reference linear scan over every object (tests and benchmarks).

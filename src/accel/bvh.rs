@@ -52,7 +52,7 @@ const BLANK: Node = Node {
 /// A ray prepared for box tests: 1/dir, which corner each axis enters by, and its origin
 /// moved by ±δ so that every box is widened by δ at no extra cost per node.
 #[derive(Clone, Copy, Debug)]
-pub struct RayBox {
+struct RayBox {
     inv: [f64; 3],
     /// Per axis, the corner (0 low, 1 high) whose plane the ray crosses first.
     near: [usize; 3],
@@ -81,15 +81,7 @@ fn min(a: f64, b: f64) -> f64 {
 }
 
 impl RayBox {
-    /// A placeholder for queries on flat lists, which never read it.
-    pub const UNUSED: RayBox = RayBox {
-        inv: [0.0; 3],
-        near: [0; 3],
-        o_near: [0.0; 3],
-        o_far: [0.0; 3],
-    };
-
-    /// `scale`: the largest coordinate magnitude of any box in the trees queried.
+    /// `scale`: the largest coordinate magnitude of any box in the tree queried.
     ///
     /// Why δ = 1e-5·(|o|∞ + scale + 1) suffices: the sphere test computes
     /// CH² = |OC|² − (OC·D)², whose absolute error is a few ε·|OC|² (ε = 2^-53); so a
@@ -97,11 +89,16 @@ impl RayBox {
     /// of the centre, inside the box widened by δ with a margin of ~50×, which also
     /// covers the rounding of the slab arithmetic (a few ε of the same magnitudes).
     #[inline]
-    pub fn new(ray: &Ray, scale: f64) -> RayBox {
+    fn new(ray: &Ray, scale: f64) -> RayBox {
         let delta = PAD * (ray.origin.abs().max_element() + scale + 1.0);
         let o = ray.origin.to_array();
         let d = ray.dir.to_array();
-        let mut rb = RayBox::UNUSED;
+        let mut rb = RayBox {
+            inv: [0.0; 3],
+            near: [0; 3],
+            o_near: [0.0; 3],
+            o_far: [0.0; 3],
+        };
         for i in 0..3 {
             rb.inv[i] = 1.0 / d[i];
             // The sign bit decides, so that −0 enters by the high corner like any
@@ -201,11 +198,6 @@ impl Bvh {
         self.prims.len()
     }
 
-    /// The largest coordinate magnitude of the tree's boxes (for `RayBox::new`).
-    pub fn scale(&self) -> f64 {
-        self.scale
-    }
-
     /// True when the tree is a flat list (no box tests: `RayBox` is not read).
     pub fn is_flat(&self) -> bool {
         self.nodes.is_empty()
@@ -217,7 +209,7 @@ impl Bvh {
     #[inline]
     pub fn traverse(
         &self,
-        rb: &RayBox,
+        ray: &Ray,
         mut limit: f64,
         mut visit: impl FnMut(&Prim, f64) -> Option<f64>,
     ) {
@@ -230,6 +222,7 @@ impl Bvh {
             }
             return;
         }
+        let rb = &RayBox::new(ray, self.scale);
         if rb.enter(&self.nodes[0], limit).is_none() {
             return;
         }

@@ -14,7 +14,7 @@
 
 mod bvh;
 
-pub use bvh::{Bvh, Prim, RayBox};
+pub use bvh::{Bvh, Prim};
 
 use crate::object::Object;
 use crate::optics::Ray;
@@ -38,14 +38,12 @@ pub struct Accel {
     opaque: Bvh,
     /// Bounded objects with Kt > 0 (shadow rays: every crossing filters).
     glass: Bvh,
-    /// Unbounded objects, in object order.
-    unbounded: Vec<u32>,
-    unbounded_opaque: Vec<u32>,
+    /// Unbounded objects, in object order, with their indices.
+    unbounded: Vec<(u32, Shape)>,
+    unbounded_opaque: Vec<Shape>,
     unbounded_glass: Vec<u32>,
     /// Every object with Kt > 0, in object order.
     glass_all: Vec<u32>,
-    /// The largest coordinate magnitude of any box (for `RayBox`).
-    scale: f64,
 }
 
 fn is_glass(o: &Object) -> bool {
@@ -76,37 +74,35 @@ impl Accel {
                 .map(|(i, _)| i as u32)
                 .collect()
         };
-        let all = Bvh::build(prims(&|_| true));
-        let scale = all.scale();
+        let unbounded = |keep: &dyn Fn(&Object) -> bool| -> Vec<(u32, Shape)> {
+            objects
+                .iter()
+                .enumerate()
+                .filter(|(_, o)| !o.shape.is_bounded() && keep(o))
+                .map(|(i, o)| (i as u32, o.shape))
+                .collect()
+        };
         Accel {
+            all: Bvh::build(prims(&|_| true)),
             opaque: Bvh::build(prims(&|o| !is_glass(o))),
             glass: Bvh::build(prims(&is_glass)),
-            all,
-            unbounded: indices(&|o| !o.shape.is_bounded()),
-            unbounded_opaque: indices(&|o| !o.shape.is_bounded() && !is_glass(o)),
-            unbounded_glass: indices(&|o| !o.shape.is_bounded() && is_glass(o)),
+            unbounded: unbounded(&|_| true),
+            unbounded_opaque: unbounded(&|o| !is_glass(o))
+                .into_iter()
+                .map(|(_, s)| s)
+                .collect(),
+            unbounded_glass: unbounded(&is_glass).into_iter().map(|(i, _)| i).collect(),
             glass_all: indices(&is_glass),
-            scale,
-        }
-    }
-
-    /// The ray prepared for `tree`'s box tests (a placeholder for a flat list).
-    #[inline]
-    fn ray_box(&self, tree: &Bvh, ray: &Ray) -> RayBox {
-        if tree.is_flat() {
-            RayBox::UNUSED
-        } else {
-            RayBox::new(ray, self.scale)
         }
     }
 
     /// The nearest hit (t, object index), as the linear scan finds it.
     #[inline]
-    pub fn nearest(&self, objects: &[Object], ray: &Ray) -> Option<(f64, usize)> {
+    pub fn nearest(&self, ray: &Ray) -> Option<(f64, usize)> {
         let mut best_t = f64::INFINITY;
         let mut best_i = u32::MAX;
-        for &i in &self.unbounded {
-            if let Some(t) = objects[i as usize].shape.hit(ray, f64::INFINITY) {
+        for &(i, ref shape) in &self.unbounded {
+            if let Some(t) = shape.hit(ray, f64::INFINITY) {
                 if t < best_t || (t == best_t && i < best_i) {
                     best_t = t;
                     best_i = i;
@@ -114,9 +110,8 @@ impl Accel {
             }
         }
         if !self.all.is_empty() {
-            let rb = self.ray_box(&self.all, ray);
-            self.all.traverse(&rb, best_t, |prim, limit| {
-                if let Some(t) = prim.sphere.roots(ray).first_hit(f64::INFINITY) {
+            self.all.traverse(ray, best_t, |prim, limit| {
+                if let Some(t) = prim.sphere.hit(ray, f64::INFINITY) {
                     if t < best_t || (t == best_t && prim.index < best_i) {
                         best_t = t;
                         best_i = prim.index;
@@ -134,20 +129,15 @@ impl Accel {
     #[inline]
     pub fn transmission(&self, objects: &[Object], p: DVec3, to_light: DVec3, dist: f64) -> Color {
         let ray = Ray::new(p, to_light);
-        for &i in &self.unbounded_opaque {
-            if objects[i as usize].shape.hit(&ray, dist).is_some() {
+        for shape in &self.unbounded_opaque {
+            if shape.hit(&ray, dist).is_some() {
                 return Color::ZERO;
             }
         }
-        let rb = if self.opaque.is_flat() && self.glass.is_flat() {
-            RayBox::UNUSED
-        } else {
-            RayBox::new(&ray, self.scale)
-        };
         if !self.opaque.is_empty() {
             let mut blocked = false;
-            self.opaque.traverse(&rb, dist, |prim, limit| {
-                if prim.sphere.roots(&ray).first_hit(dist).is_some() {
+            self.opaque.traverse(&ray, dist, |prim, limit| {
+                if prim.sphere.hit(&ray, dist).is_some() {
                     blocked = true;
                     None
                 } else {
@@ -162,7 +152,7 @@ impl Accel {
             return Color::ONE;
         }
         if self.glass_all.len() > GLASS_LINEAR_MAX {
-            if let Some(c) = self.glass_tree(objects, &ray, &rb, dist) {
+            if let Some(c) = self.glass_tree(objects, &ray, dist) {
                 return c;
             }
         }
@@ -179,7 +169,7 @@ impl Accel {
 
     /// The transparent crossings found through the tree, multiplied in object order; `None`
     /// when there are more than `CROSSINGS_MAX` of them.
-    fn glass_tree(&self, objects: &[Object], ray: &Ray, rb: &RayBox, dist: f64) -> Option<Color> {
+    fn glass_tree(&self, objects: &[Object], ray: &Ray, dist: f64) -> Option<Color> {
         let mut buf = [(0u32, 0.0f64); CROSSINGS_MAX];
         let mut n = 0usize;
         let mut overflow = false;
@@ -200,7 +190,7 @@ impl Accel {
                 }
             }
         }
-        self.glass.traverse(rb, dist, |prim, limit| {
+        self.glass.traverse(ray, dist, |prim, limit| {
             for t in prim.sphere.roots(ray).crossings(dist) {
                 if !push(prim.index, t) {
                     return None;
@@ -352,14 +342,14 @@ mod tests {
             };
             if k % 3 == 0 {
                 // Start on the nearest surface, as secondary rays do.
-                if let Some((t, _)) = accel.nearest(objects, &Ray::new(origin, dir)) {
+                if let Some((t, _)) = accel.nearest(&Ray::new(origin, dir)) {
                     origin += dir * t;
                     dir = rng.vec(1.0).normalize();
                 }
             }
             let ray = Ray::new(origin, dir);
             let want = linear_nearest(objects, &ray);
-            let got = accel.nearest(objects, &ray).map(|(t, i)| (t.to_bits(), i));
+            let got = accel.nearest(&ray).map(|(t, i)| (t.to_bits(), i));
             assert_eq!(got, want, "{ray:?}");
             hits += want.is_some() as usize;
             let dist = [f64::INFINITY, 3.0, 30.0][k % 3];
@@ -458,7 +448,7 @@ mod tests {
             let edge = s.center + side.normalize() * s.radius * (1.0 + rng.next() * 1e-9);
             let ray = Ray::new(origin, (edge - origin).normalize());
             let want = linear_nearest(&objects, &ray);
-            let got = accel.nearest(&objects, &ray).map(|(t, i)| (t.to_bits(), i));
+            let got = accel.nearest(&ray).map(|(t, i)| (t.to_bits(), i));
             assert_eq!(got, want, "{ray:?}");
             hits += want.is_some() as usize;
             let want = shading::transmission(&objects, origin, ray.dir, f64::INFINITY);
@@ -492,6 +482,6 @@ mod tests {
         let accel = Accel::new(&objects);
         assert!(!accel.all.is_flat());
         let ray = Ray::new(DVec3::new(0.0, 0.0, 5.0), -DVec3::Z);
-        assert_eq!(accel.nearest(&objects, &ray), Some((4.0, 0)));
+        assert_eq!(accel.nearest(&ray), Some((4.0, 0)));
     }
 }

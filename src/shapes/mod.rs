@@ -87,7 +87,11 @@ impl Shape {
     /// The nearest hit with T_MIN < t < t_max, if any.
     #[inline]
     pub fn hit(&self, ray: &Ray, t_max: f64) -> Option<f64> {
-        self.roots(ray).first_hit(t_max)
+        match self {
+            Shape::Sphere(s) => s.hit(ray, t_max),
+            Shape::Plane(p) => p.hit(ray, t_max),
+            Shape::Quadric(q) => q.roots(ray).first_hit(t_max),
+        }
     }
 
     /// True for a shape that fits in a finite box (a sphere); planes and cylinders are

@@ -4,7 +4,7 @@
 //! the plane (|N·Dir| < 1e-12) misses it.
 
 use super::Roots;
-use crate::optics::Ray;
+use crate::optics::{Ray, T_MIN};
 use glam::DVec3;
 
 /// A plane through `point` with unit `normal`.
@@ -31,6 +31,17 @@ impl Plane {
         }
         // −(N·O + D) with D = −N·P is N·(P − O), which keeps precision far from the origin.
         Roots::one(self.normal.dot(self.point - ray.origin) / denom)
+    }
+
+    /// `roots(ray).first_hit(t_max)` without building the `Roots`.
+    #[inline(always)]
+    pub fn hit(&self, ray: &Ray, t_max: f64) -> Option<f64> {
+        let denom = self.normal.dot(ray.dir);
+        if denom.abs() < 1e-12 {
+            return None;
+        }
+        let t = self.normal.dot(self.point - ray.origin) / denom;
+        (t > T_MIN && t < t_max).then_some(t)
     }
 
     #[inline]

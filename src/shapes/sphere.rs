@@ -7,7 +7,7 @@
 //! applies only there (a refracted ray inside a glass sphere must still find its exit).
 
 use super::Roots;
-use crate::optics::Ray;
+use crate::optics::{Ray, T_MIN};
 use glam::DVec3;
 
 /// A sphere given by centre and radius (> 0).
@@ -43,6 +43,32 @@ impl Sphere {
         }
         let half = (self.radius2 - ch2).sqrt();
         Roots::two(oh - half, oh + half)
+    }
+
+    /// The first root with T_MIN < t < t_max: `roots(ray).first_hit(t_max)` without
+    /// building the `Roots` (the roots oh ∓ half are already in ascending order).
+    #[inline(always)]
+    pub fn hit(&self, ray: &Ray, t_max: f64) -> Option<f64> {
+        let oc = self.center - ray.origin;
+        let oh = oc.dot(ray.dir);
+        let oc2 = oc.length_squared();
+        if oh < 0.0 && oc2 > self.radius2 {
+            return None;
+        }
+        let ch2 = oc2 - oh * oh;
+        if ch2 > self.radius2 {
+            return None;
+        }
+        let half = (self.radius2 - ch2).sqrt();
+        let t0 = oh - half;
+        if t0 > T_MIN && t0 < t_max {
+            return Some(t0);
+        }
+        let t1 = oh + half;
+        if t1 > T_MIN && t1 < t_max {
+            return Some(t1);
+        }
+        None
     }
 
     /// Outward unit normal: CP / R.
@@ -98,6 +124,30 @@ mod tests {
         // Origin (2,0,0): CH² = 4 = R², a double root at t = 5.
         let r = Ray::new(DVec3::new(2.0, 0.0, 0.0), -DVec3::Z);
         assert_eq!(sphere().roots(&r).as_slice(), &[5.0, 5.0]);
+    }
+
+    #[test]
+    fn hit_is_roots_first_hit() {
+        let s = sphere();
+        let mut k = 0u64;
+        for ox in [-3.0, -2.0, -0.5, 0.0, 0.3, 2.0, 2.5] {
+            for oz in [-9.0, -7.0, -5.0, -3.01, -3.0, 0.0, 4.0] {
+                for dx in [-1.0, -0.4, 0.0, 0.2, 1.0] {
+                    for dz in [-1.0, -0.3, 0.0, 0.5, 1.0] {
+                        let Some(d) = DVec3::new(dx, 0.1 * (k % 3) as f64, dz).try_normalize()
+                        else {
+                            continue;
+                        };
+                        k += 1;
+                        let r = Ray::new(DVec3::new(ox, 0.0, oz), d);
+                        for t_max in [f64::INFINITY, 4.0, 1.0] {
+                            assert_eq!(s.hit(&r, t_max), s.roots(&r).first_hit(t_max), "{r:?}");
+                        }
+                    }
+                }
+            }
+        }
+        assert!(k > 1000);
     }
 
     #[test]
