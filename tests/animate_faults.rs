@@ -221,3 +221,63 @@ fn two_resume_runs_racing_on_the_same_frames() {
     });
     assert_eq!(temps.count(), 0);
 }
+
+/// The peak resident memory (VmHWM, KiB) of a running process, polled until it exits.
+fn peak_kib_until_exit(mut child: std::process::Child) -> (u64, std::process::ExitStatus) {
+    let status_file = format!("/proc/{}/status", child.id());
+    let mut peak = 0;
+    loop {
+        if let Ok(text) = std::fs::read_to_string(&status_file) {
+            let hwm = text
+                .lines()
+                .find_map(|l| l.strip_prefix("VmHWM:"))
+                .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<u64>().ok());
+            peak = peak.max(hwm.unwrap_or(0));
+        }
+        if let Some(status) = child.try_wait().unwrap() {
+            return (peak, status);
+        }
+        std::thread::sleep(Duration::from_millis(5));
+    }
+}
+
+#[test]
+fn memory_stays_flat_over_ten_thousand_frames() {
+    // 10,000 small frames into a folder; the peak must not grow with the frame count.
+    let manifest = circle_manifest("\n[render]\nwidth = 16\nheight = 12\n")
+        .replace("frames = 12", "frames = 10000");
+    let (dir, manifest) = project(&manifest);
+    let (peak, status) = peak_kib_until_exit(spawn(&manifest, &["--quiet"]));
+    assert!(status.success());
+    assert_eq!(files(&dir.path().join("frames")).len(), 10000);
+    assert!(peak > 0 && peak < 100 * 1024, "peak {peak} KiB");
+}
+
+#[test]
+fn limits_are_refused_with_messages() {
+    let cases = [
+        ("frames = 12", "frames = 2000000", "frames"),
+        (
+            "format = \"png\"\n",
+            "format = \"png\"\n[render]\nwidth = 16385\n",
+            "width",
+        ),
+        (
+            "format = \"png\"\n",
+            "format = \"png\"\n[render]\nwidth = 16384\nheight = 16384\n",
+            "pixels",
+        ),
+        (
+            "format = \"png\"\n",
+            "format = \"png\"\n[render]\nsamples = 64\n",
+            "samples",
+        ),
+    ];
+    for (from, to, word) in cases {
+        let (_dir, manifest) = project(&circle_manifest("").replace(from, to));
+        let out = animate().arg(&manifest).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{to}: {err}");
+        assert!(err.contains(word), "{to}: {err}");
+    }
+}

@@ -4,7 +4,7 @@
 //! 130/143 interrupted by SIGINT/SIGTERM (finished frames are kept).
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-use indicatif::{ProgressBar, ProgressStyle};
+use indicatif::{ProgressBar, ProgressState, ProgressStyle};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
@@ -166,9 +166,12 @@ fn progress_bar(total: usize, quiet: bool) -> ProgressBar {
     }
     let bar = ProgressBar::new(total as u64);
     let style = ProgressStyle::with_template(
-        "{elapsed_precise} [{wide_bar}] {pos}/{len} frames  {per_sec}  ETA {eta}",
+        "{elapsed_precise} [{wide_bar}] {pos}/{len} frames  {fps}  ETA {eta}",
     )
-    .unwrap_or_else(|_| ProgressStyle::default_bar());
+    .unwrap_or_else(|_| ProgressStyle::default_bar())
+    .with_key("fps", |state: &ProgressState, w: &mut dyn std::fmt::Write| {
+        let _ = write!(w, "{:.1} frames/s", state.per_sec());
+    });
     bar.set_style(style.progress_chars("=> "));
     bar
 }
