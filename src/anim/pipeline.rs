@@ -2,11 +2,14 @@
 //! `Tracer` built once, shared by every frame), frames rendered in parallel with rayon,
 //! then either written into a folder or streamed in frame order.
 //!
-//! - Folder: each frame is encoded and written to a temporary name in the folder, then
-//!   renamed, so a file under a final name is always complete; `resume` skips frames whose
-//!   file exists. Memory holds only the frames in flight.
+//! - Folder: frames render in windows of four per thread; each is encoded and written to
+//!   a temporary name in the folder, then renamed, so a file under a final name is always
+//!   complete; `resume` skips frames whose file exists.
 //! - Stream (`--stdout`, `--video`): frames render in windows of twice the thread count
-//!   and are written in order, so memory stays bounded whatever the frame count.
+//!   and are written in order.
+//!
+//! A window never holds more than `FRAME_MEMORY` of frames, so memory stays bounded whatever
+//! the frame count, the frame size or the thread count.
 //!
 //! Both stop between frames when `stop` holds a signal number, and after the first
 //! failure; the frames already finished stay finished.
@@ -24,6 +27,9 @@ use std::io::Write;
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
+
+/// The memory frames in flight may take (pixels and their encoded copy): 1 GiB.
+pub const FRAME_MEMORY: usize = 1 << 30;
 
 /// A manifest bound to its scene: everything needed to draw any of its frames.
 pub struct Animation<'a> {
@@ -110,6 +116,14 @@ impl<'a> Animation<'a> {
         )
     }
 
+    /// How many frames may be in flight at once: `per_thread` per worker thread, but no
+    /// more than fit in `FRAME_MEMORY` (at least one), whatever `--threads` says.
+    pub fn window(&self, per_thread: usize) -> usize {
+        let frame_bytes = (self.width as usize * self.height as usize * 3).max(1);
+        let fit = (FRAME_MEMORY / (2 * frame_bytes)).max(1);
+        (per_thread * rayon::current_num_threads().max(1)).min(fit)
+    }
+
     /// The final path of frame `frame` inside `dir`.
     pub fn frame_path(&self, dir: &Path, frame: u32) -> std::path::PathBuf {
         dir.join(self.manifest.output.file_name(frame, self.manifest.frames))
@@ -146,31 +160,39 @@ pub fn render_to_folder(
     let format = anim.format();
     let failure: Mutex<Option<AnimError>> = Mutex::new(None);
     let failed = || failure.lock().map(|f| f.is_some()).unwrap_or(true);
+    // One frame: rendered, encoded and written on its worker; the first failure is kept.
+    let work = |frame: u32| -> RayCount {
+        if stopped(stop).is_some() || failed() {
+            return RayCount::default();
+        }
+        let result = anim.render(frame).and_then(|(image, rays)| {
+            write_atomic(&anim.frame_path(dir, frame), &image, format)
+                .map_err(|source| AnimError::Write { frame, source })?;
+            Ok(rays)
+        });
+        match result {
+            Ok(rays) => {
+                progress.inc(1);
+                rays
+            }
+            Err(e) => {
+                if let Ok(mut slot) = failure.lock() {
+                    slot.get_or_insert(e);
+                }
+                RayCount::default()
+            }
+        }
+    };
     let rays = todo
-        .par_iter()
-        .map(|&frame| {
-            if stopped(stop).is_some() || failed() {
-                return RayCount::default();
-            }
-            let result = anim.render(frame).and_then(|(image, rays)| {
-                write_atomic(&anim.frame_path(dir, frame), &image, format)
-                    .map_err(|source| AnimError::Write { frame, source })?;
-                Ok(rays)
-            });
-            match result {
-                Ok(rays) => {
-                    progress.inc(1);
-                    rays
-                }
-                Err(e) => {
-                    if let Ok(mut slot) = failure.lock() {
-                        slot.get_or_insert(e);
-                    }
-                    RayCount::default()
-                }
-            }
+        .chunks(anim.window(4))
+        .map(|chunk| {
+            let sum = |a, b| a + b;
+            chunk
+                .par_iter()
+                .map(|&f| work(f))
+                .reduce(RayCount::default, sum)
         })
-        .reduce(RayCount::default, |a, b| a + b);
+        .fold(RayCount::default(), |a, b| a + b);
 
     if let Some(e) = failure.into_inner().unwrap_or(None) {
         return Err(e);
@@ -195,7 +217,7 @@ pub fn render_to_stream(
     progress: &ProgressBar,
     stop: &AtomicUsize,
 ) -> Result<Summary, AnimError> {
-    let window = 2 * rayon::current_num_threads().max(1);
+    let window = anim.window(2);
     let mut rays = RayCount::default();
     for chunk in frames.chunks(window) {
         if let Some(sig) = stopped(stop) {
@@ -224,4 +246,45 @@ pub fn render_to_stream(
         skipped: 0,
         rays,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::path::Path;
+
+    fn window_for(width: u32, height: u32, threads: usize, per_thread: usize) -> usize {
+        let scene = Scene::parse(
+            &format!("{width} {height} 0 0 5 0 0 0 0 1 0 0 0 0"),
+            "s.txt",
+        )
+        .unwrap();
+        let manifest = Manifest::parse(
+            "scene = \"s.txt\"\nframes = 10\n[camera]\npath = \"circle\"\n\
+             center = [0.0, 0.0, 0.0]\nradius = 5.0\nheight = 1.0\n",
+            Path::new("m.toml"),
+        )
+        .unwrap();
+        let anim = Animation::new(&manifest, &scene).unwrap();
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| anim.window(per_thread))
+    }
+
+    #[test]
+    fn window_is_per_thread_for_small_frames() {
+        assert_eq!(window_for(640, 480, 2, 4), 8);
+        assert_eq!(window_for(640, 480, 3, 2), 6);
+    }
+
+    #[test]
+    fn window_is_capped_by_memory_for_huge_frames() {
+        // The largest frame, 2^26 pixels: 192 MiB, twice with its encoded copy, so two fit
+        // in 1 GiB however many threads there are.
+        assert_eq!(window_for(16384, 4096, 64, 4), 2);
+        assert_eq!(window_for(8192, 8192, 64, 2), 2);
+        assert_eq!(window_for(8192, 8192, 1, 1), 1);
+    }
 }
