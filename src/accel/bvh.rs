@@ -20,9 +20,10 @@ const LEAF_MAX: usize = 4;
 pub const FLAT_MAX: usize = 12;
 /// SAH bins per split.
 const BINS: usize = 16;
-/// Deepest level the build creates; the traversal stack holds `MAX_DEPTH + 2` entries.
-const MAX_DEPTH: usize = 60;
-const STACK: usize = MAX_DEPTH + 4;
+/// Deepest level the build creates (10,000 spheres need about 20); the traversal stack
+/// holds one entry per level.
+const MAX_DEPTH: usize = 40;
+const STACK: usize = MAX_DEPTH + 2;
 /// Relative box margin: δ = PAD · (|origin|∞ + scale + 1), see `RayBox::new`.
 const PAD: f64 = 1e-5;
 
@@ -31,6 +32,8 @@ const PAD: f64 = 1e-5;
 pub struct Prim {
     pub sphere: Sphere,
     pub index: u32,
+    /// Kt > 0: shadow rays cross it instead of being stopped.
+    pub glass: bool,
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -143,13 +146,15 @@ impl RayBox {
 }
 
 /// The tree: nodes in depth-first order, leaves pointing into `prims`. With at most
-/// `FLAT_MAX` primitives there are no nodes, only the primitives in their given order.
+/// `FLAT_MAX` primitives there are no nodes, only the primitives, opaque ones first.
 #[derive(Clone, Debug, Default)]
 pub struct Bvh {
     nodes: Vec<Node>,
     prims: Vec<Prim>,
     /// The largest coordinate magnitude of the boxes.
     scale: f64,
+    /// In a flat list, how many opaque primitives come first.
+    flat_opaque: usize,
 }
 
 struct Item {
@@ -181,7 +186,10 @@ impl Bvh {
             .map(|it| it.lo.abs().max(it.hi.abs()).max_element())
             .fold(0.0, f64::max);
         if items.len() <= FLAT_MAX {
+            // Opaque first, so that shadow rays can run through those alone.
             bvh.prims = items.into_iter().map(|it| it.prim).collect();
+            bvh.prims.sort_by_key(|p| p.glass);
+            bvh.flat_opaque = bvh.prims.iter().filter(|p| !p.glass).count();
             return bvh;
         }
         bvh.nodes.push(BLANK);
@@ -198,15 +206,23 @@ impl Bvh {
         self.prims.len()
     }
 
-    /// True when the tree is a flat list (no box tests: `RayBox` is not read).
+    /// True when the tree is a flat list (no box tests).
     pub fn is_flat(&self) -> bool {
         self.nodes.is_empty()
+    }
+
+    /// For a flat list, its opaque primitives.
+    #[inline]
+    pub fn flat_opaque(&self) -> Option<&[Prim]> {
+        self.nodes
+            .is_empty()
+            .then(|| &self.prims[..self.flat_opaque])
     }
 
     /// Calls `visit` on every primitive whose (widened) box the ray meets at some t in
     /// [0, limit()], nearer subtrees first (a flat list: every primitive, in order). `visit` returns the new limit (it may shrink
     /// it, as a nearest-hit search does) or `None` to stop at once (an any-hit search).
-    #[inline]
+    #[inline(always)]
     pub fn traverse(
         &self,
         ray: &Ray,
@@ -222,6 +238,18 @@ impl Bvh {
             }
             return;
         }
+        self.traverse_tree(ray, limit, visit)
+    }
+
+    /// `traverse` through the nodes (kept out of line, so that a query on a flat list
+    /// carries none of this).
+    #[inline(never)]
+    fn traverse_tree(
+        &self,
+        ray: &Ray,
+        mut limit: f64,
+        mut visit: impl FnMut(&Prim, f64) -> Option<f64>,
+    ) {
         let rb = &RayBox::new(ray, self.scale);
         if rb.enter(&self.nodes[0], limit).is_none() {
             return;

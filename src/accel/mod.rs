@@ -22,22 +22,19 @@ use crate::shapes::Shape;
 use crate::texture::Color;
 use glam::DVec3;
 
-/// Up to this many transparent objects, shadow rays test them all in order, as the linear
-/// scan does; past it they go through their own tree.
+/// Up to this many transparent objects, shadow rays test them all in order after the
+/// tree, as the linear scan does; past it they collect the crossings the tree finds.
 const GLASS_LINEAR_MAX: usize = 4;
-/// Crossings a shadow ray collects from the transparent tree before it gives up and
-/// falls back to the linear scan over every transparent object (no allocation either way).
+/// Crossings a shadow ray collects before it gives up and falls back to the linear loop
+/// over every transparent object (no allocation either way).
 const CROSSINGS_MAX: usize = 32;
 
 /// The scene's objects sorted for fast ray queries.
 #[derive(Clone, Debug, Default)]
 pub struct Accel {
-    /// Every bounded object (nearest-hit queries).
-    all: Bvh,
-    /// Bounded objects with Kt ≤ 0 (shadow rays: any hit blocks).
-    opaque: Bvh,
-    /// Bounded objects with Kt > 0 (shadow rays: every crossing filters).
-    glass: Bvh,
+    /// Every bounded object: nearest hits, and shadow rays (which stop at the first
+    /// opaque hit, and note the transparent crossings on the way).
+    tree: Bvh,
     /// Unbounded objects, in object order, with their indices.
     unbounded: Vec<(u32, Shape)>,
     unbounded_opaque: Vec<Shape>,
@@ -50,30 +47,39 @@ fn is_glass(o: &Object) -> bool {
     o.material.kt > 0.0
 }
 
+/// The transparent crossings of one shadow ray: (object, t), at most `CROSSINGS_MAX`.
+struct Crossings {
+    buf: [(u32, f64); CROSSINGS_MAX],
+    n: usize,
+    overflow: bool,
+}
+
+impl Crossings {
+    #[inline]
+    fn push(&mut self, i: u32, t: f64) {
+        if self.n < CROSSINGS_MAX {
+            self.buf[self.n] = (i, t);
+            self.n += 1;
+        } else {
+            self.overflow = true;
+        }
+    }
+}
+
 impl Accel {
     pub fn new(objects: &[Object]) -> Accel {
-        let prims = |keep: &dyn Fn(&Object) -> bool| -> Vec<Prim> {
-            objects
-                .iter()
-                .enumerate()
-                .filter(|(_, o)| keep(o))
-                .filter_map(|(i, o)| match o.shape {
-                    Shape::Sphere(sphere) => Some(Prim {
-                        sphere,
-                        index: i as u32,
-                    }),
-                    _ => None,
-                })
-                .collect()
-        };
-        let indices = |keep: &dyn Fn(&Object) -> bool| -> Vec<u32> {
-            objects
-                .iter()
-                .enumerate()
-                .filter(|(_, o)| keep(o))
-                .map(|(i, _)| i as u32)
-                .collect()
-        };
+        let prims: Vec<Prim> = objects
+            .iter()
+            .enumerate()
+            .filter_map(|(i, o)| match o.shape {
+                Shape::Sphere(sphere) => Some(Prim {
+                    sphere,
+                    index: i as u32,
+                    glass: is_glass(o),
+                }),
+                _ => None,
+            })
+            .collect();
         let unbounded = |keep: &dyn Fn(&Object) -> bool| -> Vec<(u32, Shape)> {
             objects
                 .iter()
@@ -83,16 +89,16 @@ impl Accel {
                 .collect()
         };
         Accel {
-            all: Bvh::build(prims(&|_| true)),
-            opaque: Bvh::build(prims(&|o| !is_glass(o))),
-            glass: Bvh::build(prims(&is_glass)),
+            tree: Bvh::build(prims),
             unbounded: unbounded(&|_| true),
             unbounded_opaque: unbounded(&|o| !is_glass(o))
                 .into_iter()
                 .map(|(_, s)| s)
                 .collect(),
             unbounded_glass: unbounded(&is_glass).into_iter().map(|(i, _)| i).collect(),
-            glass_all: indices(&is_glass),
+            glass_all: (0..objects.len() as u32)
+                .filter(|&i| is_glass(&objects[i as usize]))
+                .collect(),
         }
     }
 
@@ -109,18 +115,16 @@ impl Accel {
                 }
             }
         }
-        if !self.all.is_empty() {
-            self.all.traverse(ray, best_t, |prim, limit| {
-                if let Some(t) = prim.sphere.hit(ray, f64::INFINITY) {
-                    if t < best_t || (t == best_t && prim.index < best_i) {
-                        best_t = t;
-                        best_i = prim.index;
-                        return Some(t);
-                    }
+        self.tree.traverse(ray, best_t, |prim, limit| {
+            if let Some(t) = prim.sphere.hit(ray, f64::INFINITY) {
+                if t < best_t || (t == best_t && prim.index < best_i) {
+                    best_t = t;
+                    best_i = prim.index;
+                    return Some(t);
                 }
-                Some(limit)
-            });
-        }
+            }
+            Some(limit)
+        });
         (best_i != u32::MAX).then_some((best_t, best_i as usize))
     }
 
@@ -134,74 +138,82 @@ impl Accel {
                 return Color::ZERO;
             }
         }
-        if !self.opaque.is_empty() {
-            let mut blocked = false;
-            self.opaque.traverse(&ray, dist, |prim, limit| {
+        if self.glass_all.len() > GLASS_LINEAR_MAX {
+            return self.transmission_collecting(objects, &ray, dist);
+        }
+        // Few transparent objects: the tree only looks for an opaque blocker ...
+        if let Some(opaque) = self.tree.flat_opaque() {
+            for prim in opaque {
                 if prim.sphere.hit(&ray, dist).is_some() {
-                    blocked = true;
-                    None
-                } else {
-                    Some(limit)
+                    return Color::ZERO;
                 }
+            }
+        } else {
+            let mut blocked = false;
+            self.tree.traverse(&ray, dist, |prim, limit| {
+                if !prim.glass && prim.sphere.hit(&ray, dist).is_some() {
+                    blocked = true;
+                    return None;
+                }
+                Some(limit)
             });
             if blocked {
                 return Color::ZERO;
             }
         }
-        if self.glass_all.is_empty() {
-            return Color::ONE;
-        }
-        if self.glass_all.len() > GLASS_LINEAR_MAX {
-            if let Some(c) = self.glass_tree(objects, &ray, dist) {
-                return c;
-            }
-        }
-        // The linear scan's own loop over the transparent objects.
+        // ... and the transparent ones are crossed in the linear scan's own loop.
+        self.glass_linear(objects, &ray, dist)
+    }
+
+    /// The linear scan's loop over the transparent objects.
+    #[inline(always)]
+    fn glass_linear(&self, objects: &[Object], ray: &Ray, dist: f64) -> Color {
         let mut through = Color::ONE;
         for &i in &self.glass_all {
             let obj = &objects[i as usize];
-            for t in obj.shape.crossings(&ray, dist) {
+            for t in obj.shape.crossings(ray, dist) {
                 through *= obj.material.kt * obj.texture.color_at(ray.at(t));
             }
         }
         through
     }
 
-    /// The transparent crossings found through the tree, multiplied in object order; `None`
-    /// when there are more than `CROSSINGS_MAX` of them.
-    fn glass_tree(&self, objects: &[Object], ray: &Ray, dist: f64) -> Option<Color> {
-        let mut buf = [(0u32, 0.0f64); CROSSINGS_MAX];
-        let mut n = 0usize;
-        let mut overflow = false;
-        let mut push = |i: u32, t: f64| {
-            if n < CROSSINGS_MAX {
-                buf[n] = (i, t);
-                n += 1;
-                true
-            } else {
-                overflow = true;
-                false
-            }
+    /// `transmission` for many transparent objects: one walk through the tree stops at an
+    /// opaque blocker and collects the transparent crossings, which are then multiplied in
+    /// object order (or, past `CROSSINGS_MAX` of them, crossed by `glass_linear`).
+    #[inline(never)]
+    fn transmission_collecting(&self, objects: &[Object], ray: &Ray, dist: f64) -> Color {
+        let mut found = Crossings {
+            buf: [(0, 0.0); CROSSINGS_MAX],
+            n: 0,
+            overflow: false,
         };
         for &i in &self.unbounded_glass {
             for t in objects[i as usize].shape.crossings(ray, dist) {
-                if !push(i, t) {
-                    return None;
-                }
+                found.push(i, t);
             }
         }
-        self.glass.traverse(ray, dist, |prim, limit| {
-            for t in prim.sphere.roots(ray).crossings(dist) {
-                if !push(prim.index, t) {
+        let mut blocked = false;
+        self.tree.traverse(ray, dist, |prim, limit| {
+            if !prim.glass {
+                if prim.sphere.hit(ray, dist).is_some() {
+                    blocked = true;
                     return None;
+                }
+            } else if !found.overflow {
+                for t in prim.sphere.roots(ray).crossings(dist) {
+                    found.push(prim.index, t);
                 }
             }
             Some(limit)
         });
-        if overflow {
-            return None;
+        if blocked {
+            return Color::ZERO;
         }
-        let crossings = &mut buf[..n];
+        if found.overflow {
+            return self.glass_linear(objects, ray, dist);
+        }
+        let crossings = &mut found.buf[..found.n];
         // Stable insertion sort by object: each object's crossings stay in t order.
         for k in 1..crossings.len() {
             let mut j = k;
@@ -215,7 +227,7 @@ impl Accel {
             let obj = &objects[i as usize];
             through *= obj.material.kt * obj.texture.color_at(ray.at(t));
         }
-        Some(through)
+        through
     }
 }
 
@@ -375,7 +387,7 @@ mod tests {
             let mut rng = Rng(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1);
             let objects = scene(&mut rng, n);
             let accel = Accel::new(&objects);
-            assert!(!accel.all.is_flat() && !accel.opaque.is_flat());
+            assert!(!accel.tree.is_flat());
             assert!(accel.glass_all.len() > GLASS_LINEAR_MAX);
             let (hits, shadowed) = check(&objects, &mut rng, 20_000);
             assert!(hits > 5000 && shadowed > 2000, "{hits} {shadowed}");
@@ -394,7 +406,7 @@ mod tests {
             })
             .collect();
         let accel = Accel::new(&objects);
-        assert!(!accel.glass.is_flat());
+        assert!(!accel.tree.is_flat());
         for (o, d) in [
             (DVec3::new(-1.0, 0.0, 0.0), DVec3::X),
             (DVec3::new(30.0, 0.01, 0.0), -DVec3::X),
@@ -480,7 +492,7 @@ mod tests {
             ));
         }
         let accel = Accel::new(&objects);
-        assert!(!accel.all.is_flat());
+        assert!(!accel.tree.is_flat());
         let ray = Ray::new(DVec3::new(0.0, 0.0, 5.0), -DVec3::Z);
         assert_eq!(accel.nearest(&ray), Some((4.0, 0)));
     }

@@ -90,7 +90,7 @@ impl Shape {
         match self {
             Shape::Sphere(s) => s.hit(ray, t_max),
             Shape::Plane(p) => p.hit(ray, t_max),
-            Shape::Quadric(q) => q.roots(ray).first_hit(t_max),
+            Shape::Quadric(q) => q.hit(ray, t_max),
         }
     }
 

@@ -64,7 +64,7 @@ impl Quadric {
             + j
     }
 
-    #[inline]
+    #[inline(always)]
     pub fn roots(&self, ray: &Ray) -> Roots {
         let [a, b, c, d, e, f, g, h, i, j] = self.coef;
         let o = ray.origin - self.origin;
@@ -92,8 +92,14 @@ impl Quadric {
         self.roots_general(ray)
     }
 
+    /// `roots(ray).first_hit(t_max)`, inlined.
+    #[inline(always)]
+    pub fn hit(&self, ray: &Ray, t_max: f64) -> Option<f64> {
+        self.roots(ray).first_hit(t_max)
+    }
+
     /// The report's general form, term by term.
-    #[inline]
+    #[inline(never)]
     fn roots_general(&self, ray: &Ray) -> Roots {
         let [a, b, c, d, e, f, g, h, i, j] = self.coef;
         let o = ray.origin - self.origin;
