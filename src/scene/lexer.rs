@@ -20,9 +20,12 @@ pub struct Lexer<'a> {
 
 impl<'a> Lexer<'a> {
     pub fn new(src: &'a str) -> Lexer<'a> {
+        // A byte-order mark (Windows editors write one) is not part of the first token,
+        // and editors do not count it as a column.
+        let pos = if src.starts_with('\u{feff}') { 3 } else { 0 };
         Lexer {
             src,
-            pos: 0,
+            pos,
             line: 1,
             column: 1,
         }
@@ -103,6 +106,14 @@ mod tests {
         let mut lex = Lexer::new("1 2\n\n");
         assert_eq!(lex.by_ref().count(), 2);
         assert_eq!(lex.position(), (3, 1));
+    }
+
+    #[test]
+    fn a_leading_byte_order_mark_is_skipped() {
+        let toks: Vec<_> = Lexer::new("\u{feff}640 480")
+            .map(|t| (t.text, t.line, t.column))
+            .collect();
+        assert_eq!(toks, vec![("640", 1, 1), ("480", 1, 5)]);
     }
 
     #[test]

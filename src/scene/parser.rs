@@ -17,6 +17,8 @@ use glam::DVec3;
 pub(super) fn decode<'a>(bytes: &'a [u8], file: &str) -> Result<&'a str> {
     std::str::from_utf8(bytes).map_err(|e| {
         let good = std::str::from_utf8(&bytes[..e.valid_up_to()]).unwrap_or_default();
+        // As in the lexer, a leading byte-order mark is not a column.
+        let good = good.strip_prefix('\u{feff}').unwrap_or(good);
         let line = good.matches('\n').count() + 1;
         let column = good.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
         SceneError::Syntax {
@@ -127,7 +129,9 @@ impl<'a> Parser<'a> {
         let tok = self.token(field, what)?;
         let v = tok.text.strip_prefix('+').unwrap_or(tok.text);
         let bad = |p: &Self, m: String| Err(p.error(&tok, m, field));
-        if v.is_empty() || !v.bytes().all(|b| b.is_ascii_digit()) {
+        // A negative integer is an integer, only out of range: say so below, not here.
+        let digits = tok.text.strip_prefix(['+', '-']).unwrap_or(tok.text);
+        if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
             let kind = if tok.text.parse::<f64>().is_ok() {
                 "an integer"
             } else {
