@@ -20,9 +20,9 @@ const LEAF_MAX: usize = 4;
 pub const FLAT_MAX: usize = 12;
 /// SAH bins per split.
 const BINS: usize = 16;
-/// Deepest level the build creates (10,000 spheres need about 20); the traversal stack
+/// Deepest level the build creates (10,000 spheres need about 15); the traversal stack
 /// holds one entry per level.
-const MAX_DEPTH: usize = 40;
+const MAX_DEPTH: usize = 32;
 const STACK: usize = MAX_DEPTH + 2;
 /// Relative box margin: δ = PAD · (|origin|∞ + scale + 1), see `RayBox::new`.
 const PAD: f64 = 1e-5;
@@ -254,7 +254,9 @@ impl Bvh {
         if rb.enter(&self.nodes[0], limit).is_none() {
             return;
         }
-        let mut stack = [(0u32, 0.0f64); STACK];
+        // Two plain arrays: cheaper to zero than an array of pairs.
+        let mut stack_node = [0u32; STACK];
+        let mut stack_t = [0.0f64; STACK];
         let mut sp = 0usize;
         let mut node = 0usize;
         loop {
@@ -278,7 +280,8 @@ impl Bvh {
                         } else {
                             (l + 1, l, tl)
                         };
-                        stack[sp] = (far as u32, tfar);
+                        stack_node[sp] = far as u32;
+                        stack_t[sp] = tfar;
                         sp += 1;
                         node = near;
                         continue;
@@ -300,9 +303,8 @@ impl Bvh {
                     return;
                 }
                 sp -= 1;
-                let (next, t) = stack[sp];
-                if t <= limit {
-                    node = next as usize;
+                if stack_t[sp] <= limit {
+                    node = stack_node[sp] as usize;
                     break;
                 }
             }
