@@ -75,7 +75,7 @@ pub enum Shape {
 
 impl Shape {
     /// The line parameters where `ray` crosses the surface, ascending, any sign.
-    #[inline]
+    #[inline(always)]
     pub fn roots(&self, ray: &Ray) -> Roots {
         match self {
             Shape::Sphere(s) => s.roots(ray),
