@@ -180,11 +180,13 @@ impl Bvh {
                 }
             })
             .collect();
-        let mut bvh = Bvh::default();
-        bvh.scale = items
-            .iter()
-            .map(|it| it.lo.abs().max(it.hi.abs()).max_element())
-            .fold(0.0, f64::max);
+        let mut bvh = Bvh {
+            scale: items
+                .iter()
+                .map(|it| it.lo.abs().max(it.hi.abs()).max_element())
+                .fold(0.0, f64::max),
+            ..Bvh::default()
+        };
         if items.len() <= FLAT_MAX {
             // Opaque first, so that shadow rays can run through those alone.
             bvh.prims = items.into_iter().map(|it| it.prim).collect();

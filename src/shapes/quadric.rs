@@ -275,7 +275,7 @@ mod tests {
                     pick(rnd() * 8.0, k / 7),
                     pick(rnd() * 8.0, k / 11),
                 );
-                let o = if k % 13 == 0 {
+                let o = if k.is_multiple_of(13) {
                     q.origin + axis * rnd()
                 } else {
                     o
