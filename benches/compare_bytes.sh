@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Byte-for-byte regression of the tracer against reference renders.
+#
+#   benches/compare_bytes.sh make  REFDIR BIN   # render the references with BIN (e.g. a copy
+#                                               # of the binary before an optimisation)
+#   benches/compare_bytes.sh check REFDIR BIN   # render again with BIN and `cmp` every image
+#
+# Scenes: benches/pov/orbit.txt at six orbit angles, benches/scenes/*.txt, the project's
+# scenes/*.txt, and the 10 and
+# 10,000 sphere scenes of benches/gen_spheres.py (the latter at 320x240 to keep the linear
+# reference build bearable); each at 1 sample/px, and orbit + edge also at 2x2 samples and
+# with one thread. Output is .raw (the report's format), so nothing but pixels is compared.
+set -euo pipefail
+mode=${1:?make or check}; ref=${2:?REFDIR}; bin=${3:?BIN}
+here=$(cd "$(dirname "$0")" && pwd)
+work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
+mkdir -p "$ref"
+
+scenes=()
+for deg in 0 45 110 180 250 320; do
+  read -r x z < <(awk -v d="$deg" 'BEGIN{a=d*atan2(0,-1)/180; printf "%.17g %.17g\n", 12*sin(a), 12*cos(a)}')
+  sed "0,/^0 3 12 /s//$x 3 $z /" "$here/pov/orbit.txt" > "$work/orbit_$deg.txt"
+  scenes+=("$work/orbit_$deg.txt")
+done
+for s in "$here"/scenes/*.txt; do cp "$s" "$work/"; scenes+=("$work/$(basename "$s")"); done
+# The project's own scenes, when there are some (read, never changed).
+for s in "$here"/../scenes/*.txt; do
+  [ -e "$s" ] || continue
+  cp "$s" "$work/proj-$(basename "$s")"; scenes+=("$work/proj-$(basename "$s")")
+done
+python3 "$here/gen_spheres.py" 10 > "$work/spheres10.txt"
+python3 "$here/gen_spheres.py" 10000 320 240 > "$work/spheres10000.txt"
+scenes+=("$work/spheres10.txt" "$work/spheres10000.txt")
+
+fail=0
+run() { # name scene args...
+  local name=$1 scene=$2; shift 2
+  local out="$work/$name.raw"
+  "$bin" "$scene" -o "$out" -q "$@"
+  if [ "$mode" = make ]; then
+    cp "$out" "$ref/$name.raw"; echo "made  $name"
+  elif cmp -s "$out" "$ref/$name.raw"; then
+    echo "same  $name"
+  else
+    echo "DIFF  $name: $(cmp -l "$out" "$ref/$name.raw" | wc -l) bytes differ"; fail=1
+  fi
+}
+for s in "${scenes[@]}"; do
+  n=$(basename "$s" .txt)
+  run "$n" "$s"
+  case $n in orbit_0|orbit_110|edge)
+    run "${n}_s2" "$s" --samples 2
+    run "${n}_t1" "$s" --threads 1;;
+  esac
+done
+exit $fail
