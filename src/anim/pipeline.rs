@@ -16,6 +16,7 @@
 
 use super::error::AnimError;
 use super::manifest::{FrameFormat, Manifest};
+use super::record::Record;
 use crate::camera::Camera;
 use crate::output::{encode, write_atomic, ImageFormat};
 use crate::render::{render, Frame};
@@ -27,6 +28,32 @@ use std::io::Write;
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
+
+/// A manifest with its scene loaded, and the scene file's bytes (for the record).
+pub struct Project {
+    pub manifest: Manifest,
+    pub scene: Scene,
+    pub scene_bytes: Vec<u8>,
+}
+
+impl Project {
+    /// Loads a manifest and the scene it names.
+    pub fn load(path: &Path) -> Result<Project, AnimError> {
+        let manifest = Manifest::load(path)?;
+        let (scene, scene_bytes) = Scene::load_with_bytes(&manifest.scene)?;
+        Ok(Project {
+            manifest,
+            scene,
+            scene_bytes,
+        })
+    }
+
+    /// The record a frame folder of this project keeps.
+    pub fn record(&self, anim: &Animation) -> Record {
+        let m = &self.manifest;
+        Record::new(&m.path, &m.scene, &self.scene_bytes, &anim.settings())
+    }
+}
 
 /// The memory frames in flight may take (pixels and their encoded copy): 1 GiB.
 pub const FRAME_MEMORY: usize = 1 << 30;

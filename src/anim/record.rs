@@ -12,6 +12,7 @@
 //! settings_sha256 = "9a07…"
 //! ```
 
+use super::error::AnimError;
 use serde::{Deserialize, Serialize};
 use sha2::{Digest, Sha256};
 use std::io::Write;
@@ -52,6 +53,30 @@ impl Record {
     /// True when frames made under `self` and under `other` can share a folder.
     pub fn compatible(&self, other: &Record) -> bool {
         self.scene_sha256 == other.scene_sha256 && self.settings_sha256 == other.settings_sha256
+    }
+
+    /// Makes `dir` the home of frames made under this record: creates the folder and writes
+    /// the record. With `refuse_foreign` (a `--resume` without `--force`), a folder whose
+    /// record differs is refused, naming the digest that differs.
+    pub fn claim(&self, dir: &Path, refuse_foreign: bool) -> Result<(), AnimError> {
+        let folder = |source| AnimError::Folder {
+            dir: dir.to_path_buf(),
+            source,
+        };
+        std::fs::create_dir_all(dir).map_err(folder)?;
+        if refuse_foreign {
+            if let Some(old) = Record::read(dir).map_err(folder)? {
+                if old.scene_sha256 != self.scene_sha256 {
+                    let (dir, record) = (dir.to_path_buf(), "scene digest");
+                    return Err(AnimError::ForeignFrames { dir, record });
+                }
+                if old.settings_sha256 != self.settings_sha256 {
+                    let (dir, record) = (dir.to_path_buf(), "settings digest");
+                    return Err(AnimError::ForeignFrames { dir, record });
+                }
+            }
+        }
+        self.write(dir).map_err(folder)
     }
 
     /// The record in `dir`, if there is a readable one.
@@ -120,6 +145,37 @@ mod tests {
             "frames=4",
         );
         assert!(!a.compatible(&longer));
+    }
+
+    #[test]
+    fn claim_refuses_a_foreign_folder_only_when_asked() {
+        let dir = tempfile::tempdir().unwrap();
+        let sub = dir.path().join("frames");
+        let a = Record::new(
+            Path::new("m.toml"),
+            Path::new("s.txt"),
+            b"scene",
+            "frames=3",
+        );
+        a.claim(&sub, true).unwrap();
+        let b = Record::new(
+            Path::new("m.toml"),
+            Path::new("s.txt"),
+            b"other",
+            "frames=3",
+        );
+        let err = b.claim(&sub, true).unwrap_err().to_string();
+        assert!(err.contains("scene digest"), "{err}");
+        let c = Record::new(
+            Path::new("m.toml"),
+            Path::new("s.txt"),
+            b"scene",
+            "frames=4",
+        );
+        let err = c.claim(&sub, true).unwrap_err().to_string();
+        assert!(err.contains("settings digest"), "{err}");
+        b.claim(&sub, false).unwrap();
+        assert_eq!(Record::read(&sub).unwrap(), Some(b));
     }
 
     #[test]

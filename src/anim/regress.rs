@@ -10,7 +10,9 @@
 
 use super::diff::{compare, heat_map, Comparison, Tolerance};
 use super::error::AnimError;
+use super::manifest::Manifest;
 use super::pipeline::Animation;
+use super::select::parse_frames;
 use crate::output::{write_atomic, ImageFormat};
 use crate::render::Frame;
 use rayon::prelude::*;
@@ -26,6 +28,69 @@ pub struct FrameResult {
     /// The rendered frame and the heat map, written for failing frames.
     pub rendered_image: Option<PathBuf>,
     pub diff_image: Option<PathBuf>,
+}
+
+/// The frames and the references folder of a check or bless: `--frames` / `--references`
+/// when given, else the manifest's `[check]`.
+pub fn targets(
+    manifest: &Manifest,
+    frames: Option<&str>,
+    references: Option<&Path>,
+) -> Result<(Vec<u32>, PathBuf), AnimError> {
+    let missing = |what: &str| {
+        AnimError::Usage(format!(
+            "{}: no [check] section; name the {what}",
+            manifest.path.display()
+        ))
+    };
+    let check = manifest.check.as_ref();
+    let frames = match (frames, check) {
+        (Some(spec), _) => parse_frames(spec, manifest.frames)?,
+        (None, Some(c)) => c.frames.clone(),
+        (None, None) => return Err(missing("frames with --frames")),
+    };
+    let refs = match (references, check) {
+        (Some(dir), _) => dir.to_path_buf(),
+        (None, Some(c)) => c.references.clone(),
+        (None, None) => return Err(missing("folder with --references")),
+    };
+    Ok((frames, refs))
+}
+
+/// The manifest's tolerance (or the SPEC's defaults without `[check]`), with the
+/// command line's overrides.
+pub fn tolerance(
+    manifest: &Manifest,
+    fail: Option<u8>,
+    fail_percent: Option<f64>,
+    hard_fail: Option<u8>,
+) -> Result<Tolerance, AnimError> {
+    let base = manifest
+        .check
+        .as_ref()
+        .map_or(Tolerance::DEFAULT, |c| Tolerance {
+            fail: c.fail,
+            fail_percent: c.fail_percent,
+            hard_fail: c.hard_fail,
+        });
+    let tol = Tolerance {
+        fail: fail.unwrap_or(base.fail),
+        fail_percent: fail_percent.unwrap_or(base.fail_percent),
+        hard_fail: hard_fail.unwrap_or(base.hard_fail),
+    };
+    if !(0.0..=100.0).contains(&tol.fail_percent) {
+        return Err(AnimError::Usage(
+            "--fail-percent must be from 0 to 100".into(),
+        ));
+    }
+    Ok(tol)
+}
+
+/// The default report folder: the frame folder's name + `-check`.
+pub fn default_report(manifest: &Manifest) -> PathBuf {
+    let mut name = manifest.output.dir.clone().into_os_string();
+    name.push("-check");
+    PathBuf::from(name)
 }
 
 /// The file name stem of frame `frame` (the name pattern, no extension).

@@ -56,6 +56,24 @@ pub fn parse_shard(spec: &str) -> Result<(u32, u32), SelectError> {
     Ok((k, n))
 }
 
+/// The frames of a run over a `total`-frame sequence: all, or the `--frames` list, then
+/// the `--shard` of that.
+pub fn select(
+    total: u32,
+    frames: Option<&str>,
+    shard_spec: Option<&str>,
+) -> Result<Vec<u32>, SelectError> {
+    let mut list = match frames {
+        Some(spec) => parse_frames(spec, total)?,
+        None => (0..total).collect(),
+    };
+    if let Some(spec) = shard_spec {
+        let (k, n) = parse_shard(spec)?;
+        list = shard(&list, k, n);
+    }
+    Ok(list)
+}
+
 /// The K-th of N contiguous chunks of `frames`: chunk k is `frames[k·L/N .. (k+1)·L/N]`.
 pub fn shard(frames: &[u32], k: u32, n: u32) -> Vec<u32> {
     let len = frames.len() as u64;
@@ -102,6 +120,13 @@ mod tests {
         // 10 frames in 3 shards: 3, 3, 4.
         assert_eq!(shard(&(0..10).collect::<Vec<_>>(), 0, 3), vec![0, 1, 2]);
         assert_eq!(shard(&(0..10).collect::<Vec<_>>(), 2, 3), vec![6, 7, 8, 9]);
+    }
+
+    #[test]
+    fn shard_of_a_subset() {
+        assert_eq!(select(10, None, None).unwrap(), (0..10).collect::<Vec<_>>());
+        assert_eq!(select(10, Some("2-7"), Some("1/2")).unwrap(), vec![5, 6, 7]);
+        assert!(select(10, Some("2-7"), Some("2/2")).is_err());
     }
 
     #[test]

@@ -10,8 +10,35 @@
 //! The container and codec follow FILE's extension, as ffmpeg decides.
 
 use super::error::AnimError;
+use super::pipeline::{render_to_stream, Animation, Summary};
+use crate::output::ImageFormat;
+use indicatif::ProgressBar;
 use std::path::Path;
 use std::process::{Child, ChildStdin, Command, Stdio};
+use std::sync::atomic::AtomicUsize;
+
+/// Renders `frames` into the video `file` through ffmpeg; on a failure upstream ffmpeg is
+/// stopped and the error returned.
+pub fn render_to_video(
+    anim: &Animation,
+    frames: &[u32],
+    file: &Path,
+    progress: &ProgressBar,
+    stop: &AtomicUsize,
+) -> Result<Summary, AnimError> {
+    let fps = anim.manifest.fps;
+    let mut ffmpeg = Ffmpeg::start(file, anim.width, anim.height, fps)?;
+    let result = ffmpeg
+        .input()
+        .and_then(|input| render_to_stream(anim, frames, input, ImageFormat::Raw, progress, stop));
+    match result {
+        Ok(summary) => ffmpeg.finish().map(|()| summary),
+        Err(e) => {
+            ffmpeg.abort();
+            Err(e)
+        }
+    }
+}
 
 /// A running ffmpeg that encodes what is written to its standard input.
 pub struct Ffmpeg {

@@ -11,15 +11,12 @@ use std::process::ExitCode;
 use std::sync::atomic::AtomicUsize;
 use std::sync::Arc;
 use std::time::Instant;
-use whitted::anim::diff::Tolerance;
-use whitted::anim::pipeline::{render_to_folder, render_to_stream};
-use whitted::anim::record::Record;
+use whitted::anim::pipeline::{render_to_folder, render_to_stream, Project};
 use whitted::anim::regress;
-use whitted::anim::select::{parse_frames, parse_shard, shard};
-use whitted::anim::video::Ffmpeg;
-use whitted::anim::{AnimError, Animation, Manifest, Summary};
+use whitted::anim::select::select;
+use whitted::anim::video::render_to_video;
+use whitted::anim::{AnimError, Animation, Summary};
 use whitted::output::ImageFormat;
-use whitted::Scene;
 
 /// Render the frames of an animation manifest (a Scene.txt and a camera path).
 #[derive(Parser, Debug)]
@@ -126,40 +123,6 @@ struct RenderArgs {
     video: Option<PathBuf>,
 }
 
-/// The manifest, its scene and the scene's bytes, loaded.
-struct Loaded {
-    manifest: Manifest,
-    scene: Scene,
-    scene_bytes: Vec<u8>,
-}
-
-fn load(path: &Path) -> Result<Loaded, AnimError> {
-    let manifest = Manifest::load(path)?;
-    let (scene, scene_bytes) = Scene::load_with_bytes(&manifest.scene)?;
-    Ok(Loaded {
-        manifest,
-        scene,
-        scene_bytes,
-    })
-}
-
-/// The frames a run covers: all, or `--frames`, then `--shard`.
-fn selection(
-    manifest: &Manifest,
-    frames: Option<&str>,
-    shard_spec: Option<&str>,
-) -> Result<Vec<u32>, AnimError> {
-    let mut list = match frames {
-        Some(spec) => parse_frames(spec, manifest.frames)?,
-        None => (0..manifest.frames).collect(),
-    };
-    if let Some(spec) = shard_spec {
-        let (k, n) = parse_shard(spec)?;
-        list = shard(&list, k, n);
-    }
-    Ok(list)
-}
-
 fn progress_bar(total: usize, quiet: bool) -> ProgressBar {
     if quiet || !std::io::stderr().is_terminal() {
         return ProgressBar::hidden();
@@ -169,9 +132,12 @@ fn progress_bar(total: usize, quiet: bool) -> ProgressBar {
         "{elapsed_precise} [{wide_bar}] {pos}/{len} frames  {fps}  ETA {eta}",
     )
     .unwrap_or_else(|_| ProgressStyle::default_bar())
-    .with_key("fps", |state: &ProgressState, w: &mut dyn std::fmt::Write| {
-        let _ = write!(w, "{:.1} frames/s", state.per_sec());
-    });
+    .with_key(
+        "fps",
+        |state: &ProgressState, w: &mut dyn std::fmt::Write| {
+            let _ = write!(w, "{:.1} frames/s", state.per_sec());
+        },
+    );
     bar.set_style(style.progress_chars("=> "));
     bar
 }
@@ -195,12 +161,11 @@ fn pool(threads: Option<u32>) -> Result<rayon::ThreadPool, AnimError> {
 }
 
 fn render_command(args: RenderArgs) -> Result<(), AnimError> {
-    let manifest_path = args.common.manifest.clone().unwrap_or_default();
-    let loaded = load(&manifest_path)?;
-    let manifest = &loaded.manifest;
-    let anim = Animation::new(manifest, &loaded.scene)?;
-    let frames = selection(
-        manifest,
+    let project = Project::load(args.common.manifest.as_deref().unwrap_or(Path::new("")))?;
+    let manifest = &project.manifest;
+    let anim = Animation::new(manifest, &project.scene)?;
+    let frames = select(
+        manifest.frames,
         args.common.frames.as_deref(),
         args.shard.as_deref(),
     )?;
@@ -223,52 +188,16 @@ fn render_command(args: RenderArgs) -> Result<(), AnimError> {
             pool.install(|| render_to_stream(&anim, &frames, &mut out, format, &progress, &stop))?;
         (s, "standard output".to_string())
     } else if let Some(video) = &args.video {
-        let mut ffmpeg = Ffmpeg::start(video, anim.width, anim.height, manifest.fps)?;
-        let result = match ffmpeg.input() {
-            Ok(input) => pool.install(|| {
-                render_to_stream(&anim, &frames, input, ImageFormat::Raw, &progress, &stop)
-            }),
-            Err(e) => Err(e),
-        };
-        match result {
-            Ok(s) => {
-                ffmpeg.finish()?;
-                (s, video.display().to_string())
-            }
-            Err(e) => {
-                ffmpeg.abort();
-                return Err(e);
-            }
-        }
+        let s = pool.install(|| render_to_video(&anim, &frames, video, &progress, &stop))?;
+        (s, video.display().to_string())
     } else {
         let dir = args
             .out
             .clone()
             .unwrap_or_else(|| manifest.output.dir.clone());
-        let folder = |source| AnimError::Folder {
-            dir: dir.clone(),
-            source,
-        };
-        std::fs::create_dir_all(&dir).map_err(folder)?;
-        let record = Record::new(
-            &manifest.path,
-            &manifest.scene,
-            &loaded.scene_bytes,
-            &anim.settings(),
-        );
-        if args.resume && !args.force {
-            if let Some(old) = Record::read(&dir).map_err(folder)? {
-                if !record.compatible(&old) {
-                    let which = if old.scene_sha256 != record.scene_sha256 {
-                        "scene digest"
-                    } else {
-                        "settings digest"
-                    };
-                    return Err(AnimError::ForeignFrames { dir, record: which });
-                }
-            }
-        }
-        record.write(&dir).map_err(folder)?;
+        project
+            .record(&anim)
+            .claim(&dir, args.resume && !args.force)?;
         let s =
             pool.install(|| render_to_folder(&anim, &frames, &dir, args.resume, &progress, &stop))?;
         (s, dir.display().to_string())
@@ -280,38 +209,14 @@ fn render_command(args: RenderArgs) -> Result<(), AnimError> {
     Ok(())
 }
 
-/// The frames and references folder of `check` and `bless`.
-fn regression_setup(
-    manifest: &Manifest,
-    args: &BlessArgs,
-) -> Result<(Vec<u32>, PathBuf), AnimError> {
-    let frames = match (&args.common.frames, &manifest.check) {
-        (Some(spec), _) => parse_frames(spec, manifest.frames)?,
-        (None, Some(check)) => check.frames.clone(),
-        (None, None) => {
-            return Err(AnimError::Usage(format!(
-                "{}: no [check] section; name the frames with --frames",
-                manifest.path.display()
-            )))
-        }
-    };
-    let refs = match (&args.references, &manifest.check) {
-        (Some(dir), _) => dir.clone(),
-        (None, Some(check)) => check.references.clone(),
-        (None, None) => {
-            return Err(AnimError::Usage(format!(
-                "{}: no [check] section; name the folder with --references",
-                manifest.path.display()
-            )))
-        }
-    };
-    Ok((frames, refs))
-}
-
 fn bless_command(args: BlessArgs) -> Result<(), AnimError> {
-    let loaded = load(args.common.manifest.as_deref().unwrap_or(Path::new("")))?;
-    let anim = Animation::new(&loaded.manifest, &loaded.scene)?;
-    let (frames, refs) = regression_setup(&loaded.manifest, &args)?;
+    let project = Project::load(args.common.manifest.as_deref().unwrap_or(Path::new("")))?;
+    let anim = Animation::new(&project.manifest, &project.scene)?;
+    let (frames, refs) = regress::targets(
+        &project.manifest,
+        args.common.frames.as_deref(),
+        args.references.as_deref(),
+    )?;
     let paths = pool(args.common.threads)?.install(|| regress::bless(&anim, &frames, &refs))?;
     if !args.common.quiet {
         eprintln!(
@@ -326,33 +231,19 @@ fn bless_command(args: BlessArgs) -> Result<(), AnimError> {
 /// Runs a check; `Ok(false)` when a frame failed.
 fn check_command(args: CheckArgs) -> Result<bool, AnimError> {
     let common = &args.bless.common;
-    let loaded = load(common.manifest.as_deref().unwrap_or(Path::new("")))?;
-    let manifest = &loaded.manifest;
-    let anim = Animation::new(manifest, &loaded.scene)?;
-    let (frames, refs) = regression_setup(manifest, &args.bless)?;
-    let base = manifest
-        .check
-        .as_ref()
-        .map_or(Tolerance::DEFAULT, |c| Tolerance {
-            fail: c.fail,
-            fail_percent: c.fail_percent,
-            hard_fail: c.hard_fail,
-        });
-    let tol = Tolerance {
-        fail: args.fail.unwrap_or(base.fail),
-        fail_percent: args.fail_percent.unwrap_or(base.fail_percent),
-        hard_fail: args.hard_fail.unwrap_or(base.hard_fail),
-    };
-    if !(tol.fail_percent.is_finite() && tol.fail_percent >= 0.0) {
-        return Err(AnimError::Usage(
-            "--fail-percent must be a number ≥ 0".into(),
-        ));
-    }
-    let report = args.report.clone().unwrap_or_else(|| {
-        let mut name = manifest.output.dir.clone().into_os_string();
-        name.push("-check");
-        PathBuf::from(name)
-    });
+    let project = Project::load(common.manifest.as_deref().unwrap_or(Path::new("")))?;
+    let manifest = &project.manifest;
+    let anim = Animation::new(manifest, &project.scene)?;
+    let (frames, refs) = regress::targets(
+        manifest,
+        common.frames.as_deref(),
+        args.bless.references.as_deref(),
+    )?;
+    let tol = regress::tolerance(manifest, args.fail, args.fail_percent, args.hard_fail)?;
+    let report = args
+        .report
+        .clone()
+        .unwrap_or_else(|| regress::default_report(manifest));
     let results =
         pool(common.threads)?.install(|| regress::check(&anim, &frames, &refs, tol, &report))?;
     let pass = results.iter().all(|r| r.comparison.pass);
