@@ -85,7 +85,7 @@ impl Shape {
     }
 
     /// The nearest hit with T_MIN < t < t_max, if any.
-    #[inline]
+    #[inline(always)]
     pub fn hit(&self, ray: &Ray, t_max: f64) -> Option<f64> {
         match self {
             Shape::Sphere(s) => s.hit(ray, t_max),
