@@ -164,11 +164,17 @@ pub enum ManifestError {
 
 impl Manifest {
     pub fn load(path: &Path) -> Result<Manifest, ManifestError> {
-        let src = std::fs::read_to_string(path).map_err(|source| ManifestError::Io {
+        let bytes = std::fs::read(path).map_err(|source| ManifestError::Io {
             path: path.display().to_string(),
             source,
         })?;
-        Manifest::parse(&src, path)
+        // Not UTF-8: say where the first byte that cannot be read is, as for scenes.
+        let src = std::str::from_utf8(&bytes).map_err(|e| {
+            let good = std::str::from_utf8(&bytes[..e.valid_up_to()]).unwrap_or_default();
+            let message = "the manifest is not UTF-8 text: this byte cannot be read";
+            Source { text: good, path }.error(good.len()..good.len(), message)
+        })?;
+        Manifest::parse(src, path)
     }
 
     /// Parses manifest text; `path` is where it came from (for errors and relative paths).

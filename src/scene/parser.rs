@@ -164,11 +164,17 @@ impl<'a> Parser<'a> {
     /// A vector that must not be zero (a normal or an axis).
     fn direction(&mut self, fields: [&str; 3], name: &str) -> Result<DVec3> {
         let (v, tok) = self.vector(fields)?;
-        if v.try_normalize().is_none() {
+        if v.try_normalize().is_some() {
+            return Ok(v);
+        }
+        // |v|² under- or overflows for a tiny or huge v that is not zero: scaled by its
+        // largest component it normalises (0/0 keeps a zero vector refused).
+        let scaled = v / v.abs().max_element();
+        if scaled.try_normalize().is_none() {
             let msg = format!("the {name} ({} {} {}) has zero length", v.x, v.y, v.z);
             return Err(self.error(&tok, msg, fields[0]));
         }
-        Ok(v)
+        Ok(scaled)
     }
 
     fn color(&mut self, fields: [&str; 3]) -> Result<Color> {
@@ -266,7 +272,12 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
     p.enter("point looked at", None);
     let (look_at, look_tok) = p.vector(["x", "y", "z"])?;
     if Camera::new(eye, look_at, 1, 1).is_none() {
-        let msg = "the camera is placed on the point it looks at".to_string();
+        let msg = if (look_at - eye).is_finite() {
+            "the camera is placed on the point it looks at".to_string()
+        } else {
+            "the camera is too far from the point it looks at (their distance overflows)"
+                .to_string()
+        };
         return Err(p.error(&look_tok, msg, "x"));
     }
 
