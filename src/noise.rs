@@ -54,12 +54,30 @@ fn grad(hash: usize, x: f64, y: f64, z: f64) -> f64 {
     (if h & 1 == 0 { u } else { -u }) + (if h & 2 == 0 { v } else { -v })
 }
 
-/// Lattice cell index of a coordinate, wrapped to 0..=255 like `(int)floor(x) & 255`.
-/// Coordinates beyond ±2^53 (or not finite) fall back to cell 0: the noise there is
-/// meaningless anyway, and this keeps the function total.
+/// `x.floor()`, bit for bit (signed zeros, infinities and NaN included), without the
+/// libm call that `f64::floor` is on a baseline x86-64 (no SSE4.1 `roundsd`): below 2^52
+/// in magnitude `x as i64` truncates exactly, and one step down fixes negative fractions.
+#[inline(always)]
+pub fn floor(x: f64) -> f64 {
+    if x.abs() < 4_503_599_627_370_496.0 {
+        let t = x as i64 as f64;
+        let f = if t > x { t - 1.0 } else { t };
+        if f == 0.0 {
+            // floor(−0) = −0, floor of [+0, 1) = +0.
+            0.0f64.copysign(x)
+        } else {
+            f
+        }
+    } else {
+        x.floor()
+    }
+}
+
+/// Lattice cell index of a coordinate from its floor `f`, wrapped to 0..=255 like
+/// `(int)floor(x) & 255`. Coordinates beyond ±2^53 (or not finite) fall back to cell 0:
+/// the noise there is meaningless anyway, and this keeps the function total.
 #[inline]
-fn cell(x: f64) -> usize {
-    let f = x.floor();
+fn cell(f: f64) -> usize {
     if f.abs() < 9.0e15 {
         (f as i64 & 255) as usize
     } else {
@@ -69,8 +87,9 @@ fn cell(x: f64) -> usize {
 
 /// Perlin's improved noise at (x, y, z). Deterministic, about −1..1, 0 at lattice points.
 pub fn noise(x: f64, y: f64, z: f64) -> f64 {
-    let (xi, yi, zi) = (cell(x), cell(y), cell(z));
-    let (x, y, z) = (x - x.floor(), y - y.floor(), z - z.floor());
+    let (fx, fy, fz) = (floor(x), floor(y), floor(z));
+    let (xi, yi, zi) = (cell(fx), cell(fy), cell(fz));
+    let (x, y, z) = (x - fx, y - fy, z - fz);
     let (u, v, w) = (fade(x), fade(y), fade(z));
     let a = p(xi) + yi;
     let aa = p(a) + zi;
@@ -143,6 +162,50 @@ mod tests {
         assert_eq!(grad(13, 1.0, 2.0, 3.0), 1.0);
         // hash 14: u = y, v = x, h&2 negates v: 2 - 1
         assert_eq!(grad(14, 1.0, 2.0, 3.0), 1.0);
+    }
+
+    #[test]
+    fn floor_is_f64_floor_bit_for_bit() {
+        let mut xs = vec![
+            0.0,
+            -0.0,
+            0.5,
+            -0.5,
+            1.0,
+            -1.0,
+            0.999_999_999_999_999_9,
+            -0.999_999_999_999_999_9,
+            1e-300,
+            -1e-300,
+            f64::MIN_POSITIVE / 4.0,
+            -f64::MIN_POSITIVE / 4.0,
+            4_503_599_627_370_495.5,
+            -4_503_599_627_370_495.5,
+            4_503_599_627_370_496.0,
+            -4_503_599_627_370_497.0,
+            9.0e15,
+            1e300,
+            -1e300,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            f64::MAX,
+            f64::MIN,
+        ];
+        for k in -3000..3000 {
+            let x = k as f64 * 0.25;
+            xs.extend([x, x.next_up(), x.next_down(), x * 1e7 + 0.3, x * 1e-7]);
+        }
+        let mut state = 0x2545_f491_4f6c_dd1du64;
+        for _ in 0..100_000 {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            xs.push(f64::from_bits(state));
+        }
+        for x in xs {
+            assert_eq!(floor(x).to_bits(), x.floor().to_bits(), "{x:e}");
+        }
     }
 
     #[test]

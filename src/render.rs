@@ -22,8 +22,13 @@ pub struct Frame {
 /// Clamp to 0..1, then round(255·c).
 #[inline]
 pub fn to_byte(c: f64) -> u8 {
-    // NaN clamps to NaN and `as u8` turns it into 0: a broken pixel is black, never a panic.
-    (c.clamp(0.0, 1.0) * 255.0).round() as u8
+    // round(v) for v in 0..=255 (half away from zero) without the libm call `f64::round`
+    // is on a baseline x86-64: truncate, then add one when the fraction (exact: v − ⌊v⌋
+    // loses nothing here) is at least one half. NaN clamps to NaN, which `as u32` makes 0
+    // and the comparison leaves there: a broken pixel is black, never a panic.
+    let v = c.clamp(0.0, 1.0) * 255.0;
+    let t = v as u32;
+    (if v - t as f64 >= 0.5 { t + 1 } else { t }) as u8
 }
 
 /// Renders the tracer's scene through `camera` at `width`×`height` with `samples`²
@@ -94,5 +99,30 @@ mod tests {
         assert_eq!(to_byte(0.2), 51);
         assert_eq!(to_byte(0.1), 26);
         assert_eq!(to_byte(f64::NAN), 0);
+    }
+
+    #[test]
+    fn same_bytes_as_clamp_times_255_round() {
+        let reference = |c: f64| (c.clamp(0.0, 1.0) * 255.0).round() as u8;
+        let mut cs = vec![
+            f64::NAN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            -0.0,
+            0.0,
+            1.0,
+            2.0,
+        ];
+        for k in 0..=512 {
+            // Every half step of 1/255 and its neighbours, where rounding decides.
+            let c = k as f64 / 510.0;
+            cs.extend([c, c.next_up(), c.next_down(), (k as f64 + 0.5) / 255.0]);
+        }
+        for k in 0..200_000 {
+            cs.push(k as f64 / 180_000.0 - 0.05);
+        }
+        for c in cs {
+            assert_eq!(to_byte(c), reference(c), "{c:e}");
+        }
     }
 }

@@ -10,7 +10,7 @@
 //! - wood: T = 20·noise(p), n = T − ⌊T⌋, f = (1 − cos πn)/2, C = C1(1−f) + C2·f
 //! - marble: n = (1 + cos(x + noise(p)))/2, C = C1(1−n) + C2·n
 
-use crate::noise::noise;
+use crate::noise::{floor, noise};
 use glam::DVec3;
 
 /// An RGB colour, channels nominally in 0..1.
@@ -18,6 +18,15 @@ pub type Color = DVec3;
 
 /// Offset that keeps the plane y = 0 from flickering between checker squares.
 pub const CHECKER_OFFSET: f64 = 1e-4;
+
+/// `s.rem_euclid(2.0) == 0.0` for a whole number `s` (the checker's parity, negative sums
+/// included), without the fmod call: s/2 is whole exactly when s is even (every float past
+/// 2^53 is even, as rem_euclid says too); infinities and NaN are odd, as rem_euclid's NaN.
+#[inline(always)]
+fn is_even(s: f64) -> bool {
+    let h = s * 0.5;
+    s.is_finite() && floor(h) == h
+}
 
 /// The colour pattern of an object.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -36,9 +45,9 @@ impl Texture {
         match *self {
             Texture::Uniform(c) => c,
             Texture::Checker(c1, c2) => {
-                let q = (p + DVec3::splat(CHECKER_OFFSET)).floor();
-                // rem_euclid: the parity of a negative sum is still 0 or 1.
-                if (q.x + q.y + q.z).rem_euclid(2.0) == 0.0 {
+                let q = p + DVec3::splat(CHECKER_OFFSET);
+                let s = floor(q.x) + floor(q.y) + floor(q.z);
+                if is_even(s) {
                     c1
                 } else {
                     c2
@@ -54,7 +63,7 @@ impl Texture {
             }
             Texture::Wood(c1, c2) => {
                 let t = 20.0 * noise(p.x, p.y, p.z);
-                let n = t - t.floor();
+                let n = t - floor(t);
                 let f = (1.0 - (std::f64::consts::PI * n).cos()) / 2.0;
                 c1 * (1.0 - f) + c2 * f
             }
@@ -131,6 +140,26 @@ mod tests {
         let c = t.color_at(DVec3::new(2.0, 1.0, 1.0));
         assert!(close(c, DVec3::new(1.0 - n, 0.0, n)), "{c}");
         assert!((n - 0.2919265817264289).abs() < 1e-15);
+    }
+
+    #[test]
+    fn is_even_is_rem_euclid_parity() {
+        let mut xs: Vec<f64> = (-2000..2000).map(|k| k as f64).collect();
+        for e in [52, 53, 54, 60, 100, 1023] {
+            let b = 2f64.powi(e);
+            xs.extend([b, -b, b - 1.0, b + 1.0, b + 2.0, -(b - 1.0), -(b + 2.0)]);
+        }
+        xs.extend([
+            -0.0,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            f64::MAX,
+            f64::MIN,
+        ]);
+        for s in xs {
+            assert_eq!(is_even(s), s.rem_euclid(2.0) == 0.0, "{s:e}");
+        }
     }
 
     #[test]
