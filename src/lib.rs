@@ -8,6 +8,26 @@
 //! renders images in parallel (`render`) that `output` writes as RAW, PNG, JPEG or PPM.
 //! `raytrace` (one image) and `animate` (frame sequences) are thin binaries over it, so
 //! both draw exactly the same pixels.
+//!
+//! ```
+//! use whitted::{render, trace::Tracer, Scene};
+//!
+//! // 4×3 pixels, eye at z = 5 looking at the origin, no fog, one red sphere, one light.
+//! let scene = Scene::parse(
+//!     "4 3  0 0 5  0 0 0  0 0  1 0 0 1
+//!      1 0 0 0  1 1 0 0  1 0 0 1 0 0
+//!      0 5 5  1 1 1  1",
+//!     "example.txt",
+//! )
+//! .unwrap();
+//! let tracer = Tracer::new(&scene);
+//! let (frame, rays) = render(&tracer, &scene.camera(), 4, 3, 1);
+//! assert_eq!(frame.pixels.len(), 4 * 3 * 3);
+//! // The centre of the image sees the lit red sphere: red, no green or blue.
+//! let centre = &frame.pixels[(1 * 4 + 1) * 3..][..3];
+//! assert!(centre[0] > 100 && centre[1] == 0 && centre[2] == 0, "{centre:?}");
+//! assert!(rays.primary == 12);
+//! ```
 
 pub mod accel;
 pub mod anim;
