@@ -2,7 +2,6 @@
 //! the report's main(). Exit status 0 on success, 2 on bad input (the scene or the
 //! arguments), 1 when the image cannot be written.
 
-use anyhow::Context;
 use clap::Parser;
 use std::path::PathBuf;
 use std::process::ExitCode;
@@ -32,7 +31,8 @@ struct Args {
     quiet: bool,
 }
 
-/// A failure and the exit status it deserves.
+/// A failure and the exit status it deserves. The library's errors already carry their
+/// cause in their message, so they are printed without the source chain.
 enum Failure {
     BadInput(anyhow::Error),
     Output(anyhow::Error),
@@ -56,9 +56,7 @@ fn run(args: Args) -> Result<(), Failure> {
     let (frame, rays) =
         pool.install(|| render(&tracer, &camera, scene.width, scene.height, args.samples));
     let traced = start.elapsed().as_secs_f64();
-    write_atomic(&out, &frame, format)
-        .with_context(|| format!("cannot write {}", out.display()))
-        .map_err(Failure::Output)?;
+    write_atomic(&out, &frame, format).map_err(|e| Failure::Output(e.into()))?;
     if !args.quiet {
         eprintln!(
             "raytrace: wrote {} ({}×{}, {} sample(s)/px) in {:.3} s: {} rays, {:.2} Mrays/s",
@@ -79,11 +77,11 @@ fn main() -> ExitCode {
     match run(args) {
         Ok(()) => ExitCode::SUCCESS,
         Err(Failure::BadInput(e)) => {
-            eprintln!("raytrace: {e:#}");
+            eprintln!("raytrace: {e}");
             ExitCode::from(2)
         }
         Err(Failure::Output(e)) => {
-            eprintln!("raytrace: {e:#}");
+            eprintln!("raytrace: {e}");
             ExitCode::from(1)
         }
     }
