@@ -32,7 +32,11 @@ impl Camera {
     /// A camera at `eye` looking at `look_at`. `None` when the two points coincide (or are
     /// not finite), because then there is no direction to look in.
     pub fn new(eye: DVec3, look_at: DVec3, width: u32, height: u32) -> Option<Camera> {
-        let u = (look_at - eye).try_normalize()?;
+        let to = look_at - eye;
+        // |to|² under- or overflows for a tiny or huge `to`: scaled first, it normalises.
+        let u = to
+            .try_normalize()
+            .or_else(|| (to / to.abs().max_element()).try_normalize())?;
         // |U × H| is the sine of the angle between them: below 1e-9 they are parallel.
         let across = u.cross(DVec3::Y);
         let right = if across.length() > 1e-9 {

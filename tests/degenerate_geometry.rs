@@ -396,9 +396,8 @@ fn rays_tangent_to_spheres() {
         glass(0.5),
     ];
     let mut grazing = 0;
-    let mut k = 0;
     // Spheres whose silhouettes pass exactly through pixel centres on a diagonal.
-    for step in 0..16u32 {
+    for (k, step) in (0..16u32).enumerate() {
         let (i, j) = (2 * step, (3 * step) % 24);
         let ray = camera.ray(i as f64 + 0.5, j as f64 + 0.5);
         let r = 0.05 + 0.03 * step as f64;
@@ -416,7 +415,6 @@ fn rays_tangent_to_spheres() {
         }
         let tex = [RED, WOOD, PERLIN, WHITE][k % 4];
         s = s.sphere(r, c, tex, &mats[k % mats.len()]);
-        k += 1;
     }
     assert_eq!(grazing, 16, "the spheres are not tangent to their rays");
     check("tangent-spheres", &s);

@@ -1427,6 +1427,19 @@ fn an_overflowing_camera_distance_is_not_called_the_same_point() {
     assert!(shown.starts_with("far.txt:3:1: "), "{shown}");
     assert!(shown.contains("overflows"), "{shown}");
     assert!(!shown.contains("placed on"), "{shown}");
+    // A huge or tiny but finite distance has a direction: |look_at − eye|² under- or
+    // overflowed and `Camera::new` refused it (src/camera.rs, `Camera::new`).
+    for (eye, look) in [
+        ("1e300 0 0", "0 0 0"),
+        ("0 0 0", "0 -1e200 1e200"),
+        ("0 0 0", "1e-320 0 0"),
+        ("1 1 1", "1 1.0000000000000002 1"),
+    ] {
+        let src = format!("4 3\n{eye}\n{look}\n0 0\n0 0 0 0\n");
+        let scene = Scene::parse(&src, "c.txt").unwrap_or_else(|e| panic!("{e}"));
+        let camera = scene.camera();
+        assert!(camera.ray(2.0, 1.5).dir.is_finite());
+    }
     // The true coincidence keeps its message.
     let src = "4 3\n1 2 3\n1 2 3\n0 0\n0 0 0 0\n";
     let shown = Scene::parse(src, "same.txt").unwrap_err().to_string();
@@ -1516,5 +1529,27 @@ proptest! {
         let seeds = manifest_seeds();
         let bytes = apply_manifest(&seeds[seed.index(seeds.len())], &edits);
         load_manifest_ok_or_located(bytes).map_err(TestCaseError::fail)?;
+    }
+}
+
+#[test]
+fn extreme_finite_values_render_without_panicking() {
+    // Colours, intensities and coefficients may be any finite number (docs/decisions.md):
+    // near 1e300 their products overflow to infinity and some pixels become NaN
+    // (inf·0 in the fog mix, inf − inf in the sums). That is no panic: `to_byte` draws a
+    // NaN channel as 0. Tame scenes (numbers up to 1e4) never do; see docs/reliability.md.
+    for src in [
+        "4 3\n0 1 5\n0 0 0\n1 1\n1 0 0 1\n1 0 0 0 1 1e300 1e300 1e300 1 0 0 1 0 0\n\
+         0 5 5 1e300 1e300 1e300 1e300\n",
+        "4 3\n0 1 5\n0 0 0\n0 1\n1 0 0 1\n1 0 0 0 1 -1e300 1e300 1e300 0.5 1e300 0 1 0 0\n\
+         0 5 5 1 1 1 1.7e308\n",
+        "4 3\n1e300 0 0\n0 0 0\n3 1e-300\n1 0 0 1\n1e300 0 0 0 1 1 1 1 0.1 0.1 0.9 1e300 2 1e300\n\
+         -1e300 0 0 1 1 1 1\n",
+    ] {
+        let scene = Scene::parse(src, "x.txt").unwrap();
+        let camera = scene.camera();
+        let tracer = Tracer::new(&scene);
+        let (frame, _) = whitted::render(&tracer, &camera, 4, 3, 2);
+        assert_eq!(frame.pixels.len(), 4 * 3 * 3);
     }
 }
