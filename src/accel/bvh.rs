@@ -32,8 +32,10 @@ const PAD: f64 = 1e-5;
 pub struct Prim {
     pub sphere: Sphere,
     pub index: u32,
-    /// Kt > 0: shadow rays cross it instead of being stopped.
+    /// Kt > 0: shadow rays cross it.
     pub glass: bool,
+    /// Kt ≤ 0: shadow rays stop at it. (Neither, for a NaN Kt.)
+    pub opaque: bool,
 }
 
 #[derive(Clone, Copy, Debug)]
