@@ -813,29 +813,48 @@ fn facing_mirrors_and_lossless_glass_stop_at_the_depth_limit() {
 }
 
 #[test]
-fn coefficients_outside_zero_to_one() {
+fn coefficients_outside_zero_to_one_are_refused() {
+    // Colours, Kd, Kr and Kt are 0..1 and intensities 0..1000 (docs/decisions.md): past
+    // that, sums of light could overflow into NaN, so the parser refuses them, located.
+    let base = |texture: &str, material: &str, intensity: f64| {
+        SceneText::new(
+            32,
+            24,
+            DVec3::new(0.0, 3.0, 10.0),
+            DVec3::new(0.0, 1.0, 0.0),
+        )
+        .sphere(1.0, DVec3::new(0.0, 1.0, 0.0), texture, material)
+        .light(DVec3::new(6.0, 8.0, 8.0), intensity)
+        .text()
+    };
+    for (src, field) in [
+        (base("1 -1 0 0", "0.5 0 0 1 0 0", 1.0), "field R"),
+        (base("1 5 5 5", "0.5 0 0 1 0 0", 1.0), "field R"),
+        (base("1 1 1 1", "-2 0 0 1 0 0", 1.0), "field Kd"),
+        (base("1 1 1 1", "0.5 3 0 1 0 0", 1.0), "field Kr"),
+        (base("1 1 1 1", "0.5 0 4 1.5 0 0", 1.0), "field Kt"),
+        (base("1 1 1 1", "0.5 0 0 1 0 0", -1.0), "field Intensity"),
+        (base("1 1 1 1", "0.5 0 0 1 0 0", 1e4), "field Intensity"),
+    ] {
+        let err = Scene::parse(&src, "odd.txt").unwrap_err().to_string();
+        assert!(
+            err.starts_with("odd.txt:") && err.contains(field),
+            "{err}\n{src}"
+        );
+    }
+    // The edges of the ranges are fine, and render finite.
     let s = SceneText::new(
         32,
         24,
         DVec3::new(0.0, 3.0, 10.0),
         DVec3::new(0.0, 1.0, 0.0),
     )
-    .plane(DVec3::ZERO, DVec3::Y, "1 2 -1 0.5", "3 2 0 1 0 0")
-    .sphere(
-        1.0,
-        DVec3::new(-1.2, 1.0, 0.0),
-        "1 -1 -1 -1",
-        "-2 -1 -1 1 0 0",
-    )
-    .sphere(
-        1.0,
-        DVec3::new(1.2, 1.0, 0.0),
-        "1 5 5 5",
-        "0.5 3 4 1.5 1 0.3",
-    )
-    .light(DVec3::new(-6.0, 8.0, 8.0), -1.0)
-    .light(DVec3::new(6.0, 8.0, 8.0), 100.0);
-    check("odd-coefficients", &s);
+    .plane(DVec3::ZERO, DVec3::Y, "1 1 0 0.5", "1 1 0 1 0 0")
+    .sphere(1.0, DVec3::new(-1.2, 1.0, 0.0), "1 0 0 0", "0 0 1 1 0 0")
+    .sphere(1.0, DVec3::new(1.2, 1.0, 0.0), "1 1 1 1", "1 1 1 1.5 1 0.3")
+    .light(DVec3::new(-6.0, 8.0, 8.0), 0.0)
+    .light(DVec3::new(6.0, 8.0, 8.0), 1000.0);
+    check("edge-coefficients", &s);
 }
 
 #[test]

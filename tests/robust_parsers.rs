@@ -1533,23 +1533,32 @@ proptest! {
 }
 
 #[test]
-fn extreme_finite_values_render_without_panicking() {
-    // Colours, intensities and coefficients may be any finite number (docs/decisions.md):
-    // near 1e300 their products overflow to infinity and some pixels become NaN
-    // (inf·0 in the fog mix, inf − inf in the sums). That is no panic: `to_byte` draws a
-    // NaN channel as 0. Tame scenes (numbers up to 1e4) never do; see docs/reliability.md.
+fn extreme_values_are_refused_or_render_finite() {
+    // Colours, Kd, Kr, Kt (0..1) and intensities (0..1000) are bounded, because near 1e300
+    // their products overflowed into NaN pixels; the first two scenes did. Geometry, bump
+    // and fog numbers may be any finite value: the third scene renders finite.
     for src in [
         "4 3\n0 1 5\n0 0 0\n1 1\n1 0 0 1\n1 0 0 0 1 1e300 1e300 1e300 1 0 0 1 0 0\n\
          0 5 5 1e300 1e300 1e300 1e300\n",
         "4 3\n0 1 5\n0 0 0\n0 1\n1 0 0 1\n1 0 0 0 1 -1e300 1e300 1e300 0.5 1e300 0 1 0 0\n\
          0 5 5 1 1 1 1.7e308\n",
-        "4 3\n1e300 0 0\n0 0 0\n3 1e-300\n1 0 0 1\n1e300 0 0 0 1 1 1 1 0.1 0.1 0.9 1e300 2 1e300\n\
-         -1e300 0 0 1 1 1 1\n",
     ] {
-        let scene = Scene::parse(src, "x.txt").unwrap();
-        let camera = scene.camera();
-        let tracer = Tracer::new(&scene);
-        let (frame, _) = whitted::render(&tracer, &camera, 4, 3, 2);
-        assert_eq!(frame.pixels.len(), 4 * 3 * 3);
+        let err = Scene::parse(src, "x.txt").unwrap_err().to_string();
+        assert!(
+            err.starts_with("x.txt:6:") && err.contains("must be from 0 to 1"),
+            "{err}"
+        );
+    }
+    let src = "4 3\n1e300 0 0\n0 0 0\n3 1e-300\n1 0 0 1\n\
+               1e300 0 0 0 1 1 1 1 0.1 0.1 0.9 1e300 2 1e300\n-1e300 0 0 1 1 1 1\n";
+    let scene = Scene::parse(src, "x.txt").unwrap();
+    let camera = scene.camera();
+    let tracer = Tracer::new(&scene);
+    for j in 0..3 {
+        for i in 0..4 {
+            let ray = camera.ray(i as f64 + 0.5, j as f64 + 0.5);
+            let c = tracer.primary(&ray, &mut Default::default());
+            assert!(c.is_finite(), "pixel ({i}, {j}): {c}");
+        }
     }
 }

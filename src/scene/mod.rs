@@ -31,6 +31,9 @@ use std::path::Path;
 pub const MAX_SIDE: u32 = 16384;
 /// The largest pixel count accepted (2^26: 201 MB of RGB bytes, more in the float pipeline).
 pub const MAX_PIXELS: u64 = 1 << 26;
+/// The brightest light accepted. The report's intensities are 0..1 (IV.2); brighter ones
+/// are allowed, within a bound that keeps every sum of light finite.
+pub const MAX_INTENSITY: f64 = 1000.0;
 /// The largest count of each kind of object or light.
 pub const MAX_COUNT: u64 = 1_000_000;
 

@@ -4,7 +4,7 @@
 
 use super::error::{FileLoc, SceneError};
 use super::lexer::{Lexer, Token};
-use super::{Scene, MAX_COUNT, MAX_PIXELS, MAX_SIDE};
+use super::{Scene, MAX_COUNT, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
 use crate::bump::Bump;
 use crate::camera::Camera;
 use crate::fog::Fog;
@@ -177,8 +177,23 @@ impl<'a> Parser<'a> {
         Ok(scaled)
     }
 
+    /// A number within `lo..=hi`.
+    fn ranged(&mut self, field: &str, lo: f64, hi: f64) -> Result<f64> {
+        let (v, tok) = self.number(field)?;
+        if (lo..=hi).contains(&v) {
+            Ok(v)
+        } else {
+            let msg = format!("{field} must be from {lo} to {hi}, found '{}'", tok.text);
+            Err(self.error(&tok, msg, field))
+        }
+    }
+
+    /// A colour: three channels from 0 to 1 (SPEC §1).
     fn color(&mut self, fields: [&str; 3]) -> Result<Color> {
-        Ok(self.vector(fields)?.0)
+        let r = self.ranged(fields[0], 0.0, 1.0)?;
+        let g = self.ranged(fields[1], 0.0, 1.0)?;
+        let b = self.ranged(fields[2], 0.0, 1.0)?;
+        Ok(Color::new(r, g, b))
     }
 
     fn texture(&mut self) -> Result<Texture> {
@@ -205,9 +220,9 @@ impl<'a> Parser<'a> {
 
     fn material(&mut self) -> Result<Material> {
         self.place.part = Some("material");
-        let (kd, _) = self.number("Kd")?;
-        let (kr, _) = self.number("Kr")?;
-        let (kt, _) = self.number("Kt")?;
+        let kd = self.ranged("Kd", 0.0, 1.0)?;
+        let kr = self.ranged("Kr", 0.0, 1.0)?;
+        let kt = self.ranged("Kt", 0.0, 1.0)?;
         let ior = self.positive("Ior")?;
         let what = "0 (none), 1 (uniform) or 2 (plane/water)";
         let (bump_type, _) = self.integer("BumpType", 0, 2, what)?;
@@ -330,7 +345,7 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
         p.enter("light", Some((i, nl)));
         let (position, _) = p.vector(["Lx", "Ly", "Lz"])?;
         let color = p.color(["R", "G", "B"])?;
-        let (intensity, _) = p.number("Intensity")?;
+        let intensity = p.ranged("Intensity", 0.0, MAX_INTENSITY)?;
         lights.push(Light {
             position,
             color,
