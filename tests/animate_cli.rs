@@ -45,24 +45,9 @@ fn frame_k_is_the_still_raytrace_draws_with_that_camera() {
 #[test]
 fn one_thread_draws_the_same_bytes_as_all() {
     let (dir, manifest) = project(&circle_manifest(""));
-    animate()
-        .arg(&manifest)
-        .args(["--threads", "1", "-o"])
-        .arg(dir.path().join("one"))
-        .assert()
-        .success();
-    animate()
-        .arg(&manifest)
-        .args(["-o"])
-        .arg(dir.path().join("all"))
-        .assert()
-        .success();
-    animate()
-        .arg(&manifest)
-        .args(["--threads", "3", "-o"])
-        .arg(dir.path().join("three"))
-        .assert()
-        .success();
+    render_into(&manifest, &dir.path().join("one"), &["--threads", "1"]);
+    render_into(&manifest, &dir.path().join("all"), &[]);
+    render_into(&manifest, &dir.path().join("three"), &["--threads", "3"]);
     let one = files(&dir.path().join("one"));
     assert_eq!(one.len(), 12);
     assert_eq!(one, files(&dir.path().join("all")));
@@ -72,19 +57,10 @@ fn one_thread_draws_the_same_bytes_as_all() {
 #[test]
 fn three_shards_make_the_full_run() {
     let (dir, manifest) = project(&circle_manifest(""));
-    animate()
-        .arg(&manifest)
-        .arg("-o")
-        .arg(dir.path().join("full"))
-        .assert()
-        .success();
+    render_into(&manifest, &dir.path().join("full"), &[]);
     for k in 0..3 {
-        animate()
-            .arg(&manifest)
-            .args(["--shard", &format!("{k}/3"), "-o"])
-            .arg(dir.path().join("sharded"))
-            .assert()
-            .success();
+        let shard = format!("{k}/3");
+        render_into(&manifest, &dir.path().join("sharded"), &["--shard", &shard]);
         // Each shard adds exactly its 4 contiguous frames.
         assert_eq!(files(&dir.path().join("sharded")).len(), 4 * (k + 1));
     }
@@ -97,18 +73,8 @@ fn three_shards_make_the_full_run() {
 #[test]
 fn frame_subsets_render_what_the_full_run_would() {
     let (dir, manifest) = project(&circle_manifest(""));
-    animate()
-        .arg(&manifest)
-        .arg("-o")
-        .arg(dir.path().join("full"))
-        .assert()
-        .success();
-    animate()
-        .arg(&manifest)
-        .args(["--frames", "2-4,9", "-o"])
-        .arg(dir.path().join("some"))
-        .assert()
-        .success();
+    render_into(&manifest, &dir.path().join("full"), &[]);
+    render_into(&manifest, &dir.path().join("some"), &["--frames", "2-4,9"]);
     let some = files(&dir.path().join("some"));
     let full = files(&dir.path().join("full"));
     let names: Vec<&str> = some.iter().map(|(n, _)| n.as_str()).collect();
@@ -226,12 +192,7 @@ fn a_killed_run_leaves_only_complete_frames_and_resume_finishes_it() {
     // Big enough frames that the kill lands mid-run.
     let extra = "\n[render]\nwidth = 320\nheight = 240\nsamples = 2\n";
     let (dir, manifest) = project(&circle_manifest(extra));
-    animate()
-        .arg(&manifest)
-        .arg("-o")
-        .arg(dir.path().join("whole"))
-        .assert()
-        .success();
+    render_into(&manifest, &dir.path().join("whole"), &[]);
     let bin = assert_cmd::cargo::cargo_bin("animate");
     let mut child = std::process::Command::new(bin)
         .arg(&manifest)

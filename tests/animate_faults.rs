@@ -33,12 +33,7 @@ fn signal(child: &std::process::Child, sig: &str) {
 fn interrupted_run_resumes(sig: &str, code: i32) {
     let (dir, manifest) = project(&circle_manifest(SLOW));
     let whole = dir.path().join("whole");
-    animate()
-        .arg(&manifest)
-        .arg("-o")
-        .arg(&whole)
-        .assert()
-        .success();
+    render_into(&manifest, &whole, &[]);
     let mut child = spawn(&manifest, &[]);
     std::thread::sleep(Duration::from_millis(400));
     let sent = Instant::now();
@@ -179,12 +174,7 @@ fn full_disk_on_stdout() {
 #[test]
 fn four_shards_at_once_into_one_folder() {
     let (dir, manifest) = project(&circle_manifest(""));
-    animate()
-        .arg(&manifest)
-        .arg("-o")
-        .arg(dir.path().join("single"))
-        .assert()
-        .success();
+    render_into(&manifest, &dir.path().join("single"), &[]);
     let shards: Vec<_> = (0..4)
         .map(|k| spawn(&manifest, &["--shard", &format!("{k}/4")]))
         .collect();
@@ -200,12 +190,7 @@ fn four_shards_at_once_into_one_folder() {
 #[test]
 fn two_resume_runs_racing_on_the_same_frames() {
     let (dir, manifest) = project(&circle_manifest(""));
-    animate()
-        .arg(&manifest)
-        .arg("-o")
-        .arg(dir.path().join("single"))
-        .assert()
-        .success();
+    render_into(&manifest, &dir.path().join("single"), &[]);
     let racers: Vec<_> = (0..2).map(|_| spawn(&manifest, &["--resume"])).collect();
     for child in racers {
         assert!(child.wait_with_output().unwrap().status.success());

@@ -54,6 +54,17 @@ pub fn animate() -> Command {
     Command::cargo_bin("animate").unwrap()
 }
 
+/// Runs `animate MANIFEST ARGS -o OUT` and expects success.
+pub fn render_into(manifest: &Path, out: &Path, args: &[&str]) {
+    animate()
+        .arg(manifest)
+        .args(args)
+        .arg("-o")
+        .arg(out)
+        .assert()
+        .success();
+}
+
 pub fn raytrace() -> Command {
     Command::cargo_bin("raytrace").unwrap()
 }
