@@ -73,24 +73,11 @@ impl<'a> Tracer<'a> {
     }
 
     /// The nearest object hit, with its t: the first object in file order among those at
-    /// the smallest t, exactly as `nearest_linear` finds it.
+    /// the smallest t, exactly as a linear scan in file order finds it.
     #[inline]
     pub fn nearest(&self, ray: &Ray) -> Option<(f64, &'a Object)> {
         let objects = &self.scene.objects;
         self.accel.nearest(ray).map(|(t, i)| (t, &objects[i]))
-    }
-
-    /// The reference linear scan over every object (tests and benchmarks).
-    pub fn nearest_linear(&self, ray: &Ray) -> Option<(f64, &'a Object)> {
-        let mut best: Option<(f64, &Object)> = None;
-        let mut t_max = f64::INFINITY;
-        for obj in &self.scene.objects {
-            if let Some(t) = obj.shape.hit(ray, t_max) {
-                t_max = t;
-                best = Some((t, obj));
-            }
-        }
-        best
     }
 
     /// What a shadow ray from `p` towards a light `dist` away along the unit `to_light`

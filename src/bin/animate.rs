@@ -90,6 +90,13 @@ struct Common {
     quiet: bool,
 }
 
+impl Common {
+    /// The manifest path; clap requires it wherever `Common` is parsed.
+    fn manifest(&self) -> &Path {
+        self.manifest.as_deref().unwrap_or(Path::new(""))
+    }
+}
+
 /// How frames leave the program when they are not files.
 #[derive(ValueEnum, Clone, Copy, Debug, PartialEq, Eq)]
 enum StreamFormat {
@@ -161,7 +168,7 @@ fn pool(threads: Option<u32>) -> Result<rayon::ThreadPool, AnimError> {
 }
 
 fn render_command(args: RenderArgs) -> Result<(), AnimError> {
-    let project = Project::load(args.common.manifest.as_deref().unwrap_or(Path::new("")))?;
+    let project = Project::load(args.common.manifest())?;
     let manifest = &project.manifest;
     let anim = Animation::new(manifest, &project.scene)?;
     let frames = select(
@@ -210,7 +217,7 @@ fn render_command(args: RenderArgs) -> Result<(), AnimError> {
 }
 
 fn bless_command(args: BlessArgs) -> Result<(), AnimError> {
-    let project = Project::load(args.common.manifest.as_deref().unwrap_or(Path::new("")))?;
+    let project = Project::load(args.common.manifest())?;
     let anim = Animation::new(&project.manifest, &project.scene)?;
     let (frames, refs) = regress::targets(
         &project.manifest,
@@ -231,7 +238,7 @@ fn bless_command(args: BlessArgs) -> Result<(), AnimError> {
 /// Runs a check; `Ok(false)` when a frame failed.
 fn check_command(args: CheckArgs) -> Result<bool, AnimError> {
     let common = &args.bless.common;
-    let project = Project::load(common.manifest.as_deref().unwrap_or(Path::new("")))?;
+    let project = Project::load(common.manifest())?;
     let manifest = &project.manifest;
     let anim = Animation::new(manifest, &project.scene)?;
     let (frames, refs) = regress::targets(

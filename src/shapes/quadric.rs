@@ -101,7 +101,7 @@ impl Quadric {
     /// The report's general form, term by term.
     #[inline(never)]
     fn roots_general(&self, ray: &Ray) -> Roots {
-        let [a, b, c, d, e, f, g, h, i, j] = self.coef;
+        let [a, b, c, d, e, f, g, h, i, _] = self.coef;
         let o = ray.origin - self.origin;
         let v = ray.dir;
         let aq = a * v.x * v.x
@@ -117,16 +117,8 @@ impl Quadric {
             + g * v.x
             + h * v.y
             + i * v.z;
-        let cq = a * o.x * o.x
-            + b * o.y * o.y
-            + c * o.z * o.z
-            + d * o.x * o.y
-            + e * o.x * o.z
-            + f * o.y * o.z
-            + g * o.x
-            + h * o.y
-            + i * o.z
-            + j;
+        // Cq is F at the ray's origin, the same sum in the same order as `value`.
+        let cq = self.value(ray.origin);
         Self::solve(aq, bq, cq)
     }
 
