@@ -64,6 +64,52 @@ pub fn render(
     (frame, count)
 }
 
+/// Adds, for every pixel, its colour clamped to 0..1 (the mean of its n×n clamped samples
+/// when `samples` > 1) into `sum` (width·height colours, rows top to bottom). Motion blur
+/// sums its sub-frames this way and then divides (`Frame::from_sum`), so each sample is
+/// clamped, all are averaged, then rounded, as anti-aliasing does.
+pub fn render_add(
+    tracer: &Tracer,
+    camera: &Camera,
+    width: u32,
+    height: u32,
+    samples: u32,
+    sum: &mut [Color],
+) -> RayCount {
+    let n = samples.max(1);
+    sum.par_chunks_mut(width.max(1) as usize)
+        .take(height as usize)
+        .enumerate()
+        .map(|(j, row)| {
+            let mut count = RayCount::default();
+            for (i, acc) in row.iter_mut().enumerate() {
+                let c = pixel(tracer, camera, i as f64, j as f64, n, &mut count);
+                *acc += c.clamp(Color::ZERO, Color::ONE);
+            }
+            count
+        })
+        .reduce(RayCount::default, |a, b| a + b)
+}
+
+impl Frame {
+    /// The frame whose pixels are `sum / count`, rounded as every pixel is (`to_byte`).
+    pub fn from_sum(sum: &[Color], count: u32, width: u32, height: u32) -> Frame {
+        let k = f64::from(count.max(1));
+        let pixels = sum
+            .iter()
+            .flat_map(|c| {
+                let m = *c / k;
+                [to_byte(m.x), to_byte(m.y), to_byte(m.z)]
+            })
+            .collect();
+        Frame {
+            width,
+            height,
+            pixels,
+        }
+    }
+}
+
 /// The colour of pixel (i, j) from an n×n grid of samples.
 #[inline]
 fn pixel(tracer: &Tracer, camera: &Camera, i: f64, j: f64, n: u32, count: &mut RayCount) -> Color {
@@ -99,6 +145,34 @@ mod tests {
         assert_eq!(to_byte(0.2), 51);
         assert_eq!(to_byte(0.1), 26);
         assert_eq!(to_byte(f64::NAN), 0);
+    }
+
+    #[test]
+    fn one_summed_sub_frame_is_the_frame() {
+        let scene = crate::Scene::parse(
+            "6 4  0 0 5  0 0 0  2 9  1 1 0 1\n\
+             1 0 0 0  1 1 0 0  0.5 0.3 0 1 0 0\n\
+             0 -1 0  0 1 0  2 1 1 1 1 0 0 0 0 0 0  1 0 0 1 0 0\n\
+             0 5 5  1 1 1  1",
+            "t.txt",
+        )
+        .unwrap();
+        let tracer = Tracer::new(&scene);
+        let camera = scene.camera();
+        for n in [1, 2] {
+            let (frame, rays) = render(&tracer, &camera, 6, 4, n);
+            let mut sum = vec![Color::ZERO; 24];
+            let summed = render_add(&tracer, &camera, 6, 4, n, &mut sum);
+            assert_eq!(Frame::from_sum(&sum, 1, 6, 4), frame);
+            assert_eq!(summed, rays);
+        }
+    }
+
+    #[test]
+    fn from_sum_divides_then_rounds() {
+        // Two sub-frames of 0.2 and 0.3: mean 0.25, 255·0.25 = 63.75 → 64.
+        let sum = [Color::new(0.5, 0.0, 2.0)];
+        assert_eq!(Frame::from_sum(&sum, 2, 1, 1).pixels, vec![64, 0, 255]);
     }
 
     #[test]

@@ -17,6 +17,7 @@ use crate::scene::Scene;
 use crate::shading::{self, Occluders};
 use crate::texture::Color;
 use glam::DVec3;
+use std::sync::Arc;
 
 /// Bounces allowed after the primary ray.
 pub const MAX_DEPTH: u32 = 5;
@@ -52,10 +53,12 @@ impl std::ops::Add for RayCount {
 }
 
 /// Traces rays through one scene: everything prepared once per scene (and shared by every
-/// frame of an animation) lives here — the acceleration structures of `accel`.
+/// frame of an animation) lives here — the acceleration structures of `accel`. The
+/// structure is shared (`Arc`): frames whose tracks change only colours or lights draw
+/// their own scene values through one structure built once (`with_accel`).
 pub struct Tracer<'a> {
     scene: &'a Scene,
-    accel: Accel,
+    accel: Arc<Accel>,
 }
 
 impl<'a> Tracer<'a> {
@@ -68,8 +71,20 @@ impl<'a> Tracer<'a> {
     pub fn new(scene: &'a Scene) -> Tracer<'a> {
         Tracer {
             scene,
-            accel: Accel::new(&scene.objects),
+            accel: Arc::new(Accel::new(&scene.objects)),
         }
+    }
+
+    /// A tracer for `scene` that reuses `accel`, built by `Accel::new` from objects with
+    /// the same shapes and the same transparency (Kt > 0 or not) as `scene`'s: only
+    /// colours, other coefficients and lights may differ. The caller guarantees it.
+    pub fn with_accel(scene: &'a Scene, accel: Arc<Accel>) -> Tracer<'a> {
+        Tracer { scene, accel }
+    }
+
+    /// The acceleration structure, to share with `with_accel`.
+    pub fn accel(&self) -> &Arc<Accel> {
+        &self.accel
     }
 
     /// The nearest object hit, with its t: the first object in file order among those at
