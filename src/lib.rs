@@ -33,7 +33,10 @@ pub mod accel;
 pub mod anim;
 pub mod bump;
 pub mod camera;
+pub mod exit;
+pub mod fileloc;
 pub mod fog;
+pub mod limits;
 pub mod noise;
 pub mod object;
 pub mod optics;
@@ -46,5 +49,6 @@ pub mod texture;
 pub mod trace;
 
 pub use camera::Camera;
+pub use fileloc::FileLoc;
 pub use render::{render, Frame};
 pub use scene::{Scene, SceneError};

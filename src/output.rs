@@ -19,7 +19,8 @@ use std::path::{Path, PathBuf};
 pub const DEFAULT_JPEG_QUALITY: u8 = 90;
 
 /// An output image format.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
 pub enum ImageFormat {
     Raw,
     Png,
@@ -47,20 +48,28 @@ pub enum OutputError {
 impl ImageFormat {
     /// The format named by a path's extension (case-insensitive).
     pub fn from_path(path: &Path) -> Result<ImageFormat, OutputError> {
-        let ext = path
-            .extension()
+        path.extension()
             .and_then(|e| e.to_str())
-            .map(|e| e.to_ascii_lowercase());
-        match ext.as_deref() {
-            Some("png") => Ok(ImageFormat::Png),
-            Some("jpg" | "jpeg") => Ok(ImageFormat::Jpeg {
+            .and_then(ImageFormat::from_name)
+            .ok_or_else(|| OutputError::UnknownExtension {
+                path: path.to_path_buf(),
+            })
+    }
+
+    /// The names a manifest or `--stdout` accepts, in the order messages list them.
+    pub const NAMES: [&'static str; 5] = ["png", "jpeg", "jpg", "ppm", "raw"];
+
+    /// The format a name gives (`png`, `jpeg` or `jpg`, `ppm`, `raw`; JPEG at the default
+    /// quality), case-insensitively.
+    pub fn from_name(name: &str) -> Option<ImageFormat> {
+        match name.to_ascii_lowercase().as_str() {
+            "png" => Some(ImageFormat::Png),
+            "jpg" | "jpeg" => Some(ImageFormat::Jpeg {
                 quality: DEFAULT_JPEG_QUALITY,
             }),
-            Some("ppm") => Ok(ImageFormat::Ppm),
-            Some("raw") => Ok(ImageFormat::Raw),
-            _ => Err(OutputError::UnknownExtension {
-                path: path.to_path_buf(),
-            }),
+            "ppm" => Some(ImageFormat::Ppm),
+            "raw" => Some(ImageFormat::Raw),
+            _ => None,
         }
     }
 
@@ -77,24 +86,73 @@ impl ImageFormat {
 
 /// Encodes `frame` in `format` into `out`.
 pub fn encode(frame: &Frame, format: ImageFormat, out: &mut dyn Write) -> Result<(), OutputError> {
+    encode_with(frame, format, &[], out)
+}
+
+/// Encodes `frame` with text metadata, `(keyword, text)` pairs (keywords of 1 to 79
+/// Latin-1 characters, no line breaks in either): PNG `tEXt` chunks before the image
+/// data (through the `png` crate), one JPEG comment (COM segment) of `keyword: text`
+/// lines right after the start marker, `# keyword: text` comment lines in the PPM
+/// header. RAW has no header and carries none.
+pub fn encode_with(
+    frame: &Frame,
+    format: ImageFormat,
+    meta: &[(String, String)],
+    out: &mut dyn Write,
+) -> Result<(), OutputError> {
     let (w, h) = (frame.width, frame.height);
     match format {
         ImageFormat::Raw => out.write_all(&frame.pixels)?,
         ImageFormat::Ppm => {
-            write!(out, "P6\n{w} {h}\n255\n")?;
+            writeln!(out, "P6")?;
+            for (k, v) in meta {
+                writeln!(out, "# {k}: {v}")?;
+            }
+            write!(out, "{w} {h}\n255\n")?;
             out.write_all(&frame.pixels)?;
         }
-        ImageFormat::Png => {
+        ImageFormat::Png if meta.is_empty() => {
             let enc =
                 PngEncoder::new_with_quality(out, CompressionType::Fast, FilterType::Adaptive);
             enc.write_image(&frame.pixels, w, h, ExtendedColorType::Rgb8)?;
         }
+        ImageFormat::Png => {
+            // The settings `PngEncoder` uses above, plus the text chunks.
+            let mut enc = png::Encoder::new(out, w, h);
+            enc.set_color(png::ColorType::Rgb);
+            enc.set_depth(png::BitDepth::Eight);
+            enc.set_compression(png::Compression::Fast);
+            enc.set_filter(png::Filter::Adaptive);
+            for (k, v) in meta {
+                enc.add_text_chunk(k.clone(), v.clone())
+                    .map_err(png_error)?;
+            }
+            let mut writer = enc.write_header().map_err(png_error)?;
+            writer.write_image_data(&frame.pixels).map_err(png_error)?;
+            writer.finish().map_err(png_error)?;
+        }
         ImageFormat::Jpeg { quality } => {
-            let enc = JpegEncoder::new_with_quality(out, quality.clamp(1, 100));
+            let mut bytes = Vec::new();
+            let enc = JpegEncoder::new_with_quality(&mut bytes, quality.clamp(1, 100));
             enc.write_image(&frame.pixels, w, h, ExtendedColorType::Rgb8)?;
+            // The image crate writes no comments: the COM segment (FF FE, a big-endian
+            // length that counts itself, the text) goes right after SOI (FF D8).
+            let text: String = meta.iter().map(|(k, v)| format!("{k}: {v}\n")).collect();
+            let text = &text.as_bytes()[..text.len().min(65_000)];
+            out.write_all(&bytes[..2])?;
+            if !text.is_empty() {
+                out.write_all(&[0xFF, 0xFE])?;
+                out.write_all(&(text.len() as u16 + 2).to_be_bytes())?;
+                out.write_all(text)?;
+            }
+            out.write_all(&bytes[2..])?;
         }
     }
     Ok(())
+}
+
+fn png_error(e: png::EncodingError) -> OutputError {
+    OutputError::Stream(std::io::Error::other(e))
 }
 
 /// A hidden temporary file (`.NAME.XXXXXX.tmp`) in `path`'s folder, to be renamed onto
@@ -120,6 +178,16 @@ pub fn temp_beside(path: &Path) -> std::io::Result<tempfile::NamedTempFile> {
 /// Writes `frame` to `path` atomically: a temporary file beside it, then a rename. On any
 /// error the temporary file is removed and nothing appears under `path`.
 pub fn write_atomic(path: &Path, frame: &Frame, format: ImageFormat) -> Result<(), OutputError> {
+    write_atomic_with(path, frame, format, &[])
+}
+
+/// `write_atomic` with text metadata (see `encode_with`).
+pub fn write_atomic_with(
+    path: &Path,
+    frame: &Frame,
+    format: ImageFormat,
+    meta: &[(String, String)],
+) -> Result<(), OutputError> {
     let io = |source| OutputError::Io {
         path: path.to_path_buf(),
         source,
@@ -127,7 +195,7 @@ pub fn write_atomic(path: &Path, frame: &Frame, format: ImageFormat) -> Result<(
     let tmp = temp_beside(path).map_err(io)?;
     {
         let mut w = BufWriter::new(tmp.as_file());
-        encode(frame, format, &mut w)?;
+        encode_with(frame, format, meta, &mut w)?;
         w.flush().map_err(io)?;
     }
     tmp.persist(path).map_err(|e| io(e.error))?;

@@ -85,10 +85,11 @@ fn output_folder_that_is_a_file() {
         .arg(&file)
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(1));
+    // An output location that cannot be used is bad input: nothing was rendered.
+    assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
-        err.contains("cannot use the frame folder") && err.contains("taken"),
+        err.contains("cannot use the output folder") && err.contains("taken"),
         "{err}"
     );
     assert_eq!(std::fs::read(&file).unwrap(), b"not a folder");
@@ -103,7 +104,7 @@ fn unwritable_output_folder() {
         .args(["-o", "/proc/animate-frames"])
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(1));
+    assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("/proc/animate-frames"), "{err}");
 }

@@ -23,12 +23,10 @@ fuzz_target!(|data: &[u8]| {
 
 fn check_located(src: &str, err: &ManifestError) {
     let shown = err.to_string();
-    let ManifestError::Invalid {
-        path, line, column, ..
-    } = err
-    else {
+    let ManifestError::Invalid { loc, .. } = err else {
         panic!("an I/O error from text: {shown}");
     };
+    let (path, line, column) = (&loc.file, &loc.line, &loc.column);
     assert_eq!(path, PATH);
     assert!(
         shown.starts_with(&format!("{PATH}:{line}:{column}: ")),

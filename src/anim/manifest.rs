@@ -1,6 +1,6 @@
 //! The animation manifest of SPEC §5. `Manifest::parse` and `Manifest::load` read the
 //! TOML (`raw`), check every value, resolve paths against the manifest's own folder and
-//! build the camera path (`camera`). Every refusal, syntax or meaning, is a
+//! build the camera (`camera`) and the tracks (`tracks`). Every refusal, syntax or meaning, is a
 //! `ManifestError::Invalid` rendered `path:line:column: message` at the offending key or
 //! value; unknown keys are refused and the valid ones named. Never panics.
 //!
@@ -9,22 +9,28 @@
 //! frames = 250                     # required, 1..=1000000
 //! fps = 25                         # > 0; default 25
 //!
-//! [camera]                         # required: path = "circle" | "spline" (see `path`, `spline`)
-//! path = "circle"
+//! [camera]                         # optional: path = "circle" | "spline" (see `camera`)
+//! path = "circle"                  #   no path (or no [camera]): the scene's eye holds still
 //! center = [0.0, 1.0, 0.0]
 //! radius = 12.0
 //! height = 3.0
+//! look_at = "sphere 2"             # optional: a point [x, y, z] or an object to follow
+//!
+//! [[track]]                        # any number; see `tracks`
+//! target = "light 1 intensity"
+//! keys = [{ frame = 0, value = 0.2 }, { frame = 249, value = 1.0 }]
 //!
 //! [output]                         # optional
 //! dir = "../out/orbit"             # default: the manifest's name without .toml + "-frames"
 //! name = "frame_####"              # default; #### = zero-padded frame number; no / or \
-//! format = "png"                   # png | jpeg | ppm | raw; default png
+//! format = "png"                   # png | jpeg (or jpg) | ppm | raw; default png
 //! jpeg_quality = 90                # 1..=100; default 90
 //!
 //! [render]                         # optional overrides of the scene file
 //! width = 1280                     # 1..=16384, and width·height <= 2^26 when both given
 //! height = 960
 //! samples = 2                      # n×n per pixel, 1..=16; default 1
+//! motion_blur = { shutter = 0.5, samples = 8 }   # optional; shutter in (0, 1] frames
 //!
 //! [check]                          # optional; frames and references required
 //! frames = [0, 62, 125, 187, 249]  # each < frames, no repeats
@@ -38,42 +44,22 @@ mod camera;
 mod locate;
 mod raw;
 mod sections;
+mod tracks;
 
-pub use camera::MAX_TURNS;
-pub use sections::{MAX_PIXELS, MAX_SAMPLES, MAX_SIDE};
+pub use tracks::LookAt;
 
-use super::path::CameraPath;
-use locate::{key_path, line_column};
-use raw::{Probe, RawCircle, RawManifest, RawSpline};
+use crate::anim::timeline::{CameraPath, MotionBlur, TrackSpec};
+use crate::fileloc::FileLoc;
+use crate::limits::MAX_FRAMES;
+use crate::output::ImageFormat;
+use locate::key_path;
+use raw::{Probe, RawCircle, RawManifest, RawSpline, RawStill};
 use std::ops::{Range, RangeInclusive};
 use std::path::{Path, PathBuf};
 use toml::Spanned;
 
-/// The most frames a manifest may ask for.
-pub const MAX_FRAMES: u32 = 1_000_000;
 /// `fps` when not given.
 pub const DEFAULT_FPS: f64 = 25.0;
-
-/// The frame file format of `[output] format`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum FrameFormat {
-    Png,
-    Jpeg,
-    Ppm,
-    Raw,
-}
-
-impl FrameFormat {
-    /// The file extension, without the dot: `png`, `jpg`, `ppm` or `raw`.
-    pub fn extension(self) -> &'static str {
-        match self {
-            FrameFormat::Png => "png",
-            FrameFormat::Jpeg => "jpg",
-            FrameFormat::Ppm => "ppm",
-            FrameFormat::Raw => "raw",
-        }
-    }
-}
 
 /// `[output]`, paths resolved.
 #[derive(Clone, Debug, PartialEq)]
@@ -82,8 +68,8 @@ pub struct OutputSpec {
     pub dir: PathBuf,
     /// The name pattern, `####` standing for the zero-padded frame number.
     pub name: String,
-    pub format: FrameFormat,
-    pub jpeg_quality: u8,
+    /// The frame files' format (JPEG with its quality).
+    pub format: ImageFormat,
 }
 
 impl OutputSpec {
@@ -92,31 +78,36 @@ impl OutputSpec {
     /// the run's length or to the digits of `frames - 1` if more, so that names sort;
     /// without a `#` the name gets `_` and the number padded to at least 4 digits.
     pub fn file_name(&self, frame: u32, frames: u32) -> String {
+        format!("{}.{}", self.stem(frame, frames), self.format.extension())
+    }
+
+    /// `file_name` without the extension.
+    pub fn stem(&self, frame: u32, frames: u32) -> String {
         let needed = frames.saturating_sub(1).to_string().len();
-        let ext = self.format.extension();
         let name = &self.name;
         match name.find('#') {
             Some(start) => {
                 let run = name[start..].bytes().take_while(|&b| b == b'#').count();
                 let (head, tail) = (&name[..start], &name[start + run..]);
                 let width = run.max(needed);
-                format!("{head}{frame:0width$}{tail}.{ext}")
+                format!("{head}{frame:0width$}{tail}")
             }
             None => {
                 let width = needed.max(4);
-                format!("{name}_{frame:0width$}.{ext}")
+                format!("{name}_{frame:0width$}")
             }
         }
     }
 }
 
-/// `[render]`: optional overrides of the scene file.
+/// `[render]`: optional overrides of the scene file, and motion blur.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct RenderSpec {
     pub width: Option<u32>,
     pub height: Option<u32>,
     /// n for an n×n grid per pixel; 1 when not given.
     pub samples: u32,
+    pub motion_blur: Option<MotionBlur>,
 }
 
 /// `[check]`, paths resolved.
@@ -136,9 +127,16 @@ pub struct Manifest {
     pub path: PathBuf,
     /// The base scene, resolved against the manifest's folder.
     pub scene: PathBuf,
+    /// Where `scene = ...` is written, for errors about the scene file.
+    pub scene_loc: FileLoc,
     pub frames: u32,
     pub fps: f64,
-    pub camera: CameraPath,
+    /// The camera path; `None` keeps the scene file's eye.
+    pub camera: Option<CameraPath>,
+    /// An object the camera follows (`look_at = "sphere 2"`), or, without a path, a
+    /// fixed point.
+    pub look_at: Option<LookAt>,
+    pub tracks: Vec<TrackSpec>,
     pub output: OutputSpec,
     pub render: RenderSpec,
     pub check: Option<CheckSpec>,
@@ -153,13 +151,18 @@ pub enum ManifestError {
         #[source]
         source: std::io::Error,
     },
-    #[error("{path}:{line}:{column}: {message}")]
-    Invalid {
-        path: String,
-        line: usize,
-        column: usize,
-        message: String,
-    },
+    #[error("{loc}: {message}")]
+    Invalid { loc: FileLoc, message: String },
+}
+
+impl ManifestError {
+    /// The location of an `Invalid` error.
+    pub fn loc(&self) -> Option<&FileLoc> {
+        match self {
+            ManifestError::Invalid { loc, .. } => Some(loc),
+            ManifestError::Io { .. } => None,
+        }
+    }
 }
 
 impl Manifest {
@@ -181,31 +184,35 @@ impl Manifest {
     pub fn parse(src: &str, path: &Path) -> Result<Manifest, ManifestError> {
         let source = Source { text: src, path };
         let probe: Probe = source.deserialize()?;
-        let Some(camera) = probe.camera else {
-            let message = "missing the [camera] table (path = \"circle\" or \"spline\")";
-            return Err(source.error(0..0, message));
-        };
-        let Some(kind) = &camera.get_ref().path else {
-            let message = "[camera] needs a `path`: \"circle\" or \"spline\"";
-            return Err(source.error(camera.span(), message));
-        };
-        match kind.get_ref().as_str() {
-            "circle" => {
+        let kind = probe
+            .camera
+            .as_ref()
+            .and_then(|c| c.get_ref().path.as_ref());
+        match kind.map(|k| (k.get_ref().as_str(), k.span())) {
+            None => {
+                let raw: RawManifest<RawStill> = source.deserialize()?;
+                source.manifest(raw, |s, c, _| s.still(c))
+            }
+            Some(("circle", _)) => {
                 let raw: RawManifest<RawCircle> = source.deserialize()?;
                 source.manifest(raw, |s, c, _| s.circle(c))
             }
-            "spline" => {
+            Some(("spline", _)) => {
                 let raw: RawManifest<RawSpline> = source.deserialize()?;
                 source.manifest(raw, |s, c, frames| s.spline(c, frames))
             }
-            other => {
-                let message =
-                    format!("unknown camera path `{other}`, expected `circle` or `spline`");
-                Err(source.error(kind.span(), message))
+            Some((other, span)) => {
+                let message = format!(
+                    "unknown camera path `{other}`, expected `circle` or `spline` (or no path: the scene's camera holds still)"
+                );
+                Err(source.error(span, message))
             }
         }
     }
 }
+
+/// What a `[camera]` table becomes: the path, and an object followed (or a still point).
+type CameraParts = (Option<CameraPath>, Option<LookAt>);
 
 /// The manifest text and where it came from: turns spans into located errors.
 struct Source<'a> {
@@ -214,13 +221,15 @@ struct Source<'a> {
 }
 
 impl Source<'_> {
+    /// The place of the start of `span`.
+    fn loc(&self, span: Range<usize>) -> FileLoc {
+        FileLoc::of_offset(&self.path.display().to_string(), self.text, span.start)
+    }
+
     /// An error at the start of `span`.
     fn error(&self, span: Range<usize>, message: impl Into<String>) -> ManifestError {
-        let (line, column) = line_column(self.text, span.start);
         ManifestError::Invalid {
-            path: self.path.display().to_string(),
-            line,
-            column,
+            loc: self.loc(span),
             message: message.into(),
         }
     }
@@ -264,9 +273,10 @@ impl Source<'_> {
     fn manifest<C>(
         &self,
         raw: RawManifest<C>,
-        camera: impl FnOnce(&Self, C, u32) -> Result<CameraPath, ManifestError>,
+        camera: impl FnOnce(&Self, C, u32) -> Result<CameraParts, ManifestError>,
     ) -> Result<Manifest, ManifestError> {
         let scene = self.resolve(&raw.scene, "scene")?;
+        let scene_loc = self.loc(raw.scene.span());
         let frames = self.int(&raw.frames, "frames", 1..=i64::from(MAX_FRAMES))? as u32;
         let fps = match &raw.fps {
             Some(v) if !(v.get_ref().is_finite() && *v.get_ref() > 0.0) => {
@@ -279,12 +289,19 @@ impl Source<'_> {
             Some(v) => *v.get_ref(),
             None => DEFAULT_FPS,
         };
+        let (camera, look_at) = match raw.camera {
+            Some(c) => camera(self, c, frames)?,
+            None => (None, None),
+        };
         Ok(Manifest {
             path: self.path.to_path_buf(),
             scene,
+            scene_loc,
             frames,
             fps,
-            camera: camera(self, raw.camera, frames)?,
+            camera,
+            look_at,
+            tracks: self.tracks(raw.track.unwrap_or_default(), frames)?,
             output: self.output(raw.output)?,
             render: self.render(raw.render)?,
             check: raw.check.map(|c| self.check(c, frames)).transpose()?,

@@ -1,21 +1,31 @@
-//! The animation pipeline of SPEC §5: a TOML manifest (`manifest`) names a base Scene.txt
-//! and a keyframed camera path (`path`, `spline`); `pipeline` renders the frames with the
-//! same library as `raytrace`, `select` picks subsets and shards, `record` fingerprints a
-//! frame folder for `--resume`, `video` pipes into ffmpeg, and `diff` and `regress` are
-//! `animate check` and `animate bless`.
+//! The animation pipeline of SPEC §5-§11, one home per idea:
+//!
+//! - `manifest`: the TOML manifest, read and checked, every refusal located;
+//! - `timeline`: values over time — camera paths (circle, spline), tracks, easing, motion
+//!   blur — answering "what is frame t?" with a scene and a camera;
+//! - `project`: a manifest with its scene and timeline, loaded once (`Project::load`), and
+//!   `Animation`, which draws any frame of it;
+//! - producing frames: `pipeline` (folders and streams, reporting `events`), `select`
+//!   (frame lists and shards), `provenance` (what made a frame), `status` (which frames
+//!   are up to date), `video` (ffmpeg);
+//! - checking frames: `diff` and `regress` (`animate check` and `bless`);
+//! - `error`: why a run stopped, and its exit status.
 
 pub mod diff;
 pub mod error;
+pub mod events;
 pub mod manifest;
-pub mod path;
 pub mod pipeline;
-pub mod record;
+pub mod project;
+pub mod provenance;
 pub mod regress;
 pub mod select;
-pub mod spline;
+pub mod status;
+pub mod timeline;
 pub mod video;
 
 pub use error::AnimError;
+pub use events::{Event, Reporter};
 pub use manifest::{Manifest, ManifestError};
-pub use path::CameraPath;
-pub use pipeline::{Animation, Summary};
+pub use project::{Animation, Project, Settings};
+pub use timeline::{CameraPath, Timeline};

@@ -11,7 +11,7 @@
 use super::diff::{compare, heat_map, Comparison, Tolerance};
 use super::error::AnimError;
 use super::manifest::Manifest;
-use super::pipeline::Animation;
+use super::project::Animation;
 use super::select::parse_frames;
 use crate::output::{write_atomic, ImageFormat};
 use crate::render::Frame;

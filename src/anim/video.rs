@@ -7,15 +7,22 @@
 //! ```
 //!
 //! yuv420p plays everywhere but needs even sizes, hence the one-pixel pad for odd ones.
-//! The container and codec follow FILE's extension, as ffmpeg decides.
+//! The container and codec follow FILE's extension, as ffmpeg decides. Before any frame
+//! renders, the target is checked: its folder must exist, and ffmpeg must be able to
+//! write a one-frame file of that kind (a probe in a temporary folder); ffmpeg's own
+//! words are the error. If ffmpeg stops while frames flow, its words are the error too,
+//! not the broken pipe they cause.
 
 use super::error::AnimError;
-use super::pipeline::{render_to_stream, Animation, Summary};
+use super::events::Reporter;
+use super::pipeline::{render_to_stream, Summary};
+use super::project::Animation;
 use crate::output::ImageFormat;
-use indicatif::ProgressBar;
+use std::io::Read;
 use std::path::Path;
 use std::process::{Child, ChildStdin, Command, Stdio};
 use std::sync::atomic::AtomicUsize;
+use std::thread::JoinHandle;
 
 /// Renders `frames` into the video `file` through ffmpeg; on a failure upstream ffmpeg is
 /// stopped and the error returned.
@@ -23,16 +30,18 @@ pub fn render_to_video(
     anim: &Animation,
     frames: &[u32],
     file: &Path,
-    progress: &ProgressBar,
+    reporter: &dyn Reporter,
     stop: &AtomicUsize,
 ) -> Result<Summary, AnimError> {
+    check_target(file)?;
     let fps = anim.manifest.fps;
     let mut ffmpeg = Ffmpeg::start(file, anim.width, anim.height, fps)?;
     let result = ffmpeg
         .input()
-        .and_then(|input| render_to_stream(anim, frames, input, ImageFormat::Raw, progress, stop));
+        .and_then(|input| render_to_stream(anim, frames, input, ImageFormat::Raw, reporter, stop));
     match result {
         Ok(summary) => ffmpeg.finish().map(|()| summary),
+        Err(AnimError::Stream(e)) => Err(ffmpeg.failure(e)),
         Err(e) => {
             ffmpeg.abort();
             Err(e)
@@ -40,15 +49,68 @@ pub fn render_to_video(
     }
 }
 
+/// Refuses a video target whose folder is missing or whose kind ffmpeg cannot write.
+pub fn check_target(file: &Path) -> Result<(), AnimError> {
+    let refuse = |reason: String| AnimError::VideoTarget {
+        path: file.to_path_buf(),
+        reason,
+    };
+    let folder = match file.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    if !folder.is_dir() {
+        return Err(refuse(format!(
+            "the folder {} does not exist",
+            folder.display()
+        )));
+    }
+    if file.is_dir() {
+        return Err(refuse("it is a folder".into()));
+    }
+    let ext = file.extension().and_then(|e| e.to_str()).unwrap_or("");
+    let probe_dir = tempfile::tempdir().map_err(|e| refuse(e.to_string()))?;
+    let probe = probe_dir.path().join(format!("probe.{ext}"));
+    let output = Command::new("ffmpeg")
+        .args(["-nostdin", "-v", "error", "-f", "lavfi", "-i"])
+        .args([
+            "color=c=black:s=16x16:r=1",
+            "-frames:v",
+            "1",
+            "-pix_fmt",
+            "yuv420p",
+        ])
+        .arg(&probe)
+        .stdin(Stdio::null())
+        .stdout(Stdio::null())
+        .output()
+        .map_err(spawn_error)?;
+    if output.status.success() {
+        return Ok(());
+    }
+    let words = String::from_utf8_lossy(&output.stderr);
+    let words = words.replace(&probe.display().to_string(), &file.display().to_string());
+    Err(refuse(format!("ffmpeg cannot write it: {}", words.trim())))
+}
+
+fn spawn_error(e: std::io::Error) -> AnimError {
+    if e.kind() == std::io::ErrorKind::NotFound {
+        AnimError::FfmpegMissing
+    } else {
+        AnimError::Ffmpeg(format!("cannot start ffmpeg: {e}"))
+    }
+}
+
 /// A running ffmpeg that encodes what is written to its standard input.
 pub struct Ffmpeg {
     child: Child,
+    stderr: Option<JoinHandle<String>>,
 }
 
 impl Ffmpeg {
     /// Starts ffmpeg writing `file` from `width`×`height` RGB frames at `fps`.
     pub fn start(file: &Path, width: u32, height: u32, fps: f64) -> Result<Ffmpeg, AnimError> {
-        let child = Command::new("ffmpeg")
+        let mut child = Command::new("ffmpeg")
             .args(["-y", "-nostdin", "-loglevel", "error", "-f", "rawvideo"])
             .args(["-pix_fmt", "rgb24", "-s", &format!("{width}x{height}")])
             .args(["-r", &fps.to_string(), "-i", "-"])
@@ -61,18 +123,17 @@ impl Ffmpeg {
             .arg(file)
             .stdin(Stdio::piped())
             .stdout(Stdio::null())
+            .stderr(Stdio::piped())
             .spawn()
-            .map_err(|e| {
-                let why = if e.kind() == std::io::ErrorKind::NotFound {
-                    "ffmpeg was not found on PATH: install it (apt-get install ffmpeg), \
-                     or pipe --stdout raw into an encoder of your choice"
-                        .to_string()
-                } else {
-                    format!("cannot start ffmpeg: {e}")
-                };
-                AnimError::Ffmpeg(why)
-            })?;
-        Ok(Ffmpeg { child })
+            .map_err(spawn_error)?;
+        let stderr = child.stderr.take().map(|mut pipe| {
+            std::thread::spawn(move || {
+                let mut text = String::new();
+                let _ = pipe.read_to_string(&mut text);
+                text
+            })
+        });
+        Ok(Ffmpeg { child, stderr })
     }
 
     /// The pipe into ffmpeg.
@@ -80,7 +141,17 @@ impl Ffmpeg {
         self.child
             .stdin
             .as_mut()
-            .ok_or_else(|| AnimError::Ffmpeg("ffmpeg's input is closed".into()))
+            .ok_or_else(|| AnimError::Ffmpeg("its input is closed".into()))
+    }
+
+    /// What ffmpeg printed, once it has ended.
+    fn words(&mut self) -> String {
+        self.stderr
+            .take()
+            .and_then(|h| h.join().ok())
+            .unwrap_or_default()
+            .trim()
+            .to_string()
     }
 
     /// Closes the input and waits for ffmpeg to finish the file.
@@ -89,11 +160,24 @@ impl Ffmpeg {
         let status = self
             .child
             .wait()
-            .map_err(|e| AnimError::Ffmpeg(format!("waiting for ffmpeg: {e}")))?;
+            .map_err(|e| AnimError::Ffmpeg(format!("waiting for it: {e}")))?;
+        let words = self.words();
         if status.success() {
             Ok(())
         } else {
-            Err(AnimError::Ffmpeg(format!("ffmpeg failed ({status})")))
+            Err(AnimError::Ffmpeg(format!("{status}: {words}")))
+        }
+    }
+
+    /// The error when writing into ffmpeg failed: ffmpeg's own words if it has ended.
+    fn failure(mut self, e: std::io::Error) -> AnimError {
+        drop(self.child.stdin.take());
+        let _ = self.child.wait();
+        let words = self.words();
+        if words.is_empty() {
+            AnimError::Stream(e)
+        } else {
+            AnimError::Ffmpeg(words)
         }
     }
 

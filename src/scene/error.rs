@@ -2,21 +2,7 @@
 //! (a `FileLoc`, after pbrt-v4) and says what was expected and where in the structure it
 //! was ("sphere 3 of 4, field Radius").
 
-use std::fmt;
-
-/// A position in a scene file: 1-based line and column (in characters).
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct FileLoc {
-    pub file: String,
-    pub line: usize,
-    pub column: usize,
-}
-
-impl fmt::Display for FileLoc {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}:{}:{}", self.file, self.line, self.column)
-    }
-}
+pub use crate::fileloc::FileLoc;
 
 /// Why a scene could not be loaded.
 #[derive(Debug, thiserror::Error)]

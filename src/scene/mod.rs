@@ -18,6 +18,7 @@
 mod error;
 mod lexer;
 mod parser;
+mod spec;
 
 pub use error::{FileLoc, SceneError};
 
@@ -27,15 +28,8 @@ use crate::object::{Light, Object};
 use glam::DVec3;
 use std::path::Path;
 
-/// The largest image side accepted.
-pub const MAX_SIDE: u32 = 16384;
-/// The largest pixel count accepted (2^26: 201 MB of RGB bytes, more in the float pipeline).
-pub const MAX_PIXELS: u64 = 1 << 26;
-/// The brightest light accepted. The report's intensities are 0..1 (IV.2); brighter ones
-/// are allowed, within a bound that keeps every sum of light finite.
-pub const MAX_INTENSITY: f64 = 1000.0;
-/// The largest count of each kind of object or light.
-pub const MAX_COUNT: u64 = 1_000_000;
+pub use crate::limits::{MAX_COUNT, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
+pub use spec::{direction, ShapeSpec};
 
 /// Everything one Scene.txt holds.
 #[derive(Clone, Debug, PartialEq)]
@@ -47,6 +41,9 @@ pub struct Scene {
     pub fog: Fog,
     /// Spheres, then planes, then cylinders, in file order.
     pub objects: Vec<Object>,
+    /// Each object's shape as the file gives it (`objects[i].shape` is `specs[i].build()`):
+    /// what an animation track changes before rebuilding the shape.
+    pub specs: Vec<ShapeSpec>,
     pub lights: Vec<Light>,
 }
 

@@ -4,12 +4,11 @@
 
 use super::error::{FileLoc, SceneError};
 use super::lexer::{Lexer, Token};
-use super::{Scene, MAX_COUNT, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
+use super::{Scene, ShapeSpec, MAX_COUNT, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
 use crate::bump::Bump;
 use crate::camera::Camera;
 use crate::fog::Fog;
 use crate::object::{Light, Material, Object};
-use crate::shapes::{Plane, Quadric, Shape, Sphere};
 use crate::texture::{Color, Texture};
 use glam::DVec3;
 
@@ -164,17 +163,11 @@ impl<'a> Parser<'a> {
     /// A vector that must not be zero (a normal or an axis).
     fn direction(&mut self, fields: [&str; 3], name: &str) -> Result<DVec3> {
         let (v, tok) = self.vector(fields)?;
-        if v.try_normalize().is_some() {
-            return Ok(v);
-        }
-        // |v|² under- or overflows for a tiny or huge v that is not zero: scaled by its
-        // largest component it normalises (0/0 keeps a zero vector refused).
-        let scaled = v / v.abs().max_element();
-        if scaled.try_normalize().is_none() {
+        // A tiny or huge v that is not zero is scaled (see `spec::direction`).
+        super::spec::direction(v).ok_or_else(|| {
             let msg = format!("the {name} ({} {} {}) has zero length", v.x, v.y, v.z);
-            return Err(self.error(&tok, msg, fields[0]));
-        }
-        Ok(scaled)
+            self.error(&tok, msg, fields[0])
+        })
     }
 
     /// A number within `lo..=hi`.
@@ -242,11 +235,12 @@ impl<'a> Parser<'a> {
         })
     }
 
-    fn object(&mut self, shape: Shape) -> Result<Object> {
+    fn object(&mut self, spec: ShapeSpec, specs: &mut Vec<ShapeSpec>) -> Result<Object> {
         let texture = self.texture()?;
         let material = self.material()?;
+        specs.push(spec);
         Ok(Object {
-            shape,
+            shape: spec.build(),
             texture,
             material,
         })
@@ -321,24 +315,30 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
     let (nl, _) = p.integer("NLights", 0, MAX_COUNT, &count)?;
 
     let mut objects = Vec::new();
+    let mut specs = Vec::new();
     for i in 1..=ns {
         p.enter("sphere", Some((i, ns)));
         let radius = p.positive("Radius")?;
         let (center, _) = p.vector(["Cx", "Cy", "Cz"])?;
-        objects.push(p.object(Shape::Sphere(Sphere::new(center, radius)))?);
+        objects.push(p.object(ShapeSpec::Sphere { center, radius }, &mut specs)?);
     }
     for i in 1..=np {
         p.enter("plane", Some((i, np)));
         let (point, _) = p.vector(["Px", "Py", "Pz"])?;
         let normal = p.direction(["Nx", "Ny", "Nz"], "normal")?;
-        objects.push(p.object(Shape::Plane(Plane::new(point, normal)))?);
+        objects.push(p.object(ShapeSpec::Plane { point, normal }, &mut specs)?);
     }
     for i in 1..=nc {
         p.enter("cylinder", Some((i, nc)));
         let axis = p.direction(["Ax", "Ay", "Az"], "axis")?;
         let (point, _) = p.vector(["Px", "Py", "Pz"])?;
         let radius = p.positive("Radius")?;
-        objects.push(p.object(Shape::Quadric(Quadric::cylinder(axis, point, radius)))?);
+        let cylinder = ShapeSpec::Cylinder {
+            axis,
+            point,
+            radius,
+        };
+        objects.push(p.object(cylinder, &mut specs)?);
     }
     let mut lights = Vec::new();
     for i in 1..=nl {
@@ -368,6 +368,7 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
         look_at,
         fog,
         objects,
+        specs,
         lights,
     })
 }

@@ -1,5 +1,6 @@
-//! `[camera]` of the manifest: checks a raw circle or spline table and builds the
-//! `CameraPath`, every refusal located at the offending value. The tables it reads:
+//! `[camera]` of the manifest: checks a raw circle, spline or still table and builds the
+//! camera of the timeline, every refusal located at the offending value. The tables it
+//! reads:
 //!
 //! ```toml
 //! [camera]
@@ -11,21 +12,25 @@
 //! [camera]
 //! path = "spline"            # closed and constant_speed default to false
 //! keys = [ { frame = 0, position = [0.0, 3.0, 12.0], look_at = [0.0, 1.0, 0.0] }, ... ]
+//!
+//! [camera]                   # no path: the scene file's eye holds still
+//! look_at = "sphere 2"       # any camera may follow an object (or look at [x, y, z])
 //! ```
 
-use super::raw::{RawCircle, RawSpline, Vec3};
+use super::raw::{RawCircle, RawSpline, RawStill, Vec3};
+use super::tracks::LookAt;
 use super::{ManifestError, Source};
-use crate::anim::path::CameraPath;
-use crate::anim::spline::{coord_ok, Key, Spline, SplineError, MAX_COORD};
+use crate::anim::timeline::{coord_ok, CameraPath, Key, Spline, SplineError};
+use crate::limits::{MAX_COORD, MAX_TURNS};
 use glam::DVec3;
 use toml::Spanned;
 
-/// The largest number of turns a circle accepts (keeps turns·frame finite).
-pub const MAX_TURNS: f64 = 1e6;
+/// A circle's values: center, radius, height, start_angle, turns.
+pub(super) type CircleValues = (DVec3, f64, f64, f64, f64);
 
 impl Source<'_> {
     /// A point, refused unless finite and within `MAX_COORD`.
-    fn point(&self, v: &Vec3, what: &str) -> Result<DVec3, ManifestError> {
+    pub(super) fn point(&self, v: &Vec3, what: &str) -> Result<DVec3, ManifestError> {
         let p = DVec3::from_array(*v.get_ref());
         if coord_ok(p) {
             return Ok(p);
@@ -45,56 +50,88 @@ impl Source<'_> {
         Err(self.error(v.span(), message))
     }
 
-    pub(super) fn circle(&self, raw: RawCircle) -> Result<CameraPath, ManifestError> {
-        let center = self.point(&raw.center, "center")?;
-        let radius = self.number(&raw.radius, "radius", MAX_COORD)?;
-        if radius <= 0.0 {
-            let message = format!("`radius` must be greater than 0, found {radius}");
-            return Err(self.error(raw.radius.span(), message));
+    /// The checked values of a circle (the camera's or a track's).
+    pub(super) fn circle_values(
+        &self,
+        center: &Vec3,
+        radius: &Spanned<f64>,
+        height: &Spanned<f64>,
+        start_angle: Option<&Spanned<f64>>,
+        turns: Option<&Spanned<f64>>,
+    ) -> Result<CircleValues, ManifestError> {
+        let center = self.point(center, "center")?;
+        let r = self.number(radius, "radius", MAX_COORD)?;
+        if r <= 0.0 {
+            let message = format!("`radius` must be greater than 0, found {r}");
+            return Err(self.error(radius.span(), message));
         }
-        let height = self.number(&raw.height, "height", MAX_COORD)?;
-        let start_angle = match &raw.start_angle {
+        let height = self.number(height, "height", MAX_COORD)?;
+        let start_angle = match start_angle {
             Some(v) => self.number(v, "start_angle", f64::MAX)?,
             None => 0.0,
         };
-        let turns = match &raw.turns {
+        let turns = match turns {
             Some(v) => self.number(v, "turns", MAX_TURNS)?,
             None => 1.0,
         };
-        let look_at = match &raw.look_at {
-            Some(v) => Some(self.point(v, "look_at")?),
-            None => None,
-        };
-        Ok(CameraPath::Circle {
+        Ok((center, r, height, start_angle, turns))
+    }
+
+    /// A fixed look-at point, or the object to follow.
+    fn split_look_at(
+        &self,
+        v: Option<&super::raw::PointOrObject>,
+    ) -> Result<(Option<DVec3>, Option<LookAt>), ManifestError> {
+        match v.map(|v| self.look_at(v)).transpose()? {
+            Some(LookAt::Point(p)) => Ok((Some(p), None)),
+            other => Ok((None, other)),
+        }
+    }
+
+    pub(super) fn circle(
+        &self,
+        raw: RawCircle,
+    ) -> Result<(Option<CameraPath>, Option<LookAt>), ManifestError> {
+        let (center, radius, height, start_angle, turns) = self.circle_values(
+            &raw.center,
+            &raw.radius,
+            &raw.height,
+            raw.start_angle.as_ref(),
+            raw.turns.as_ref(),
+        )?;
+        let (look_at, follow) = self.split_look_at(raw.look_at.as_ref())?;
+        let path = CameraPath::Circle {
             center,
             radius,
             height,
             start_angle,
             turns,
             look_at,
-        })
+        };
+        Ok((Some(path), follow))
+    }
+
+    pub(super) fn still(
+        &self,
+        raw: RawStill,
+    ) -> Result<(Option<CameraPath>, Option<LookAt>), ManifestError> {
+        match self.split_look_at(raw.look_at.as_ref())? {
+            (Some(p), _) => Ok((None, Some(LookAt::Point(p)))),
+            (None, follow) => Ok((None, follow)),
+        }
     }
 
     /// A spline; key frames must lie in `0..frames`.
-    pub(super) fn spline(&self, raw: RawSpline, frames: u32) -> Result<CameraPath, ManifestError> {
-        let look_at = match &raw.look_at {
-            Some(v) => Some(self.point(v, "look_at")?),
-            None => None,
-        };
+    pub(super) fn spline(
+        &self,
+        raw: RawSpline,
+        frames: u32,
+    ) -> Result<(Option<CameraPath>, Option<LookAt>), ManifestError> {
+        let (look_at, follow) = self.split_look_at(raw.look_at.as_ref())?;
         let mut keys = Vec::with_capacity(raw.keys.get_ref().len());
         for key in raw.keys.get_ref() {
             let key = key.get_ref();
-            let frame = *key.frame.get_ref();
-            let frame = match u32::try_from(frame) {
-                Ok(f) if f < frames => f,
-                _ => {
-                    let last = frames.saturating_sub(1);
-                    let message = format!(
-                        "key frame {frame} is outside the sequence: frames run from 0 to {last}"
-                    );
-                    return Err(self.error(key.frame.span(), message));
-                }
-            };
+            let frame = self.key_frame(&key.frame, frames)?;
             let position = self.point(&key.position, "position")?;
             let key_look_at = match &key.look_at {
                 Some(v) => Some(self.point(v, "look_at")?),
@@ -106,10 +143,15 @@ impl Source<'_> {
                 look_at: key_look_at,
             });
         }
+        if follow.is_some() && keys.iter().any(|k| k.look_at.is_some()) {
+            let span = raw.look_at.as_ref().map_or(raw.keys.span(), |v| v.span());
+            let message = SplineError::BothLookAts.to_string();
+            return Err(self.error(span, message));
+        }
         let closed = raw.closed.unwrap_or(false);
         let constant_speed = raw.constant_speed.unwrap_or(false);
         match Spline::new(keys, closed, constant_speed, look_at) {
-            Ok(spline) => Ok(CameraPath::Spline(spline)),
+            Ok(spline) => Ok((Some(CameraPath::Spline(spline)), follow)),
             Err(e) => Err(self.error(spline_error_span(&raw, &e), e.to_string())),
         }
     }

@@ -1,5 +1,4 @@
-//! Where an error is in the manifest text: the 1-based line and column of a byte offset,
-//! and the dotted key path (`camera.keys[1].frame`) of the value at an offset, so that
+//! Where an error is in the manifest text: the dotted key path (`camera.keys[1].frame`) of the value at an offset, so that
 //! serde's messages ("invalid type: string \"big\", expected a number") say which key
 //! they are about. For example, in
 //!
@@ -11,18 +10,6 @@
 
 use toml::de::{DeTable, DeValue};
 use toml::Spanned;
-
-/// 1-based line and column (in characters) of byte `offset` of `text`.
-pub(super) fn line_column(text: &str, offset: usize) -> (usize, usize) {
-    let mut end = offset.min(text.len());
-    while !text.is_char_boundary(end) {
-        end -= 1;
-    }
-    let before = &text[..end];
-    let line = before.matches('\n').count() + 1;
-    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-    (line, column)
-}
 
 /// The key path of the innermost value holding byte `offset` (the table, for an offset
 /// on a key), or `None` at the top level or when the text does not parse.

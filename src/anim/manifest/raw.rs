@@ -2,8 +2,9 @@
 //! the checks in `manifest` and `manifest::camera` can point at the offending value.
 //! Unknown keys are refused (`deny_unknown_fields`), which makes serde name the valid
 //! ones. The `[camera]` table is read twice: `Probe` finds its `path`, then the whole
-//! manifest is read with the table of that path (`RawCircle` or `RawSpline`), so that
-//! keys of the other kind of path are reported as unknown, with the valid keys listed.
+//! manifest is read with the table of that path (`RawCircle`, `RawSpline`, or `RawStill`
+//! without a path), so that keys of another kind of path are reported as unknown, with
+//! the valid keys listed.
 
 use serde::Deserialize;
 use toml::Spanned;
@@ -23,6 +24,9 @@ pub(super) struct CameraProbe {
     pub path: Option<Spanned<String>>,
 }
 
+/// A point `[x, y, z]` or an object `"sphere 2"`: read as a TOML value, told apart later.
+pub(super) type PointOrObject = Spanned<toml::Value>;
+
 /// Second pass: the whole manifest, `C` being the camera table of the probed path.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields, expecting = "a manifest table")]
@@ -30,10 +34,56 @@ pub(super) struct RawManifest<C> {
     pub scene: Spanned<String>,
     pub frames: Spanned<i64>,
     pub fps: Option<Spanned<f64>>,
-    pub camera: C,
+    pub camera: Option<C>,
     pub output: Option<RawOutput>,
     pub render: Option<RawRender>,
     pub check: Option<RawCheck>,
+    pub track: Option<Vec<RawTrack>>,
+}
+
+/// `[camera]` without a path: the scene file's eye holds still.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a [camera] table")]
+pub(super) struct RawStill {
+    pub look_at: Option<PointOrObject>,
+}
+
+/// `[[track]]`: keys, or `path = "circle"` with the circle's keys.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields, expecting = "a [[track]] table")]
+pub(super) struct RawTrack {
+    pub target: Spanned<String>,
+    pub interpolation: Option<Spanned<String>>,
+    pub ease: Option<Spanned<String>>,
+    pub keys: Option<Spanned<Vec<Spanned<RawTrackKey>>>>,
+    pub path: Option<Spanned<String>>,
+    pub center: Option<Vec3>,
+    pub radius: Option<Spanned<f64>>,
+    pub height: Option<Spanned<f64>>,
+    pub start_angle: Option<Spanned<f64>>,
+    pub turns: Option<Spanned<f64>>,
+}
+
+#[derive(Deserialize)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "a key: { frame = 0, value = 1.0 } or { frame = 0, value = [x, y, z] }"
+)]
+pub(super) struct RawTrackKey {
+    pub frame: Spanned<i64>,
+    pub value: Spanned<toml::Value>,
+    pub ease: Option<Spanned<String>>,
+}
+
+/// `motion_blur = { shutter = 0.5, samples = 8 }`.
+#[derive(Deserialize)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "motion_blur = { shutter = 0.5, samples = 8 }"
+)]
+pub(super) struct RawBlur {
+    pub shutter: Option<Spanned<f64>>,
+    pub samples: Option<Spanned<i64>>,
 }
 
 #[derive(Deserialize)]
@@ -46,7 +96,7 @@ pub(super) struct RawCircle {
     pub height: Spanned<f64>,
     pub start_angle: Option<Spanned<f64>>,
     pub turns: Option<Spanned<f64>>,
-    pub look_at: Option<Vec3>,
+    pub look_at: Option<PointOrObject>,
 }
 
 #[derive(Deserialize)]
@@ -56,7 +106,7 @@ pub(super) struct RawSpline {
     pub path: String,
     pub closed: Option<bool>,
     pub constant_speed: Option<bool>,
-    pub look_at: Option<Vec3>,
+    pub look_at: Option<PointOrObject>,
     pub keys: Spanned<Vec<Spanned<RawKey>>>,
 }
 
@@ -76,17 +126,8 @@ pub(super) struct RawKey {
 pub(super) struct RawOutput {
     pub dir: Option<Spanned<String>>,
     pub name: Option<Spanned<String>>,
-    pub format: Option<RawFormat>,
+    pub format: Option<Spanned<String>>,
     pub jpeg_quality: Option<Spanned<i64>>,
-}
-
-#[derive(Clone, Copy, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub(super) enum RawFormat {
-    Png,
-    Jpeg,
-    Ppm,
-    Raw,
 }
 
 #[derive(Deserialize)]
@@ -95,6 +136,7 @@ pub(super) struct RawRender {
     pub width: Option<Spanned<i64>>,
     pub height: Option<Spanned<i64>>,
     pub samples: Option<Spanned<i64>>,
+    pub motion_blur: Option<Spanned<RawBlur>>,
 }
 
 #[derive(Deserialize)]

@@ -20,18 +20,13 @@
 //! hard_fail = 64            # 0..=255; default 64
 //! ```
 
-use super::raw::{RawCheck, RawFormat, RawOutput, RawRender};
-use super::{CheckSpec, FrameFormat, ManifestError, OutputSpec, RenderSpec, Source};
+use super::raw::{RawCheck, RawOutput, RawRender};
+use super::{CheckSpec, ManifestError, OutputSpec, RenderSpec, Source};
+use crate::limits::{MAX_PIXELS, MAX_SAMPLES, MAX_SIDE};
+use crate::output::ImageFormat;
 use std::collections::HashSet;
 use std::path::Path;
 use toml::Spanned;
-
-/// The largest `[render]` width or height.
-pub const MAX_SIDE: u32 = 16384;
-/// The most pixels a frame may have (2^26, 64 Mpixel).
-pub const MAX_PIXELS: u64 = 1 << 26;
-/// The largest `samples` (a 16×16 grid).
-pub const MAX_SAMPLES: u32 = 16;
 
 impl Source<'_> {
     pub(super) fn output(&self, raw: Option<RawOutput>) -> Result<OutputSpec, ManifestError> {
@@ -49,24 +44,31 @@ impl Source<'_> {
             Some(name) => self.file_name_pattern(name)?,
             None => "frame_####".to_string(),
         };
-        let format = match raw.format.unwrap_or(RawFormat::Png) {
-            RawFormat::Png => FrameFormat::Png,
-            RawFormat::Jpeg => FrameFormat::Jpeg,
-            RawFormat::Ppm => FrameFormat::Ppm,
-            RawFormat::Raw => FrameFormat::Raw,
+        let format = match &raw.format {
+            Some(f) => ImageFormat::from_name(f.get_ref()).ok_or_else(|| {
+                let message = format!(
+                    "unknown format `{}`, expected one of {}",
+                    f.get_ref(),
+                    ImageFormat::NAMES.join(", ")
+                );
+                self.error(f.span(), message)
+            })?,
+            None => ImageFormat::Png,
         };
-        let jpeg_quality = match &raw.jpeg_quality {
-            Some(q) => self.int(q, "jpeg_quality", 1..=100)? as u8,
-            None => 90,
+        let format = match (&raw.jpeg_quality, format) {
+            (Some(q), ImageFormat::Jpeg { .. }) => ImageFormat::Jpeg {
+                quality: self.int(q, "jpeg_quality", 1..=100)? as u8,
+            },
+            (Some(q), _) => {
+                self.int(q, "jpeg_quality", 1..=100)?;
+                format
+            }
+            (None, _) => format,
         };
-        Ok(OutputSpec {
-            dir,
-            name,
-            format,
-            jpeg_quality,
-        })
+        Ok(OutputSpec { dir, name, format })
     }
 
+    /// A file name pattern; ffmpeg's `%04d` (or `%d`) is taken for Blender's `####`.
     fn file_name_pattern(&self, name: Spanned<String>) -> Result<String, ManifestError> {
         let text = name.get_ref();
         let bad = |c: char| c == '/' || c == '\\' || c.is_control();
@@ -76,7 +78,10 @@ impl Source<'_> {
             );
             return Err(self.error(name.span(), message));
         }
-        Ok(name.into_inner())
+        match printf_to_hashes(text) {
+            Ok(pattern) => Ok(pattern),
+            Err(message) => Err(self.error(name.span(), message)),
+        }
     }
 
     pub(super) fn render(&self, raw: Option<RawRender>) -> Result<RenderSpec, ManifestError> {
@@ -106,10 +111,16 @@ impl Source<'_> {
             Some(v) => self.int(v, "samples", 1..=i64::from(MAX_SAMPLES))? as u32,
             None => 1,
         };
+        let motion_blur = raw
+            .motion_blur
+            .as_ref()
+            .map(|b| self.motion_blur(b))
+            .transpose()?;
         Ok(RenderSpec {
             width,
             height,
             samples,
+            motion_blur,
         })
     }
 
@@ -155,6 +166,33 @@ impl Source<'_> {
     }
 }
 
+/// `name` with a printf-style `%0Nd` (or `%d`) turned into N (or 4) `#`, as ffmpeg users
+/// write frame names; any other `%` conversion is refused.
+fn printf_to_hashes(name: &str) -> Result<String, String> {
+    let Some(start) = name.find('%') else {
+        return Ok(name.to_string());
+    };
+    let rest = &name[start + 1..];
+    let digits: String = rest.chars().take_while(|c| c.is_ascii_digit()).collect();
+    let after = &rest[digits.len()..];
+    let Some(tail) = after.strip_prefix('d') else {
+        return Err(format!(
+            "`name` {name:?}: the only printf conversion understood is %0Nd (the frame number); or write #### for it"
+        ));
+    };
+    if name[..start].contains('#') || tail.contains(['%', '#']) {
+        return Err(format!(
+            "`name` {name:?} gives the frame number twice: use one %0Nd or one run of #"
+        ));
+    }
+    let width = digits
+        .trim_start_matches('0')
+        .parse::<usize>()
+        .unwrap_or(4)
+        .clamp(1, 32);
+    Ok(format!("{}{}{tail}", &name[..start], "#".repeat(width)))
+}
+
 /// `<manifest name without .toml>-frames`, beside the manifest.
 fn default_dir(manifest: &Path) -> std::path::PathBuf {
     let name = manifest
@@ -164,4 +202,20 @@ fn default_dir(manifest: &Path) -> std::path::PathBuf {
     let stem = name.strip_suffix(".toml").unwrap_or(&name);
     let folder = manifest.parent().unwrap_or(Path::new(""));
     folder.join(format!("{stem}-frames"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::printf_to_hashes;
+
+    #[test]
+    fn printf_patterns_become_hashes() {
+        assert_eq!(printf_to_hashes("img_%04d").unwrap(), "img_####");
+        assert_eq!(printf_to_hashes("%d-shot").unwrap(), "####-shot");
+        assert_eq!(printf_to_hashes("f%6d").unwrap(), "f######");
+        assert_eq!(printf_to_hashes("frame_####").unwrap(), "frame_####");
+        assert!(printf_to_hashes("img_%s").is_err());
+        assert!(printf_to_hashes("a%04d_%04d").is_err());
+        assert!(printf_to_hashes("##_%04d").is_err());
+    }
 }

@@ -1,7 +1,7 @@
 //! Unit tests of the manifest: the SPEC's examples, defaults, paths and file names.
 
 use super::*;
-use crate::anim::spline::Key;
+use crate::anim::timeline::{CameraPath, Key};
 use glam::DVec3;
 
 /// SPEC §5's first example, verbatim.
@@ -91,18 +91,18 @@ fn the_spec_orbit_parses_with_its_values() {
         turns: 1.0,
         look_at: None,
     };
-    assert_eq!(m.camera, circle);
+    assert_eq!(m.camera, Some(circle));
     let output = OutputSpec {
         dir: PathBuf::from("/work/anims/../out/orbit"),
         name: "frame_####".into(),
-        format: FrameFormat::Png,
-        jpeg_quality: 90,
+        format: ImageFormat::Png,
     };
     assert_eq!(m.output, output);
     let render = RenderSpec {
         width: None,
         height: None,
         samples: 1,
+        motion_blur: None,
     };
     assert_eq!(m.render, render);
     let check = CheckSpec {
@@ -130,7 +130,7 @@ fn the_spec_spline_parses_with_defaults() {
         key(120, [10.0, 6.0, 0.0]),
         key(249, [0.0, 2.0, -12.0]),
     ];
-    let CameraPath::Spline(spline) = &m.camera else {
+    let Some(CameraPath::Spline(spline)) = &m.camera else {
         panic!("not a spline: {:?}", m.camera);
     };
     assert_eq!(spline.keys, keys);
@@ -138,10 +138,7 @@ fn the_spec_spline_parses_with_defaults() {
     assert_eq!(spline.look_at, Some(DVec3::new(0.0, 1.0, 0.0)));
     assert_eq!(m.output.dir, Path::new("anims/tour-frames"));
     assert_eq!(m.output.name, "frame_####");
-    assert_eq!(
-        (m.output.format, m.output.jpeg_quality),
-        (FrameFormat::Png, 90)
-    );
+    assert_eq!(m.output.format, ImageFormat::Png);
     assert_eq!(
         m.render,
         RenderSpec {
@@ -175,7 +172,7 @@ fn per_key_look_at_points_are_read() {
         .replace("look_at = [0.0, 1.0, 0.0]", "")
         .replace("position = [", "look_at = [1, 2, 3], position = [");
     let m = parse(&src).unwrap();
-    let (_, look) = m.camera.at(120, 250, DVec3::ZERO);
+    let (_, look) = m.camera.unwrap().at(120.0, 250, DVec3::ZERO);
     assert_eq!(look, DVec3::new(1.0, 2.0, 3.0));
 }
 
@@ -185,33 +182,32 @@ fn file_names_are_padded_so_that_they_sort() {
         dir: PathBuf::new(),
         name: name.into(),
         format,
-        jpeg_quality: 90,
     };
-    let png = spec("frame_####", FrameFormat::Png);
+    let png = spec("frame_####", ImageFormat::Png);
     assert_eq!(png.file_name(7, 250), "frame_0007.png");
     assert_eq!(png.file_name(7, 100_000), "frame_00007.png");
     assert_eq!(png.file_name(99_999, 100_000), "frame_99999.png");
     assert_eq!(png.file_name(9, 10_000), "frame_0009.png");
     assert_eq!(png.file_name(9, 10_001), "frame_00009.png");
     assert_eq!(
-        spec("a#b##", FrameFormat::Ppm).file_name(7, 10),
+        spec("a#b##", ImageFormat::Ppm).file_name(7, 10),
         "a7b##.ppm"
     );
     assert_eq!(
-        spec("shot##_v2", FrameFormat::Raw).file_name(3, 10),
+        spec("shot##_v2", ImageFormat::Raw).file_name(3, 10),
         "shot03_v2.raw"
     );
-    assert_eq!(spec("#", FrameFormat::Png).file_name(42, 1000), "042.png");
+    assert_eq!(spec("#", ImageFormat::Png).file_name(42, 1000), "042.png");
     assert_eq!(
-        spec("walk", FrameFormat::Jpeg).file_name(7, 10),
+        spec("walk", ImageFormat::Jpeg { quality: 90 }).file_name(7, 10),
         "walk_0007.jpg"
     );
     assert_eq!(
-        spec("walk", FrameFormat::Jpeg).file_name(7, 123_456),
+        spec("walk", ImageFormat::Jpeg { quality: 90 }).file_name(7, 123_456),
         "walk_000007.jpg"
     );
     assert_eq!(
-        spec("walk", FrameFormat::Png).file_name(0, 0),
+        spec("walk", ImageFormat::Png).file_name(0, 0),
         "walk_0000.png"
     );
 }

@@ -41,7 +41,7 @@ pub enum CameraPath {
 impl CameraPath {
     /// Eye and look-at point of frame `frame` of a `frames`-frame sequence;
     /// `scene_look_at` is the scene file's point, used when the path gives none.
-    pub fn at(&self, frame: u32, frames: u32, scene_look_at: DVec3) -> (DVec3, DVec3) {
+    pub fn at(&self, frame: f64, frames: u32, scene_look_at: DVec3) -> (DVec3, DVec3) {
         match self {
             CameraPath::Circle {
                 center,
@@ -52,10 +52,7 @@ impl CameraPath {
                 look_at,
             } => {
                 let n = f64::from(frames.max(1));
-                let fraction = (turns * f64::from(frame) / n).rem_euclid(1.0);
-                let theta = (start_angle + 360.0 * fraction).to_radians();
-                let (sin, cos) = theta.sin_cos();
-                let eye = DVec3::new(center.x + radius * sin, *height, center.z + radius * cos);
+                let eye = circle_point(*center, *radius, *height, *start_angle, *turns, frame, n);
                 (eye, look_at.unwrap_or(*center))
             }
             CameraPath::Spline(spline) => spline.at(frame, frames, scene_look_at),
@@ -69,6 +66,24 @@ impl CameraPath {
             CameraPath::Spline(_) => "spline",
         }
     }
+}
+
+/// The circle's point at time `frame` of an `n`-frame sequence: θ = start_angle +
+/// 360°·(turns·frame/n mod 1), (center.x + radius·sin θ, height, center.z + radius·cos θ).
+/// Shared by the camera and by position tracks that follow a circle.
+pub fn circle_point(
+    center: DVec3,
+    radius: f64,
+    height: f64,
+    start_angle: f64,
+    turns: f64,
+    frame: f64,
+    n: f64,
+) -> DVec3 {
+    let fraction = (turns * frame / n).rem_euclid(1.0);
+    let theta = (start_angle + 360.0 * fraction).to_radians();
+    let (sin, cos) = theta.sin_cos();
+    DVec3::new(center.x + radius * sin, height, center.z + radius * cos)
 }
 
 #[cfg(test)]
@@ -92,27 +107,27 @@ mod tests {
 
     #[test]
     fn frame_zero_is_on_the_plus_z_side_looking_at_the_center() {
-        let (eye, look) = orbit(0.0, 1.0, None).at(0, 100, DVec3::ZERO);
+        let (eye, look) = orbit(0.0, 1.0, None).at(0.0, 100, DVec3::ZERO);
         assert_close(eye, DVec3::new(2.0, 3.0, 9.0));
         assert_eq!(look, DVec3::new(2.0, 1.0, -3.0));
     }
 
     #[test]
     fn a_quarter_turn_moves_to_plus_x_and_negative_turns_to_minus_x() {
-        let (eye, _) = orbit(0.0, 1.0, None).at(25, 100, DVec3::ZERO);
+        let (eye, _) = orbit(0.0, 1.0, None).at(25.0, 100, DVec3::ZERO);
         assert_close(eye, DVec3::new(14.0, 3.0, -3.0));
-        let (eye, _) = orbit(0.0, -1.0, None).at(25, 100, DVec3::ZERO);
+        let (eye, _) = orbit(0.0, -1.0, None).at(25.0, 100, DVec3::ZERO);
         assert_close(eye, DVec3::new(-10.0, 3.0, -3.0));
         // Half a turn in 100 frames: frame 50 is a quarter.
-        let (eye, _) = orbit(0.0, 0.5, None).at(50, 100, DVec3::ZERO);
+        let (eye, _) = orbit(0.0, 0.5, None).at(50.0, 100, DVec3::ZERO);
         assert_close(eye, DVec3::new(14.0, 3.0, -3.0));
     }
 
     #[test]
     fn start_angle_is_in_degrees() {
-        let (eye, _) = orbit(180.0, 1.0, None).at(0, 100, DVec3::ZERO);
+        let (eye, _) = orbit(180.0, 1.0, None).at(0.0, 100, DVec3::ZERO);
         assert_close(eye, DVec3::new(2.0, 3.0, -15.0));
-        let (eye, _) = orbit(-90.0, 2.0, None).at(25, 100, DVec3::ZERO);
+        let (eye, _) = orbit(-90.0, 2.0, None).at(25.0, 100, DVec3::ZERO);
         assert_close(eye, DVec3::new(14.0, 3.0, -3.0));
     }
 
@@ -120,10 +135,10 @@ mod tests {
     fn frame_n_is_frame_zero() {
         for turns in [1.0, -1.0, 3.0] {
             let path = orbit(37.0, turns, None);
-            let (first, _) = path.at(0, 250, DVec3::ZERO);
-            let (wrapped, _) = path.at(250, 250, DVec3::ZERO);
+            let (first, _) = path.at(0.0, 250, DVec3::ZERO);
+            let (wrapped, _) = path.at(250.0, 250, DVec3::ZERO);
             assert_close(first, wrapped);
-            let (last, _) = path.at(249, 250, DVec3::ZERO);
+            let (last, _) = path.at(249.0, 250, DVec3::ZERO);
             assert!(last.distance(first) > 0.1);
         }
     }
@@ -131,7 +146,7 @@ mod tests {
     #[test]
     fn an_explicit_look_at_wins() {
         let p = DVec3::new(0.0, 0.0, 5.0);
-        assert_eq!(orbit(0.0, 1.0, Some(p)).at(7, 100, DVec3::ONE).1, p);
+        assert_eq!(orbit(0.0, 1.0, Some(p)).at(7.0, 100, DVec3::ONE).1, p);
     }
 
     #[test]
@@ -150,7 +165,7 @@ mod tests {
             },
         ];
         let path = CameraPath::Spline(Spline::new(keys, false, false, None).unwrap());
-        assert_eq!(path.at(4, 5, DVec3::ONE), (DVec3::X, DVec3::ONE));
+        assert_eq!(path.at(4.0, 5, DVec3::ONE), (DVec3::X, DVec3::ONE));
         assert_eq!(path.name(), "spline");
     }
 }

@@ -24,7 +24,7 @@ fn close(a: DVec3, b: DVec3) -> bool {
 }
 
 fn eye(s: &Spline, frame: u32, frames: u32) -> DVec3 {
-    s.at(frame, frames, DVec3::ZERO).0
+    s.at(f64::from(frame), frames, DVec3::ZERO).0
 }
 
 #[test]
@@ -206,8 +206,8 @@ fn per_key_look_at_points_follow_their_own_centripetal_curve() {
     ];
     let s = Spline::new(keys, false, false, None).unwrap();
     let scene = DVec3::splat(99.0);
-    assert_eq!(s.at(8, 13, scene).1, DVec3::new(1.0, 4.0, 0.0));
-    assert!(close(s.at(5, 13, scene).1, DVec3::new(1.125, 0.75, 0.0)));
+    assert_eq!(s.at(8.0, 13, scene).1, DVec3::new(1.0, 4.0, 0.0));
+    assert!(close(s.at(5.0, 13, scene).1, DVec3::new(1.125, 0.75, 0.0)));
 }
 
 #[test]
@@ -216,9 +216,9 @@ fn fixed_or_scene_look_at() {
     let scene = DVec3::new(0.0, 1.0, 0.0);
     let fixed = DVec3::new(5.0, 5.0, 5.0);
     let s = Spline::new(keys.clone(), false, false, Some(fixed)).unwrap();
-    assert_eq!(s.at(4, 10, scene).1, fixed);
+    assert_eq!(s.at(4.0, 10, scene).1, fixed);
     let s = Spline::new(keys, false, false, None).unwrap();
-    assert_eq!(s.at(4, 10, scene).1, scene);
+    assert_eq!(s.at(4.0, 10, scene).1, scene);
 }
 
 #[test]

@@ -32,11 +32,8 @@
 //! segment parameter as the position, so they too are exact wherever the camera is at a
 //! key.
 
+use crate::limits::MAX_COORD;
 use glam::DVec3;
-
-/// The largest coordinate magnitude a key, look-at point or circle accepts; keeps every
-/// distance and knot finite.
-pub const MAX_COORD: f64 = 1e9;
 
 /// Arc-length samples per segment: `ARC_STEPS_TOTAL` / segments, clamped to this range.
 const ARC_STEPS_MAX: usize = 1024;
@@ -144,9 +141,10 @@ impl Spline {
         Ok(spline)
     }
 
-    /// Eye and look-at point of frame `frame` of a `frames`-frame sequence; without any
-    /// look_at in the spline the camera looks at `scene_look_at`.
-    pub fn at(&self, frame: u32, frames: u32, scene_look_at: DVec3) -> (DVec3, DVec3) {
+    /// Eye and look-at point at time `frame` (in frames, possibly fractional) of a
+    /// `frames`-frame sequence; without any look_at in the spline the camera looks at
+    /// `scene_look_at`.
+    pub fn at(&self, frame: f64, frames: u32, scene_look_at: DVec3) -> (DVec3, DVec3) {
         let Some(first) = self.keys.first() else {
             return (DVec3::ZERO, scene_look_at);
         };
@@ -154,7 +152,7 @@ impl Spline {
             let look = first.look_at.or(self.look_at).unwrap_or(scene_look_at);
             return (first.position, look);
         }
-        let (segment, u) = self.locate(f64::from(frame), frames);
+        let (segment, u) = self.locate(frame, frames);
         let eye = curve_point(&self.keys, |k| k.position, self.closed, segment, u);
         let look = if first.look_at.is_some() {
             let look_of = |k: &Key| k.look_at.unwrap_or(k.position);
@@ -260,10 +258,11 @@ impl Spline {
     }
 }
 
-/// The point at parameter `u` of segment `segment` of the curve through `point(key)`.
-fn curve_point(
-    keys: &[Key],
-    point: impl Fn(&Key) -> DVec3,
+/// The point at parameter `u` of segment `segment` of the curve through `point(key)`
+/// (camera keys here; track keys in `track`, numbers as `(x, 0, 0)`).
+pub(super) fn curve_point<K>(
+    keys: &[K],
+    point: impl Fn(&K) -> DVec3,
     closed: bool,
     segment: usize,
     u: f64,

@@ -1,0 +1,43 @@
+//! What the pipeline reports while it works, as events (after cargo-nextest's reporter):
+//! a run starts, each frame finishes, is skipped as up to date, or fails. The pipeline
+//! calls a `Reporter`; drawing a progress bar, printing a summary or JSON lines for a
+//! scheduler is the reporter's business (the binaries own those), so the library never
+//! draws anything.
+
+use crate::trace::RayCount;
+
+/// One thing that happened during a run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Event {
+    /// The run has `total` frames, of which `skipped` are already up to date.
+    Started { total: usize, skipped: usize },
+    /// Frame `frame` was rendered and delivered (written, or sent to the stream) after
+    /// `seconds` of work on its worker, casting `rays`.
+    Finished {
+        frame: u32,
+        seconds: f64,
+        rays: RayCount,
+    },
+    /// Frame `frame` is up to date and was left as it is.
+    Skipped { frame: u32 },
+    /// Frame `frame` could not be rendered or written; the run stops after it.
+    Failed { frame: u32 },
+}
+
+/// Receives the events of a run, from any worker thread.
+pub trait Reporter: Sync {
+    fn event(&self, event: Event);
+}
+
+/// A reporter that ignores everything.
+pub struct Silent;
+
+impl Reporter for Silent {
+    fn event(&self, _: Event) {}
+}
+
+impl<F: Fn(Event) + Sync> Reporter for F {
+    fn event(&self, event: Event) {
+        self(event)
+    }
+}

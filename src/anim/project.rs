@@ -1,0 +1,194 @@
+//! One loader for everything a manifest names (`Project`: the manifest, its scene and the
+//! timeline built from both), and `Animation`, which draws any frame of a project: the
+//! tracer run on the scene of frame t with the camera of frame t, or, with motion blur,
+//! the mean of the sub-frames at the frame's sample times.
+//!
+//! A timeline whose tracks leave geometry alone (colours, lights, fog, coefficients other
+//! than Kt) shares one acceleration structure, built once, across all frames; otherwise
+//! each sample builds its own from its scene.
+
+use super::error::AnimError;
+use super::manifest::Manifest;
+use super::timeline::{MotionBlur, Snapshot, Timeline};
+use crate::accel::Accel;
+use crate::camera::Camera;
+use crate::limits::size_ok;
+use crate::output::ImageFormat;
+use crate::render::{render, render_add, Frame};
+use crate::scene::{Scene, SceneError};
+use crate::texture::Color;
+use crate::trace::{RayCount, Tracer};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+/// Bumped whenever an intended change of the library moves pixels: frames recorded under
+/// another version are stale (SPEC §8).
+pub const PIXEL_VERSION: u32 = 1;
+
+/// A manifest with its scene and timeline.
+pub struct Project {
+    pub manifest: Manifest,
+    pub timeline: Timeline,
+}
+
+impl Project {
+    /// Loads a manifest, the scene it names and their timeline. A scene file that cannot
+    /// be read is reported at the manifest's `scene =` line.
+    pub fn load(path: &Path) -> Result<Project, AnimError> {
+        let manifest = Manifest::load(path)?;
+        let scene = Scene::load(&manifest.scene).map_err(|e| match e {
+            SceneError::Io { path, source } => AnimError::SceneFile {
+                loc: manifest.scene_loc.clone(),
+                path,
+                source,
+            },
+            other => AnimError::Scene(other),
+        })?;
+        let timeline = Timeline::new(scene, &manifest)?;
+        Ok(Project { manifest, timeline })
+    }
+}
+
+/// Everything besides the scene and camera that decides a frame's bytes.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Settings {
+    pub width: u32,
+    pub height: u32,
+    pub samples: u32,
+    pub motion_blur: Option<MotionBlur>,
+    pub format: ImageFormat,
+    pub pixel_version: u32,
+}
+
+/// A project ready to draw any of its frames at a size.
+pub struct Animation<'p> {
+    pub manifest: &'p Manifest,
+    pub timeline: &'p Timeline,
+    pub width: u32,
+    pub height: u32,
+    pub samples: u32,
+    /// The acceleration structure every frame shares, when no track moves geometry.
+    shared: Option<Arc<Accel>>,
+}
+
+impl<'p> Animation<'p> {
+    /// The project at the manifest's size (`[render]` overrides, else the scene's).
+    pub fn new(project: &'p Project) -> Result<Animation<'p>, AnimError> {
+        let m = &project.manifest;
+        let scene = &project.timeline.base;
+        let width = m.render.width.unwrap_or(scene.width);
+        let height = m.render.height.unwrap_or(scene.height);
+        Animation::with_size(project, width, height)
+    }
+
+    /// The project at `width`×`height` (a preview's smaller size, say).
+    pub fn with_size(
+        project: &'p Project,
+        width: u32,
+        height: u32,
+    ) -> Result<Animation<'p>, AnimError> {
+        if !size_ok(u64::from(width), u64::from(height)) {
+            return Err(AnimError::Size {
+                manifest: project.manifest.path.clone(),
+                width,
+                height,
+            });
+        }
+        let timeline = &project.timeline;
+        let shared =
+            (!timeline.moves_geometry()).then(|| Arc::new(Accel::new(&timeline.base.objects)));
+        Ok(Animation {
+            manifest: &project.manifest,
+            timeline,
+            width,
+            height,
+            samples: project.manifest.render.samples.max(1),
+            shared,
+        })
+    }
+
+    /// The camera of a frame state, `None` when the eye is on the point it looks at.
+    fn camera(&self, state: &Snapshot) -> Option<Camera> {
+        Camera::new(state.eye, state.look_at, self.width, self.height)
+    }
+
+    /// Refuses, before anything renders, a frame whose camera (at any of its sample
+    /// times) sits on the point it looks at.
+    pub fn check_cameras(&self, frames: &[u32]) -> Result<(), AnimError> {
+        for &frame in frames {
+            for t in self.timeline.times(frame) {
+                if self.camera(&self.timeline.at(t)).is_none() {
+                    return Err(AnimError::Camera { frame });
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn tracer<'s>(&self, scene: &'s Scene) -> Tracer<'s> {
+        match &self.shared {
+            Some(accel) => Tracer::with_accel(scene, Arc::clone(accel)),
+            None => Tracer::new(scene),
+        }
+    }
+
+    /// Draws frame `frame`: exactly what `raytrace` draws of the scene of that frame with
+    /// its camera; with motion blur the mean of its sub-frames (each sample clamped, all
+    /// averaged, then rounded).
+    pub fn render(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
+        let (w, h, n) = (self.width, self.height, self.samples);
+        let times = self.timeline.times(frame);
+        if let [t] = times[..] {
+            let state = self.timeline.at(t);
+            let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
+            return Ok(render(&self.tracer(&state.scene), &camera, w, h, n));
+        }
+        let mut sum = vec![Color::ZERO; w as usize * h as usize];
+        let mut rays = RayCount::default();
+        for &t in &times {
+            let state = self.timeline.at(t);
+            let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
+            rays = rays + render_add(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
+        }
+        Ok((Frame::from_sum(&sum, times.len() as u32, w, h), rays))
+    }
+
+    /// The image format of the frame files.
+    pub fn format(&self) -> ImageFormat {
+        self.manifest.output.format
+    }
+
+    /// Every setting besides scene and camera that decides the frames' bytes.
+    pub fn settings(&self) -> Settings {
+        Settings {
+            width: self.width,
+            height: self.height,
+            samples: self.samples,
+            motion_blur: self.timeline.blur,
+            format: self.format(),
+            pixel_version: PIXEL_VERSION,
+        }
+    }
+
+    /// How many frames may be in flight at once: `per_thread` per worker thread, but no
+    /// more than fit in `FRAME_MEMORY` (at least one), whatever `--threads` says.
+    pub fn window(&self, per_thread: usize) -> usize {
+        let frame_bytes = (self.width as usize * self.height as usize * 3).max(1);
+        // Motion blur adds a float accumulator of 24 bytes a pixel per frame in flight.
+        let blur = if self.timeline.blur.is_some() { 9 } else { 1 };
+        let fit = (FRAME_MEMORY / (2 * blur * frame_bytes)).max(1);
+        (per_thread * rayon::current_num_threads().max(1)).min(fit)
+    }
+
+    /// The final path of frame `frame` inside `dir`.
+    pub fn frame_path(&self, dir: &Path, frame: u32) -> PathBuf {
+        dir.join(self.manifest.output.file_name(frame, self.manifest.frames))
+    }
+}
+
+/// The memory frames in flight may take (pixels and their encoded copy): 1 GiB.
+pub const FRAME_MEMORY: usize = 1 << 30;
+
+#[cfg(test)]
+mod tests;

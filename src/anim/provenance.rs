@@ -1,0 +1,220 @@
+//! What produced a frame (SPEC §8): a digest of everything that decides its pixels, and
+//! readable facts in the style of Blender's stamp, carried by the frame file itself —
+//! PNG `tEXt` chunks, a JPEG comment, PPM header comments — or, for RAW (no header), by a
+//! small file per frame in the folder's hidden `.whitted-record/`.
+//!
+//! The digest is SHA-256 over the pixel version, the settings (`Settings`, serialized as
+//! JSON), and for each time the frame samples the scene's values after tracks (not the
+//! file's bytes: comments and layout count for nothing), the eye and the look-at point,
+//! every number by its exact bits. Frames carry no render time, so that the same inputs
+//! give the same bytes on every run.
+
+use super::project::Animation;
+use crate::bump::Bump;
+use crate::fog::Fog;
+use crate::output::ImageFormat;
+use crate::scene::{Scene, ShapeSpec};
+use crate::texture::Texture;
+use glam::DVec3;
+use sha2::{Digest, Sha256};
+use std::io::Read;
+use std::path::{Path, PathBuf};
+
+/// The keyword of the digest in every format.
+pub const DIGEST_KEY: &str = "whitted:digest";
+/// The hidden folder holding RAW frames' records.
+pub const RAW_RECORDS: &str = ".whitted-record";
+
+/// Appends the exact bits of every value of `scene` that reaches a pixel.
+fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
+    let mut f = |x: f64| out.extend_from_slice(&x.to_bits().to_le_bytes());
+    let v = |p: DVec3, f: &mut dyn FnMut(f64)| {
+        f(p.x);
+        f(p.y);
+        f(p.z);
+    };
+    f(f64::from(scene.width));
+    f(f64::from(scene.height));
+    let (fog_kind, fog_d) = match scene.fog {
+        Fog::None => (0.0, 0.0),
+        Fog::Linear(d) => (1.0, d),
+        Fog::Exponential(d) => (2.0, d),
+        Fog::ExponentialSquared(d) => (3.0, d),
+    };
+    f(fog_kind);
+    f(fog_d);
+    for (obj, spec) in scene.objects.iter().zip(&scene.specs) {
+        match *spec {
+            ShapeSpec::Sphere { center, radius } => {
+                f(1.0);
+                v(center, &mut f);
+                f(radius);
+            }
+            ShapeSpec::Plane { point, normal } => {
+                f(2.0);
+                v(point, &mut f);
+                v(normal, &mut f);
+            }
+            ShapeSpec::Cylinder {
+                axis,
+                point,
+                radius,
+            } => {
+                f(3.0);
+                v(axis, &mut f);
+                v(point, &mut f);
+                f(radius);
+            }
+        }
+        let (kind, colors): (f64, Vec<DVec3>) = match obj.texture {
+            Texture::Uniform(c) => (1.0, vec![c]),
+            Texture::Checker(a, b) => (2.0, vec![a, b]),
+            Texture::Perlin(a, b, c) => (3.0, vec![a, b, c]),
+            Texture::Wood(a, b) => (4.0, vec![a, b]),
+            Texture::Marble(a, b) => (5.0, vec![a, b]),
+        };
+        f(kind);
+        for c in colors {
+            v(c, &mut f);
+        }
+        let m = &obj.material;
+        for x in [m.kd, m.kr, m.kt, m.ior] {
+            f(x);
+        }
+        let (bump_kind, eps) = match m.bump {
+            Bump::None => (0.0, 0.0),
+            Bump::Uniform(e) => (1.0, e),
+            Bump::Water(e) => (2.0, e),
+        };
+        f(bump_kind);
+        f(eps);
+    }
+    for light in &scene.lights {
+        f(4.0);
+        v(light.position, &mut f);
+        v(light.color, &mut f);
+        f(light.intensity);
+    }
+}
+
+/// The digest of frame `frame` of `anim`, lower-case hex.
+pub fn digest(anim: &Animation, frame: u32) -> String {
+    let mut bytes = b"whitted frame\0".to_vec();
+    bytes.extend(serde_json::to_vec(&anim.settings()).unwrap_or_default());
+    for t in anim.timeline.times(frame) {
+        let state = anim.timeline.at(t);
+        scene_bytes(&state.scene, &mut bytes);
+        for p in [state.eye, state.look_at] {
+            for x in p.to_array() {
+                bytes.extend_from_slice(&x.to_bits().to_le_bytes());
+            }
+        }
+    }
+    hex(&Sha256::digest(&bytes))
+}
+
+fn hex(bytes: &[u8]) -> String {
+    bytes.iter().map(|b| format!("{b:02x}")).collect()
+}
+
+/// The metadata frame `frame` carries: the digest first, then the stamp.
+pub fn stamp(anim: &Animation, frame: u32, digest: String) -> Vec<(String, String)> {
+    let state = anim.timeline.at(f64::from(frame));
+    let p = |v: DVec3| format!("({}, {}, {})", v.x, v.y, v.z);
+    let s = anim.settings();
+    let blur = match s.motion_blur {
+        Some(b) => format!(", motion blur {} frame(s) x {}", b.shutter, b.samples),
+        None => String::new(),
+    };
+    vec![
+        (DIGEST_KEY.into(), digest),
+        (
+            "Software".into(),
+            format!("whitted {}", env!("CARGO_PKG_VERSION")),
+        ),
+        (
+            "whitted:frame".into(),
+            format!("{frame} of {}", anim.manifest.frames),
+        ),
+        (
+            "whitted:manifest".into(),
+            anim.manifest.path.display().to_string(),
+        ),
+        (
+            "whitted:scene".into(),
+            anim.manifest.scene.display().to_string(),
+        ),
+        (
+            "whitted:camera".into(),
+            format!("eye {} look-at {}", p(state.eye), p(state.look_at)),
+        ),
+        (
+            "whitted:render".into(),
+            format!(
+                "{}x{}, {}x{} sample(s) per pixel{blur}",
+                s.width, s.height, s.samples, s.samples
+            ),
+        ),
+    ]
+}
+
+/// Where a RAW frame's record lives.
+pub fn raw_record_path(frame_path: &Path) -> PathBuf {
+    let dir = frame_path.parent().unwrap_or(Path::new(""));
+    let name = frame_path.file_name().unwrap_or_default().to_string_lossy();
+    dir.join(RAW_RECORDS).join(format!("{name}.txt"))
+}
+
+/// The digest a frame file records, if it can be read: `None` for a missing, truncated
+/// or foreign file (which is then stale, never an error).
+pub fn recorded_digest(frame_path: &Path, format: ImageFormat) -> Option<String> {
+    let head = |n: u64| -> Option<Vec<u8>> {
+        let mut bytes = Vec::new();
+        std::fs::File::open(frame_path)
+            .ok()?
+            .take(n)
+            .read_to_end(&mut bytes)
+            .ok()?;
+        Some(bytes)
+    };
+    let in_lines = |text: &str, prefix: &str| {
+        text.lines()
+            .find_map(|l| l.strip_prefix(prefix).map(|d| d.trim().to_string()))
+    };
+    match format {
+        ImageFormat::Png => {
+            let file = std::fs::File::open(frame_path).ok()?;
+            let decoder = png::Decoder::new(std::io::BufReader::new(file));
+            let reader = decoder.read_info().ok()?;
+            let info = reader.info();
+            let chunk = info
+                .uncompressed_latin1_text
+                .iter()
+                .find(|c| c.keyword == DIGEST_KEY)?;
+            Some(chunk.text.clone())
+        }
+        ImageFormat::Jpeg { .. } => {
+            let bytes = head(70_000)?;
+            if bytes.len() < 6 || bytes[..4] != [0xFF, 0xD8, 0xFF, 0xFE] {
+                return None;
+            }
+            let len = usize::from(u16::from_be_bytes([bytes[4], bytes[5]]));
+            let text = bytes.get(6..4 + len)?;
+            in_lines(&String::from_utf8_lossy(text), &format!("{DIGEST_KEY}: "))
+        }
+        ImageFormat::Ppm => {
+            let bytes = head(4096)?;
+            in_lines(
+                &String::from_utf8_lossy(&bytes),
+                &format!("# {DIGEST_KEY}: "),
+            )
+        }
+        ImageFormat::Raw => {
+            let text = std::fs::read_to_string(raw_record_path(frame_path)).ok()?;
+            in_lines(&text, &format!("{DIGEST_KEY}: "))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

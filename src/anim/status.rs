@@ -1,0 +1,103 @@
+//! `animate status` (SPEC §8): which frames of a folder are up to date, stale or missing,
+//! read from the frames' recorded provenance, never from their pixels. A frame is up to
+//! date when its file exists and records the digest the manifest now gives it; a file
+//! whose record is absent, unreadable (truncated, foreign) or different is stale.
+
+use super::project::Animation;
+use super::provenance::{digest, recorded_digest};
+use rayon::prelude::*;
+use serde::Serialize;
+use std::path::Path;
+
+/// The state of one frame file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "kebab-case")]
+pub enum FrameState {
+    UpToDate,
+    Stale,
+    Missing,
+}
+
+/// The state of frame `frame` in `dir`.
+pub fn frame_state(anim: &Animation, dir: &Path, frame: u32) -> FrameState {
+    let path = anim.frame_path(dir, frame);
+    if !path.exists() {
+        return FrameState::Missing;
+    }
+    match recorded_digest(&path, anim.format()) {
+        Some(d) if d == digest(anim, frame) => FrameState::UpToDate,
+        _ => FrameState::Stale,
+    }
+}
+
+/// The frames of a folder by state, with their ranges.
+#[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct StatusReport {
+    pub up_to_date: Vec<u32>,
+    pub stale: Vec<u32>,
+    pub missing: Vec<u32>,
+}
+
+impl StatusReport {
+    /// Whether every frame is up to date.
+    pub fn complete(&self) -> bool {
+        self.stale.is_empty() && self.missing.is_empty()
+    }
+}
+
+/// The state of every frame of `frames` in `dir`, read in parallel.
+pub fn status(anim: &Animation, dir: &Path, frames: &[u32]) -> StatusReport {
+    let states: Vec<FrameState> = frames
+        .par_iter()
+        .map(|&f| frame_state(anim, dir, f))
+        .collect();
+    let mut report = StatusReport::default();
+    for (&f, state) in frames.iter().zip(states) {
+        match state {
+            FrameState::UpToDate => report.up_to_date.push(f),
+            FrameState::Stale => report.stale.push(f),
+            FrameState::Missing => report.missing.push(f),
+        }
+    }
+    report
+}
+
+/// Frames as inclusive ranges, render-farm style: `0-9,12,20-24` (`-` for none).
+pub fn ranges(frames: &[u32]) -> String {
+    if frames.is_empty() {
+        return "-".into();
+    }
+    let mut parts = Vec::new();
+    let mut start = frames[0];
+    let mut prev = frames[0];
+    for &f in &frames[1..] {
+        if f != prev + 1 {
+            parts.push(range(start, prev));
+            start = f;
+        }
+        prev = f;
+    }
+    parts.push(range(start, prev));
+    parts.join(",")
+}
+
+fn range(a: u32, b: u32) -> String {
+    if a == b {
+        a.to_string()
+    } else {
+        format!("{a}-{b}")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_like_a_render_farm() {
+        assert_eq!(ranges(&[]), "-");
+        assert_eq!(ranges(&[3]), "3");
+        assert_eq!(ranges(&[0, 1, 2, 5, 7, 8]), "0-2,5,7-8");
+        assert_eq!(ranges(&[9, 10]), "9-10");
+    }
+}

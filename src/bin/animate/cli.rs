@@ -1,0 +1,155 @@
+//! The command line of `animate` (clap): what each subcommand and option is. The work is
+//! the library's; `main.rs` turns these into its calls.
+
+use clap::{Args, Parser, Subcommand};
+use std::path::{Path, PathBuf};
+use whitted::anim::{AnimError, Project};
+use whitted::output::ImageFormat;
+
+const AFTER_HELP: &str = "\
+Exit status: 0 success; 1 the run started and failed (a frame could not be rendered or
+written, ffmpeg failed; `check`: a frame failed; `status`: frames are stale or missing);
+2 nothing was rendered because the request cannot be carried out as given (bad arguments,
+manifest or scene, an unusable output location, ffmpeg missing); 130/143 interrupted
+(finished frames are kept; `--resume` completes the run).
+
+Into ffmpeg without files:
+  animate M.toml --stdout raw | ffmpeg -f rawvideo -pix_fmt rgb24 -s WxH -r FPS -i - out.mp4
+  animate M.toml --stdout png | ffmpeg -f image2pipe -framerate FPS -i - out.mp4
+(with --stdout raw, animate prints the exact -s and -r of the manifest on standard error)
+
+The manifest format: docs/manifest.md; the Scene.txt format: docs/scene-format.md.";
+
+/// Render the frames of an animation manifest: a Scene.txt, a camera and tracks over time.
+#[derive(Parser, Debug)]
+#[command(
+    name = "animate",
+    version,
+    about,
+    after_help = AFTER_HELP,
+    args_conflicts_with_subcommands = true,
+    subcommand_negates_reqs = true
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub command: Option<Command>,
+    #[command(flatten)]
+    pub render: RenderArgs,
+}
+
+#[derive(Subcommand, Debug)]
+pub enum Command {
+    /// Render the `[check]` frames (or --frames) and compare them with the references
+    /// (OpenImageIO idiff's rules). Exit 0 all pass, 1 any fails, 2 the check cannot run.
+    Check(CheckArgs),
+    /// Render the `[check]` frames (or --frames) and write them as the references.
+    Bless(BlessArgs),
+    /// Say which frames of the folder are up to date, stale or missing, from the frames'
+    /// recorded provenance; renders nothing. Exit 0 all up to date, 1 not, 2 bad input.
+    Status(StatusArgs),
+}
+
+/// Options shared by every subcommand.
+#[derive(Args, Debug, Clone)]
+pub struct Common {
+    /// The animation manifest (TOML).
+    #[arg(required = true)]
+    pub manifest: Option<PathBuf>,
+    /// Worker threads (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub threads: Option<u32>,
+    /// Only these frames: `0-99`, `0,10,20-30` (inclusive ranges).
+    #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
+    pub frames: Option<String>,
+    /// No progress bar and no summary.
+    #[arg(short, long)]
+    pub quiet: bool,
+}
+
+impl Common {
+    /// The manifest's project (clap requires the manifest wherever `Common` is parsed).
+    pub fn load(&self) -> Result<Project, AnimError> {
+        Project::load(self.manifest.as_deref().unwrap_or(Path::new("")))
+    }
+}
+
+#[derive(Args, Debug)]
+pub struct RenderArgs {
+    #[command(flatten)]
+    pub common: Common,
+    /// The frame folder, instead of the manifest's `[output] dir`.
+    #[arg(short, long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Render the K-th of N contiguous chunks of the frames (0-based), e.g. for
+    /// `--shard $SLURM_ARRAY_TASK_ID/16`.
+    #[arg(long, value_name = "K/N")]
+    pub shard: Option<String>,
+    /// Render only the frames that are missing or whose recorded inputs differ from what
+    /// the manifest now gives them; leave up-to-date files untouched.
+    #[arg(long, conflicts_with_all = ["stdout", "video"])]
+    pub resume: bool,
+    /// Write the frames in order to standard output instead of files: raw (RGB bytes),
+    /// ppm or png.
+    #[arg(long, value_name = "FORMAT", value_parser = stream_format,
+          conflicts_with_all = ["video", "out"])]
+    pub stdout: Option<ImageFormat>,
+    /// With --stdout: write binary frames even when standard output is a terminal.
+    #[arg(long, requires = "stdout")]
+    pub force: bool,
+    /// Pipe the frames into ffmpeg (from PATH) to make this video file.
+    #[arg(long, value_name = "FILE", conflicts_with = "out")]
+    pub video: Option<PathBuf>,
+    /// Report progress as JSON lines on standard error (for schedulers and scripts)
+    /// instead of a progress bar.
+    #[arg(long)]
+    pub events: bool,
+}
+
+fn stream_format(s: &str) -> Result<ImageFormat, String> {
+    match ImageFormat::from_name(s) {
+        Some(f @ (ImageFormat::Raw | ImageFormat::Ppm | ImageFormat::Png)) => Ok(f),
+        _ => Err("expected raw, ppm or png".into()),
+    }
+}
+
+#[derive(Args, Debug)]
+pub struct BlessArgs {
+    #[command(flatten)]
+    pub common: Common,
+    /// The references folder, instead of the manifest's `[check] references`.
+    #[arg(long, value_name = "DIR")]
+    pub references: Option<PathBuf>,
+}
+
+#[derive(Args, Debug)]
+pub struct CheckArgs {
+    #[command(flatten)]
+    pub bless: BlessArgs,
+    /// Where images of failing frames go (default: the frame folder's name + `-check`).
+    #[arg(long, value_name = "DIR")]
+    pub report: Option<PathBuf>,
+    /// A pixel fails when a channel differs by more than this (0..255).
+    #[arg(long)]
+    pub fail: Option<u8>,
+    /// A frame fails when more than this percentage of its pixels fail.
+    #[arg(long, value_name = "PERCENT")]
+    pub fail_percent: Option<f64>,
+    /// A frame fails when any channel differs by more than this (0..255).
+    #[arg(long)]
+    pub hard_fail: Option<u8>,
+    /// Print the results as JSON on standard output instead of a table.
+    #[arg(long)]
+    pub json: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct StatusArgs {
+    #[command(flatten)]
+    pub common: Common,
+    /// The frame folder, instead of the manifest's `[output] dir`.
+    #[arg(short, long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Print the states as JSON on standard output.
+    #[arg(long)]
+    pub json: bool,
+}

@@ -1,0 +1,102 @@
+//! How `animate` shows a run: a progress bar on a terminal (indicatif: frames, frames/s,
+//! ETA), or JSON lines on standard error (`--events`), or nothing; then the one-line
+//! summary. Also the hints that name command-line flags, which the library's messages
+//! leave out.
+
+use indicatif::{ProgressBar, ProgressState, ProgressStyle};
+use std::io::IsTerminal;
+use whitted::anim::pipeline::Summary;
+use whitted::anim::{AnimError, Event, Reporter};
+
+/// The progress bar: frames done (skipped ones count as done), frames/s, ETA.
+pub struct Bar(ProgressBar);
+
+impl Bar {
+    /// A bar for `total` frames, hidden with `quiet` or when standard error is not a
+    /// terminal.
+    pub fn new(total: usize, quiet: bool) -> Bar {
+        if quiet || !std::io::stderr().is_terminal() {
+            return Bar(ProgressBar::hidden());
+        }
+        let bar = ProgressBar::new(total as u64);
+        let style = ProgressStyle::with_template(
+            "{elapsed_precise} [{wide_bar}] {pos}/{len} frames  {fps}  ETA {eta}",
+        )
+        .unwrap_or_else(|_| ProgressStyle::default_bar())
+        .with_key(
+            "fps",
+            |state: &ProgressState, w: &mut dyn std::fmt::Write| {
+                let _ = write!(w, "{:.1} frames/s", state.per_sec());
+            },
+        );
+        bar.set_style(style.progress_chars("=> "));
+        Bar(bar)
+    }
+
+    pub fn finish(&self) {
+        self.0.finish_and_clear();
+    }
+}
+
+impl Reporter for Bar {
+    fn event(&self, event: Event) {
+        match event {
+            Event::Started { skipped, .. } => {
+                self.0.set_position(skipped as u64);
+                self.0.reset_eta();
+            }
+            Event::Finished { .. } => self.0.inc(1),
+            Event::Skipped { .. } | Event::Failed { .. } => {}
+        }
+    }
+}
+
+/// One JSON object a line on standard error, per event.
+pub struct JsonLines;
+
+impl Reporter for JsonLines {
+    fn event(&self, event: Event) {
+        let line = match event {
+            Event::Started { total, skipped } => {
+                serde_json::json!({"event": "started", "total": total, "skipped": skipped})
+            }
+            Event::Finished {
+                frame,
+                seconds,
+                rays,
+            } => serde_json::json!({"event": "finished", "frame": frame,
+                                    "seconds": seconds, "rays": rays.total()}),
+            Event::Skipped { frame } => serde_json::json!({"event": "skipped", "frame": frame}),
+            Event::Failed { frame } => serde_json::json!({"event": "failed", "frame": frame}),
+        };
+        eprintln!("{line}");
+    }
+}
+
+/// The one-line summary: frames, wall time, frames/s, rays/s, where they went.
+pub fn summary(s: &Summary, secs: f64, place: &str) {
+    let secs = secs.max(1e-9);
+    let frames = |n: usize| if n == 1 { "frame" } else { "frames" };
+    let skipped = match s.skipped {
+        0 => String::new(),
+        n => format!(", {n} up to date and left as they were"),
+    };
+    eprintln!(
+        "animate: {} {} rendered{skipped} in {:.2} s: {:.2} frames/s, {:.1} Mrays/s -> {place}",
+        s.rendered,
+        frames(s.rendered),
+        secs,
+        s.rendered as f64 / secs,
+        s.rays.total() as f64 / secs / 1e6,
+    );
+}
+
+/// A hint naming the flag that helps, for errors where one does.
+pub fn hint(e: &AnimError) -> Option<&'static str> {
+    match e {
+        AnimError::Interrupted(_) => Some("`--resume` completes the run"),
+        AnimError::Reference(_) => Some("`animate bless` writes the references"),
+        AnimError::FfmpegMissing => Some("or pipe `--stdout raw` into an encoder"),
+        _ => None,
+    }
+}

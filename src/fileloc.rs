@@ -1,0 +1,51 @@
+//! A place in a text file, after pbrt-v4's `FileLoc`: every located error of the library
+//! (Scene.txt and manifest alike) carries one and prints it as `file:line:column`.
+
+use std::fmt;
+
+/// A position in a text file: 1-based line and column (in characters).
+#[derive(Clone, Debug, PartialEq, Eq, Default)]
+pub struct FileLoc {
+    pub file: String,
+    pub line: usize,
+    pub column: usize,
+}
+
+impl FileLoc {
+    /// The location of byte `offset` of `text`, a file named `file`.
+    pub fn of_offset(file: &str, text: &str, offset: usize) -> FileLoc {
+        let mut end = offset.min(text.len());
+        while !text.is_char_boundary(end) {
+            end -= 1;
+        }
+        let before = &text[..end];
+        FileLoc {
+            file: file.to_string(),
+            line: before.matches('\n').count() + 1,
+            column: before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1,
+        }
+    }
+}
+
+impl fmt::Display for FileLoc {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}:{}:{}", self.file, self.line, self.column)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn offsets_to_lines_and_columns() {
+        let text = "ab\ncdé f\n";
+        assert_eq!(FileLoc::of_offset("t", text, 0).to_string(), "t:1:1");
+        assert_eq!(FileLoc::of_offset("t", text, 4).to_string(), "t:2:2");
+        // 'f' is byte 8 (é is two bytes) but column 5.
+        assert_eq!(FileLoc::of_offset("t", text, 8).to_string(), "t:2:5");
+        // Inside a multi-byte character: the character's own column.
+        assert_eq!(FileLoc::of_offset("t", text, 6).to_string(), "t:2:3");
+        assert_eq!(FileLoc::of_offset("t", text, 99).to_string(), "t:3:1");
+    }
+}

@@ -1,0 +1,104 @@
+//! A shape as Scene.txt states it: a sphere's centre and radius, a plane's point and
+//! normal, a cylinder's axis, point and radius. The tracer draws `Shape`s built from these
+//! (a cylinder becomes a quadric and forgets its axis); animation tracks change a value
+//! here and build the shape again, exactly as the parser would from the changed file.
+
+use crate::shapes::{Plane, Quadric, Shape, Sphere};
+use glam::DVec3;
+
+/// The values one shape record of Scene.txt gives.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ShapeSpec {
+    Sphere {
+        center: DVec3,
+        radius: f64,
+    },
+    Plane {
+        point: DVec3,
+        normal: DVec3,
+    },
+    Cylinder {
+        axis: DVec3,
+        point: DVec3,
+        radius: f64,
+    },
+}
+
+impl ShapeSpec {
+    /// The shape the tracer draws.
+    pub fn build(&self) -> Shape {
+        match *self {
+            ShapeSpec::Sphere { center, radius } => Shape::Sphere(Sphere::new(center, radius)),
+            ShapeSpec::Plane { point, normal } => Shape::Plane(Plane::new(point, normal)),
+            ShapeSpec::Cylinder {
+                axis,
+                point,
+                radius,
+            } => Shape::Quadric(Quadric::cylinder(axis, point, radius)),
+        }
+    }
+
+    /// The record's kind as Scene.txt and the manifest name it.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            ShapeSpec::Sphere { .. } => "sphere",
+            ShapeSpec::Plane { .. } => "plane",
+            ShapeSpec::Cylinder { .. } => "cylinder",
+        }
+    }
+
+    /// The point a camera looks at when told to look at this object: a sphere's centre,
+    /// a plane's or a cylinder's point.
+    pub fn anchor(&self) -> DVec3 {
+        match *self {
+            ShapeSpec::Sphere { center, .. } => center,
+            ShapeSpec::Plane { point, .. } | ShapeSpec::Cylinder { point, .. } => point,
+        }
+    }
+}
+
+/// A direction (a normal or an axis) usable as given, or scaled by its largest component
+/// when |v|² under- or overflows; `None` for a zero or non-finite vector.
+pub fn direction(v: DVec3) -> Option<DVec3> {
+    if !v.is_finite() {
+        return None;
+    }
+    if v.try_normalize().is_some() {
+        return Some(v);
+    }
+    let scaled = v / v.abs().max_element();
+    scaled.try_normalize().map(|_| scaled)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn directions() {
+        assert_eq!(
+            direction(DVec3::new(0.0, 2.0, 0.0)),
+            Some(DVec3::new(0.0, 2.0, 0.0))
+        );
+        assert_eq!(direction(DVec3::ZERO), None);
+        assert_eq!(direction(DVec3::new(f64::NAN, 1.0, 0.0)), None);
+        // 1e-200 squared underflows: scaled by its largest component it is (1, 0, 0).
+        assert_eq!(direction(DVec3::new(1e-200, 0.0, 0.0)), Some(DVec3::X));
+    }
+
+    #[test]
+    fn anchors_and_kinds() {
+        let s = ShapeSpec::Sphere {
+            center: DVec3::ONE,
+            radius: 2.0,
+        };
+        assert_eq!((s.kind(), s.anchor()), ("sphere", DVec3::ONE));
+        let c = ShapeSpec::Cylinder {
+            axis: DVec3::Y,
+            point: DVec3::X,
+            radius: 1.0,
+        };
+        assert_eq!((c.kind(), c.anchor()), ("cylinder", DVec3::X));
+        assert!(matches!(c.build(), Shape::Quadric(_)));
+    }
+}
