@@ -100,3 +100,93 @@ fn missing_ffmpeg_is_a_clear_error() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("ffmpeg was not found on PATH"), "{err}");
 }
+
+#[test]
+fn a_video_target_ffmpeg_cannot_write_is_refused_before_any_frame() {
+    if !have_ffmpeg() {
+        return;
+    }
+    let (dir, manifest) = project(&circle_manifest(""));
+    // An unknown container: ffmpeg's own reason, not a broken pipe; exit 2.
+    let out = animate()
+        .arg(&manifest)
+        .arg("--video")
+        .arg(dir.path().join("out.xyz"))
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("cannot make the video") && err.contains("out.xyz"),
+        "{err}"
+    );
+    assert!(err.contains("output format"), "{err}");
+    assert!(
+        !err.contains(" @ 0x"),
+        "ffmpeg's addresses are noise: {err}"
+    );
+    assert!(!err.contains("Broken pipe"), "{err}");
+    // A folder that does not exist.
+    let missing = dir.path().join("no/such/dir/x.mp4");
+    let out = animate()
+        .arg(&manifest)
+        .arg("--video")
+        .arg(&missing)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("does not exist"), "{err}");
+}
+
+#[test]
+fn a_missing_ffmpeg_is_bad_input_with_a_way_out() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    let out = animate()
+        .arg(&manifest)
+        .arg("--video")
+        .arg(dir.path().join("v.mp4"))
+        .env("PATH", dir.path())
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("ffmpeg was not found on PATH") && err.contains("--stdout raw"),
+        "{err}"
+    );
+}
+
+#[test]
+fn raw_frames_come_with_the_ffmpeg_options_and_never_onto_a_terminal() {
+    let (_dir, manifest) = project(&circle_manifest(""));
+    let out = animate()
+        .arg(&manifest)
+        .args(["--stdout", "raw", "--frames", "0-1"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    assert_eq!(out.stdout.len(), 2 * 64 * 48 * 3);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        err.contains("-f rawvideo -pix_fmt rgb24 -s 64x48 -r 12 -i -"),
+        "{err}"
+    );
+    // On a terminal (a pseudo-terminal from `script`) binary output is refused.
+    let bin = assert_cmd::cargo::cargo_bin("animate");
+    let cmd = format!("{} {} --stdout raw", bin.display(), manifest.display());
+    let Ok(out) = Command::new("script")
+        .args(["-qec", &cmd, "/dev/null"])
+        .stdin(Stdio::null())
+        .output()
+    else {
+        eprintln!("script(1) not installed: skipping the terminal case");
+        return;
+    };
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(2), "{text}");
+    assert!(
+        text.contains("refusing to write binary frames to a terminal"),
+        "{text}"
+    );
+}

@@ -165,8 +165,31 @@ pub fn raw_record_path(frame_path: &Path) -> PathBuf {
     dir.join(RAW_RECORDS).join(format!("{name}.txt"))
 }
 
-/// The digest a frame file records, if it can be read: `None` for a missing, truncated
-/// or foreign file (which is then stale, never an error).
+/// Whether a frame file of `width`×`height` ends where its format ends: a PNG with its
+/// IEND chunk, a JPEG with its end marker, a PPM or RAW file of exactly its size. A copy
+/// cut short keeps the record at its head, so the record alone does not make a frame.
+pub fn complete(frame_path: &Path, format: ImageFormat, width: u32, height: u32) -> bool {
+    let Ok(bytes) = std::fs::read(frame_path) else {
+        return false;
+    };
+    let pixels = 3 * width as usize * height as usize;
+    match format {
+        ImageFormat::Png => {
+            bytes.ends_with(&[0, 0, 0, 0, b'I', b'E', b'N', b'D', 0xAE, 0x42, 0x60, 0x82])
+        }
+        ImageFormat::Jpeg { .. } => bytes.ends_with(&[0xFF, 0xD9]),
+        ImageFormat::Raw => bytes.len() == pixels,
+        ImageFormat::Ppm => {
+            bytes.len() >= pixels && {
+                let head = String::from_utf8_lossy(&bytes[..bytes.len() - pixels]);
+                head.starts_with("P6\n") && head.ends_with(&format!("\n{width} {height}\n255\n"))
+            }
+        }
+    }
+}
+
+/// The digest a frame file records, if it can be read: `None` for a missing or foreign
+/// file (which is then stale, never an error).
 pub fn recorded_digest(frame_path: &Path, format: ImageFormat) -> Option<String> {
     let head = |n: u64| -> Option<Vec<u8>> {
         let mut bytes = Vec::new();

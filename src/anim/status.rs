@@ -1,10 +1,11 @@
 //! `animate status` (SPEC §8): which frames of a folder are up to date, stale or missing,
 //! read from the frames' recorded provenance, never from their pixels. A frame is up to
-//! date when its file exists and records the digest the manifest now gives it; a file
-//! whose record is absent, unreadable (truncated, foreign) or different is stale.
+//! date when its file exists, is complete, and records the digest the manifest now gives
+//! it; a file that is cut short, or whose record is absent, unreadable (foreign) or
+//! different, is stale.
 
 use super::project::Animation;
-use super::provenance::{digest, recorded_digest};
+use super::provenance::{complete, digest, recorded_digest};
 use rayon::prelude::*;
 use serde::Serialize;
 use std::path::Path;
@@ -24,8 +25,11 @@ pub fn frame_state(anim: &Animation, dir: &Path, frame: u32) -> FrameState {
     if !path.exists() {
         return FrameState::Missing;
     }
-    match recorded_digest(&path, anim.format()) {
-        Some(d) if d == digest(anim, frame) => FrameState::UpToDate,
+    let format = anim.format();
+    match recorded_digest(&path, format) {
+        Some(d) if d == digest(anim, frame) && complete(&path, format, anim.width, anim.height) => {
+            FrameState::UpToDate
+        }
         _ => FrameState::Stale,
     }
 }

@@ -90,7 +90,21 @@ pub fn check_target(file: &Path) -> Result<(), AnimError> {
     }
     let words = String::from_utf8_lossy(&output.stderr);
     let words = words.replace(&probe.display().to_string(), &file.display().to_string());
-    Err(refuse(format!("ffmpeg cannot write it: {}", words.trim())))
+    Err(refuse(format!("ffmpeg cannot write it: {}", plain(&words))))
+}
+
+/// ffmpeg's lines without their `[context @ 0x…]` prefixes, joined by "; ".
+fn plain(words: &str) -> String {
+    words
+        .lines()
+        .map(|l| match (l.starts_with('['), l.find("] ")) {
+            (true, Some(end)) => &l[end + 2..],
+            _ => l,
+        })
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect::<Vec<_>>()
+        .join("; ")
 }
 
 fn spawn_error(e: std::io::Error) -> AnimError {
@@ -146,12 +160,13 @@ impl Ffmpeg {
 
     /// What ffmpeg printed, once it has ended.
     fn words(&mut self) -> String {
-        self.stderr
-            .take()
-            .and_then(|h| h.join().ok())
-            .unwrap_or_default()
-            .trim()
-            .to_string()
+        plain(
+            &self
+                .stderr
+                .take()
+                .and_then(|h| h.join().ok())
+                .unwrap_or_default(),
+        )
     }
 
     /// Closes the input and waits for ffmpeg to finish the file.
@@ -186,5 +201,17 @@ impl Ffmpeg {
         drop(self.child.stdin.take());
         let _ = self.child.kill();
         let _ = self.child.wait();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    #[test]
+    fn ffmpeg_words_without_addresses() {
+        let words = "[NULL @ 0x5651ebd30a40] Unable to find a suitable output format for 'a.xyz'\na.xyz: Invalid argument\n";
+        assert_eq!(
+            super::plain(words),
+            "Unable to find a suitable output format for 'a.xyz'; a.xyz: Invalid argument"
+        );
     }
 }

@@ -89,3 +89,36 @@ fn every_format_carries_its_digest() {
         None
     );
 }
+
+#[test]
+fn a_frame_is_complete_where_its_format_ends() {
+    let dir = tempfile::tempdir().unwrap();
+    let frame = Frame {
+        width: 3,
+        height: 2,
+        pixels: vec![9; 18],
+    };
+    let meta = vec![(DIGEST_KEY.to_string(), "ab".to_string())];
+    for format in [
+        ImageFormat::Png,
+        ImageFormat::Jpeg { quality: 90 },
+        ImageFormat::Ppm,
+        ImageFormat::Raw,
+    ] {
+        let path = dir.path().join(format!("f.{}", format.extension()));
+        crate::output::write_atomic_with(&path, &frame, format, &meta).unwrap();
+        assert!(complete(&path, format, 3, 2), "{format:?}");
+        if matches!(format, ImageFormat::Ppm | ImageFormat::Raw) {
+            assert!(!complete(&path, format, 3, 3), "{format:?}: another size");
+        }
+        let bytes = std::fs::read(&path).unwrap();
+        std::fs::write(&path, &bytes[..bytes.len() - 1]).unwrap();
+        assert!(!complete(&path, format, 3, 2), "{format:?}: cut short");
+    }
+    assert!(!complete(
+        &dir.path().join("none.png"),
+        ImageFormat::Png,
+        3,
+        2
+    ));
+}
