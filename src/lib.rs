@@ -41,6 +41,7 @@ pub mod noise;
 pub mod object;
 pub mod optics;
 pub mod output;
+pub mod process;
 pub mod render;
 pub mod scene;
 pub mod shading;

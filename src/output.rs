@@ -33,6 +33,8 @@ pub enum ImageFormat {
 pub enum OutputError {
     #[error("{path}: unknown image extension (use .png, .jpg, .jpeg, .ppm or .raw)")]
     UnknownExtension { path: PathBuf },
+    #[error("cannot write {path}: {reason}")]
+    Target { path: PathBuf, reason: String },
     #[error("{path}: {source}")]
     Io {
         path: PathBuf,
@@ -43,6 +45,41 @@ pub enum OutputError {
     Encode(#[from] image::ImageError),
     #[error("cannot write the image: {0}")]
     Stream(#[from] std::io::Error),
+}
+
+impl OutputError {
+    /// The row of the exit-status table: a target that cannot be used is bad input,
+    /// found before anything renders; a failure while writing is a failed run.
+    pub fn outcome(&self) -> crate::exit::Outcome {
+        match self {
+            OutputError::UnknownExtension { .. } | OutputError::Target { .. } => {
+                crate::exit::Outcome::BadInput
+            }
+            _ => crate::exit::Outcome::Failed,
+        }
+    }
+}
+
+/// Refuses, before anything renders, an image path whose folder does not exist or that
+/// is itself a folder.
+pub fn check_target(path: &Path) -> Result<(), OutputError> {
+    let refuse = |reason: String| {
+        Err(OutputError::Target {
+            path: path.to_path_buf(),
+            reason,
+        })
+    };
+    let folder = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    if !folder.is_dir() {
+        return refuse(format!("the folder {} does not exist", folder.display()));
+    }
+    if path.is_dir() {
+        return refuse("it is a folder".into());
+    }
+    Ok(())
 }
 
 impl ImageFormat {
@@ -192,13 +229,15 @@ pub fn write_atomic_with(
         path: path.to_path_buf(),
         source,
     };
-    let tmp = temp_beside(path).map_err(io)?;
+    // tempfile names its hidden file in its errors; the user knows only `path`.
+    let tmp = temp_beside(path).map_err(|e| io(std::io::Error::from(e.kind())))?;
     {
         let mut w = BufWriter::new(tmp.as_file());
         encode_with(frame, format, meta, &mut w)?;
         w.flush().map_err(io)?;
     }
-    tmp.persist(path).map_err(|e| io(e.error))?;
+    tmp.persist(path)
+        .map_err(|e| io(std::io::Error::from(e.error.kind())))?;
     Ok(())
 }
 
@@ -262,6 +301,30 @@ mod tests {
             let mode = std::fs::metadata(&path).unwrap().permissions().mode();
             assert_eq!(mode & 0o044, 0o044, "{mode:o}");
         }
+    }
+
+    #[test]
+    fn targets_are_checked_before_rendering() {
+        let dir = tempfile::tempdir().unwrap();
+        assert!(check_target(&dir.path().join("a.png")).is_ok());
+        let missing = check_target(&dir.path().join("no/a.png")).unwrap_err();
+        assert!(missing.to_string().contains("does not exist"), "{missing}");
+        assert_eq!(missing.outcome(), crate::exit::Outcome::BadInput);
+        let folder = check_target(dir.path()).unwrap_err();
+        assert!(folder.to_string().contains("it is a folder"), "{folder}");
+    }
+
+    #[test]
+    fn write_errors_name_the_file_not_the_temporary_one() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("no/such/f.png");
+        let shown = write_atomic(&path, &frame(), ImageFormat::Png)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            shown.contains("f.png") && !shown.contains(".tmp"),
+            "{shown}"
+        );
     }
 
     #[test]

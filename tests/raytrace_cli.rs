@@ -286,15 +286,74 @@ fn quiet_prints_nothing_and_the_default_reports_the_render() {
 }
 
 #[test]
-fn an_unwritable_output_fails_with_status_1_and_leaves_nothing() {
+fn an_output_in_a_missing_folder_is_bad_input_and_leaves_nothing() {
     let dir = tempfile::tempdir().unwrap();
     write_file(dir.path(), "flat.txt", FLAT_SPHERE);
     let out = raytrace_in(dir.path())
         .args(["flat.txt", "-o", "missing/folder/x.png"])
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(1));
+    // Checked before rendering: bad input, exit 2 (the exit table of `whitted::exit`).
+    assert_eq!(out.status.code(), Some(2));
     let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(stderr.contains("missing/folder/x.png"), "{stderr}");
+    assert!(
+        stderr.contains("missing/folder/x.png") && stderr.contains("does not exist"),
+        "{stderr}"
+    );
     assert_eq!(entries(dir.path()), ["flat.txt"]);
+    // An output that is a folder, likewise.
+    std::fs::create_dir(dir.path().join("taken.png")).unwrap();
+    let out = raytrace_in(dir.path())
+        .args(["flat.txt", "-o", "taken.png"])
+        .output()
+        .unwrap();
+    assert_eq!(out.status.code(), Some(2));
+}
+
+#[test]
+fn a_failed_write_after_rendering_is_status_1_and_names_the_file() {
+    // /proc/self is a folder that takes no new file: the write fails after the render.
+    let dir = tempfile::tempdir().unwrap();
+    write_file(dir.path(), "flat.txt", FLAT_SPHERE);
+    let out = raytrace_in(dir.path())
+        .args(["flat.txt", "-o", "/proc/self/x.png"])
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(matches!(out.status.code(), Some(1)), "{stderr}");
+    assert!(
+        stderr.contains("x.png") && !stderr.contains(".tmp"),
+        "{stderr}"
+    );
+}
+
+#[test]
+fn size_renders_a_quick_look_and_help_lists_the_formats() {
+    let dir = tempfile::tempdir().unwrap();
+    write_file(dir.path(), "flat.txt", FLAT_SPHERE);
+    render(
+        dir.path(),
+        &["flat.txt", "--size", "40x30", "-o", "small.png"],
+    );
+    let (w, h, _) = decode(&dir.path().join("small.png"));
+    assert_eq!((w, h), (40, 30));
+    for bad in ["40", "0x30", "40x", "20000x10", "9000x9000"] {
+        let out = raytrace_in(dir.path())
+            .args(["flat.txt", "--size", bad])
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(2), "{bad}");
+    }
+    let out = raytrace_in(dir.path()).arg("--help").output().unwrap();
+    let help = String::from_utf8_lossy(&out.stdout);
+    for word in [
+        ".png",
+        ".jpg",
+        ".ppm",
+        ".raw",
+        "beside the scene",
+        "Exit status",
+    ] {
+        assert!(help.contains(word), "{word}: {help}");
+    }
 }

@@ -5,7 +5,8 @@
 //!   blur — answering "what is frame t?" with a scene and a camera;
 //! - `project`: a manifest with its scene and timeline, loaded once (`Project::load`), and
 //!   `Animation`, which draws any frame of it;
-//! - producing frames: `pipeline` (folders and streams, reporting `events`), `select`
+//! - producing frames: `run` (the render command: frames, destination, checks first),
+//!   `pipeline` (folders and streams, reporting `events`), `select`
 //!   (frame lists and shards), `provenance` (what made a frame), `status` (which frames
 //!   are up to date), `video` (ffmpeg);
 //! - checking frames: `diff` and `regress` (`animate check` and `bless`);
@@ -19,6 +20,7 @@ pub mod pipeline;
 pub mod project;
 pub mod provenance;
 pub mod regress;
+pub mod run;
 pub mod select;
 pub mod status;
 pub mod timeline;

@@ -47,6 +47,39 @@ impl StatusReport {
     pub fn complete(&self) -> bool {
         self.stale.is_empty() && self.missing.is_empty()
     }
+
+    fn rows(&self) -> [(&'static str, &Vec<u32>); 3] {
+        [
+            ("up to date", &self.up_to_date),
+            ("stale", &self.stale),
+            ("missing", &self.missing),
+        ]
+    }
+
+    /// The report for people: the folder, then a row per state with count and ranges.
+    pub fn table(&self, dir: &Path) -> String {
+        let total = self.up_to_date.len() + self.stale.len() + self.missing.len();
+        let mut out = format!("{}: {total} frame(s)\n", dir.display());
+        for (what, list) in self.rows() {
+            out += &format!("{what:>11}: {:>7}  {}\n", list.len(), ranges(list));
+        }
+        out
+    }
+
+    /// The report for scripts: counts and ranges of each state.
+    pub fn json(&self, dir: &Path) -> serde_json::Value {
+        let mut doc = serde_json::json!({
+            "folder": dir,
+            "frames": self.up_to_date.len() + self.stale.len() + self.missing.len(),
+            "complete": self.complete(),
+        });
+        for (what, list) in self.rows() {
+            let key = what.replace(' ', "_");
+            doc[&key] = ranges(list).into();
+            doc[format!("{key}_count")] = list.len().into();
+        }
+        doc
+    }
 }
 
 /// The state of every frame of `frames` in `dir`, read in parallel.
@@ -96,6 +129,25 @@ fn range(a: u32, b: u32) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_table_and_the_json() {
+        let r = StatusReport {
+            up_to_date: vec![0, 1, 2],
+            stale: vec![5],
+            missing: vec![3, 4],
+        };
+        let table = r.table(Path::new("f"));
+        assert!(table.starts_with("f: 6 frame(s)\n"), "{table}");
+        assert!(table.contains(" up to date:       3  0-2\n"), "{table}");
+        assert!(table.contains("    missing:       2  3-4\n"), "{table}");
+        let doc = r.json(Path::new("f"));
+        assert_eq!(
+            (doc["stale"].as_str(), doc["missing_count"].as_u64()),
+            (Some("5"), Some(2))
+        );
+        assert_eq!(doc["complete"], false);
+    }
 
     #[test]
     fn ranges_like_a_render_farm() {

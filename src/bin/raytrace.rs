@@ -1,25 +1,36 @@
-//! `raytrace [SCENE] [-o OUT] [--samples N] [--threads N]`: one image from a Scene.txt,
-//! the report's main(). Exit status 0 on success, 2 on bad input (the scene or the
-//! arguments), 1 when the image cannot be written.
+//! `raytrace [SCENE] [-o OUT] [--size WxH] [--samples N] [--threads N]`: one image from a
+//! Scene.txt, the report's main(). It parses the command line and calls the library;
+//! exit statuses follow `whitted::exit` (2 bad input, 1 a failed write).
 
+use anyhow::Context;
 use clap::Parser;
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::time::Instant;
-use whitted::output::{write_atomic, ImageFormat};
-use whitted::trace::Tracer;
-use whitted::{render, Scene};
+use whitted::exit::Outcome;
+use whitted::output::{check_target, write_atomic, ImageFormat, OutputError};
+use whitted::{render, trace::Tracer, Scene, SceneError};
 
-/// Render one Scene.txt to an image (PNG, JPEG, PPM or the report's RAW, by extension).
+const AFTER_HELP: &str = "\
+Formats, by OUT's extension: .png, .jpg/.jpeg (quality 90), .ppm (binary P6), .raw (the
+report's headerless RGB bytes, rows top to bottom). OUT defaults to the scene's path with
+.png, beside the scene file (raytrace sub/t.txt writes sub/t.png).
+Exit status: 0 success; 2 nothing was rendered (bad arguments or scene, an output path
+that cannot be used); 1 the image could not be written. Scene.txt: docs/scene-format.md.";
+
+/// Render one Scene.txt to an image.
 #[derive(Parser, Debug)]
-#[command(name = "raytrace", version, about)]
+#[command(name = "raytrace", version, about, after_help = AFTER_HELP)]
 struct Args {
     /// The scene file.
     #[arg(default_value = "Scene.txt")]
     scene: PathBuf,
-    /// The image to write; defaults to the scene's name with `.png`.
+    /// The image to write (its extension picks the format); defaults to SCENE with .png.
     #[arg(short, long, value_name = "OUT")]
     out: Option<PathBuf>,
+    /// Render at this size instead of the scene's resolution: WIDTHxHEIGHT, e.g. 160x120
+    /// (the view keeps the report's 0.5 × 0.35 plane).
+    #[arg(long, value_name = "WxH", value_parser = parse_size)]
+    size: Option<(u32, u32)>,
     /// Anti-aliasing: an N×N stratified grid of samples per pixel (1 = the report's).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=16))]
     samples: u32,
@@ -31,58 +42,55 @@ struct Args {
     quiet: bool,
 }
 
-/// A failure and the exit status it deserves. The library's errors already carry their
-/// cause in their message, so they are printed without the source chain.
-enum Failure {
-    BadInput(anyhow::Error),
-    Output(anyhow::Error),
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("expected WIDTHxHEIGHT within 16384 a side and 2^26 pixels, found {s:?}");
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    let (w, h): (u32, u32) = (w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
+    whitted::limits::size_ok(w.into(), h.into())
+        .then_some((w, h))
+        .ok_or_else(bad)
 }
 
-fn run(args: Args) -> Result<(), Failure> {
-    let out = args
-        .out
-        .clone()
-        .unwrap_or_else(|| args.scene.with_extension("png"));
-    let format = ImageFormat::from_path(&out).map_err(|e| Failure::BadInput(e.into()))?;
-    let scene = Scene::load(&args.scene).map_err(|e| Failure::BadInput(e.into()))?;
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(args.threads.unwrap_or(0) as usize)
-        .build()
-        .map_err(|e| Failure::Output(e.into()))?;
-
-    let start = Instant::now();
-    let camera = scene.camera();
-    let tracer = Tracer::new(&scene);
+fn run(args: Args) -> anyhow::Result<()> {
+    let out = args.out.unwrap_or_else(|| args.scene.with_extension("png"));
+    let format = ImageFormat::from_path(&out)?;
+    check_target(&out)?;
+    let mut scene = Scene::load(&args.scene)?;
+    (scene.width, scene.height) = args.size.unwrap_or((scene.width, scene.height));
+    let pool = whitted::process::pool(args.threads).context("cannot start the worker threads")?;
+    let start = std::time::Instant::now();
+    let (camera, tracer) = (scene.camera(), Tracer::new(&scene));
     let (frame, rays) =
         pool.install(|| render(&tracer, &camera, scene.width, scene.height, args.samples));
     let traced = start.elapsed().as_secs_f64();
-    write_atomic(&out, &frame, format).map_err(|e| Failure::Output(e.into()))?;
+    write_atomic(&out, &frame, format)?;
     if !args.quiet {
-        eprintln!(
-            "raytrace: wrote {} ({}×{}, {} sample(s)/px) in {:.3} s: {} rays, {:.2} Mrays/s",
-            out.display(),
-            frame.width,
-            frame.height,
+        let (n, mrays) = (
             args.samples * args.samples,
-            traced,
-            rays.total(),
-            rays.total() as f64 / traced.max(1e-9) / 1e6
+            rays.total() as f64 / traced.max(1e-9) / 1e6,
+        );
+        eprintln!(
+            "raytrace: wrote {} ({}×{}, {n} sample(s)/px) in {traced:.3} s: {} rays, {mrays:.2} Mrays/s",
+            out.display(), frame.width, frame.height, rays.total()
         );
     }
     Ok(())
 }
 
 fn main() -> ExitCode {
-    let args = Args::parse();
-    match run(args) {
+    match run(Args::parse()) {
         Ok(()) => ExitCode::SUCCESS,
-        Err(Failure::BadInput(e)) => {
+        Err(e) => {
             eprintln!("raytrace: {e}");
-            ExitCode::from(2)
-        }
-        Err(Failure::Output(e)) => {
-            eprintln!("raytrace: {e}");
-            ExitCode::from(1)
+            let outcome = match (
+                e.downcast_ref::<SceneError>(),
+                e.downcast_ref::<OutputError>(),
+            ) {
+                (Some(_), _) => Outcome::BadInput,
+                (_, Some(o)) => o.outcome(),
+                _ => Outcome::Failed,
+            };
+            ExitCode::from(outcome.code())
         }
     }
 }

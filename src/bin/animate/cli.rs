@@ -2,8 +2,10 @@
 //! the library's; `main.rs` turns these into its calls.
 
 use clap::{Args, Parser, Subcommand};
+use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
-use whitted::anim::{AnimError, Project};
+use whitted::anim::run::Destination;
+use whitted::anim::{AnimError, Manifest, Project};
 use whitted::output::ImageFormat;
 
 const AFTER_HELP: &str = "\
@@ -103,6 +105,22 @@ pub struct RenderArgs {
     /// instead of a progress bar.
     #[arg(long)]
     pub events: bool,
+}
+
+impl RenderArgs {
+    /// Where the frames go: a stream, a video, or a folder (`-o`, else the manifest's).
+    /// Binary frames are refused on a terminal unless forced.
+    pub fn destination(&self, m: &Manifest) -> Result<Destination, AnimError> {
+        if self.stdout.is_some() && std::io::stdout().is_terminal() && !self.force {
+            let why = "refusing to write binary frames to a terminal: redirect standard output, or add --force";
+            return Err(AnimError::Usage(why.into()));
+        }
+        Ok(match (self.stdout, &self.video) {
+            (Some(format), _) => Destination::Stream(format),
+            (None, Some(video)) => Destination::Video(video.clone()),
+            (None, None) => Destination::Folder(self.out.clone().unwrap_or(m.output.dir.clone())),
+        })
+    }
 }
 
 fn stream_format(s: &str) -> Result<ImageFormat, String> {
