@@ -13,7 +13,7 @@ use std::sync::Arc;
 use std::time::Instant;
 use whitted::anim::pipeline::{render_to_folder, render_to_stream, Project};
 use whitted::anim::regress;
-use whitted::anim::select::select;
+use whitted::anim::select::{process_env, select, SelectError, Shard};
 use whitted::anim::video::render_to_video;
 use whitted::anim::{AnimError, Animation, Summary};
 use whitted::output::ImageFormat;
@@ -112,10 +112,15 @@ struct RenderArgs {
     /// The frame folder, instead of the manifest's `[output] dir`.
     #[arg(short, long, value_name = "DIR")]
     out: Option<PathBuf>,
-    /// Render the K-th of N contiguous chunks of the frames (0-based), e.g. for
-    /// `--shard $SLURM_ARRAY_TASK_ID/16`.
-    #[arg(long, value_name = "K/N")]
-    shard: Option<String>,
+    /// Render the K-th of N contiguous chunks of the frames (0-based), or `auto`: the
+    /// index from a Slurm array job, Kubernetes Indexed Job or AWS Batch array job.
+    #[arg(long, value_name = "K/N|auto")]
+    shard: Option<Shard>,
+    /// The number of tasks, for `--shard auto` under Kubernetes or AWS Batch (under Slurm
+    /// it must agree with the array's size).
+    #[arg(long, value_name = "N", requires = "shard",
+          value_parser = clap::value_parser!(u32).range(1..))]
+    shards: Option<u32>,
     /// Skip frames whose file already exists.
     #[arg(long, conflicts_with_all = ["stdout", "video"])]
     resume: bool,
@@ -171,11 +176,12 @@ fn render_command(args: RenderArgs) -> Result<(), AnimError> {
     let project = Project::load(args.common.manifest())?;
     let manifest = &project.manifest;
     let anim = Animation::new(manifest, &project.scene)?;
-    let frames = select(
-        manifest.frames,
-        args.common.frames.as_deref(),
-        args.shard.as_deref(),
-    )?;
+    let shard = args
+        .shard
+        .map(|s| s.resolve(process_env, args.shards, "--shards"))
+        .transpose()
+        .map_err(SelectError::from)?;
+    let frames = select(manifest.frames, args.common.frames.as_deref(), shard)?;
     for &f in &frames {
         anim.camera(f)?;
     }
