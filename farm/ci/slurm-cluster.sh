@@ -20,6 +20,14 @@ chmod 700 "$dir"
 
 stop_daemons() {
   local pidfile pid
+  # Jobs first, so no slurmstepd or animate outlives the cluster.
+  if [[ -s $dir/run/slurmctld.pid ]] && kill -0 "$(<"$dir/run/slurmctld.pid")" 2>/dev/null; then
+    SLURM_CONF=$dir/slurm.conf scancel --partition=ci 2>/dev/null || true
+    for _ in $(seq 100); do
+      [[ -z $(SLURM_CONF=$dir/slurm.conf squeue -h 2>/dev/null) ]] && break
+      sleep 0.1
+    done
+  fi
   for pidfile in "$dir"/run/slurmd.pid "$dir"/run/slurmctld.pid "$dir"/run/munged.pid; do
     [[ -s $pidfile ]] || continue
     pid=$(<"$pidfile")
@@ -27,14 +35,16 @@ stop_daemons() {
     for _ in $(seq 50); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
     kill -KILL "$pid" 2>/dev/null || true
   done
-  # slurmstepd processes of jobs still running belong to the cluster too.
-  for pidfile in "$dir"/run/step-*.pid; do
-    [[ -s $pidfile ]] && kill -KILL "$(<"$pidfile")" 2>/dev/null || true
-  done
+}
+# On SIGINT/SIGTERM: stop COMMAND too, then the EXIT trap stops the daemons.
+child=
+on_signal() {
+  [[ -n $child ]] && kill -TERM "$child" 2>/dev/null
+  exit "$1"
 }
 trap stop_daemons EXIT
-trap 'exit 130' INT
-trap 'exit 143' TERM
+trap 'on_signal 130' INT
+trap 'on_signal 143' TERM
 
 # Two free TCP ports for slurmctld and slurmd.
 free_port() {
@@ -106,6 +116,10 @@ if [[ ${state:-} != idle ]]; then
   exit 1
 fi
 
+# In the background so that a signal is handled at once, not when COMMAND ends.
+"$@" &
+child=$!
 status=0
-"$@" || status=$?
+wait "$child" || status=$?
+child=
 exit "$status"
