@@ -34,7 +34,9 @@ wait_for() {
   done
 }
 
-job_state() { scontrol show job "$1" 2>/dev/null | grep -o 'JobState=[A-Z_]*' | head -1 | cut -d= -f2; }
+job_state() {
+  { scontrol show job "$1" 2>/dev/null || true; } | grep -o 'JobState=[A-Z_]*' | head -1 | cut -d= -f2 || true
+}
 is_state() { [[ $(job_state "$1") == "$2" ]]; }
 gone_from_queue() { [[ -z $(squeue -h -j "$1" 2>/dev/null) ]]; }
 

@@ -116,88 +116,111 @@ impl Shard {
         count: Option<u32>,
         count_name: &str,
     ) -> Result<(u32, u32), ShardError> {
-        let disagree = |shard: String, from: String, n: u32| ShardError::Disagree {
-            shard,
+        let disagree = |shard: &str, from: String, given: u32| ShardError::Disagree {
+            shard: shard.to_string(),
             from,
             count_name: count_name.to_string(),
-            count: n,
+            count: given,
         };
-        match self {
-            Shard::Part { index, count: n } => match count {
-                Some(c) if c != n => Err(disagree(format!("{index}/{n}"), n.to_string(), c)),
-                _ => Ok((index, n)),
-            },
-            Shard::Auto => {
-                let get = |var: &'static str| env(var).filter(|v| !v.trim().is_empty());
-                let num = |var: &'static str| -> Result<Option<i64>, ShardError> {
-                    get(var)
-                        .map(|v| {
-                            v.trim().parse::<i64>().map_err(|_| ShardError::NotANumber {
-                                var,
-                                value: v.clone(),
-                            })
-                        })
-                        .transpose()
-                };
-                let set: Vec<(&'static str, i64)> = [SLURM_ID, K8S_INDEX, AWS_INDEX]
-                    .into_iter()
-                    .map(|var| num(var).map(|v| v.map(|v| (var, v))))
-                    .collect::<Result<Vec<_>, _>>()?
-                    .into_iter()
-                    .flatten()
-                    .collect();
-                let &[(var, raw)] = set.as_slice() else {
-                    if set.is_empty() {
-                        return Err(ShardError::NoScheduler);
-                    }
-                    let list: Vec<String> = set.iter().map(|(v, x)| format!("{v}={x}")).collect();
-                    return Err(ShardError::Several(list.join(", ")));
-                };
-                let require = |missing: &'static str| {
-                    num(missing)?.ok_or(ShardError::Missing { var, missing })
-                };
-                let (index, from, n, of) = if var == SLURM_ID {
-                    let min = require(SLURM_MIN)?;
-                    let total = require(SLURM_COUNT)?;
-                    let step = num(SLURM_STEP)?.unwrap_or(1).max(1);
-                    let offset = raw - min;
-                    let mut from = format!("{var}={raw} − {SLURM_MIN}={min}");
-                    if step > 1 {
-                        from = format!("({from}) ÷ {SLURM_STEP}={step}");
-                    }
-                    let index = if offset % step == 0 {
-                        offset / step
-                    } else {
-                        -1
-                    };
-                    if index < 0 {
-                        from.push_str(", not a task of the array");
-                    }
-                    let n = u32::try_from(total).unwrap_or(0);
-                    let of = format!("{SLURM_COUNT}={total}");
-                    if let Some(c) = count.filter(|&c| c != n) {
-                        return Err(disagree("auto".into(), of, c));
-                    }
-                    (index, from, n, of)
-                } else {
+        let Shard::Part { index, count: n } = self else {
+            let env = Vars(&env);
+            let task = match env.scheduler()? {
+                (SLURM_ID, id) => env.slurm(id)?,
+                (var, index) => {
                     let n = count.ok_or_else(|| ShardError::NoCount {
                         var,
-                        index: u32::try_from(raw).unwrap_or(u32::MAX),
+                        index: u32::try_from(index).unwrap_or(u32::MAX),
                         count_name: count_name.to_string(),
                     })?;
-                    (raw, format!("{var}={raw}"), n, format!("{count_name} {n}"))
-                };
-                match u32::try_from(index) {
-                    Ok(k) if k < n => Ok((k, n)),
-                    _ => Err(ShardError::OutOfRange {
-                        index,
-                        from,
-                        count: n,
-                        of,
-                    }),
+                    let of = format!("{count_name} {n}");
+                    (index, format!("{var}={index}"), n, of)
                 }
+            };
+            let (index, from, n, of) = task;
+            if let Some(given) = count.filter(|&c| c != n) {
+                return Err(disagree("auto", of, given));
+            }
+            return match u32::try_from(index) {
+                Ok(k) if k < n => Ok((k, n)),
+                _ => Err(ShardError::OutOfRange {
+                    index,
+                    from,
+                    count: n,
+                    of,
+                }),
+            };
+        };
+        match count {
+            Some(given) if given != n => {
+                Err(disagree(&format!("{index}/{n}"), n.to_string(), given))
+            }
+            _ => Ok((index, n)),
+        }
+    }
+}
+
+/// A task's index, how it was computed, the task count, and where that came from.
+type Task = (i64, String, u32, String);
+
+/// The environment `auto` reads.
+struct Vars<'a, F: Fn(&str) -> Option<String>>(&'a F);
+
+impl<F: Fn(&str) -> Option<String>> Vars<'_, F> {
+    /// A variable's whole-number value, `None` when unset or empty.
+    fn num(&self, var: &'static str) -> Result<Option<i64>, ShardError> {
+        let Some(value) = (self.0)(var).filter(|v| !v.trim().is_empty()) else {
+            return Ok(None);
+        };
+        match value.trim().parse() {
+            Ok(n) => Ok(Some(n)),
+            Err(_) => Err(ShardError::NotANumber { var, value }),
+        }
+    }
+
+    /// The one scheduler index variable that is set, and its value.
+    fn scheduler(&self) -> Result<(&'static str, i64), ShardError> {
+        let mut set = Vec::new();
+        for var in [SLURM_ID, K8S_INDEX, AWS_INDEX] {
+            if let Some(v) = self.num(var)? {
+                set.push((var, v));
             }
         }
+        match set[..] {
+            [one] => Ok(one),
+            [] => Err(ShardError::NoScheduler),
+            _ => {
+                let list: Vec<String> = set.iter().map(|(v, x)| format!("{v}={x}")).collect();
+                Err(ShardError::Several(list.join(", ")))
+            }
+        }
+    }
+
+    /// A Slurm array task: (ID − MIN) ÷ STEP of COUNT; -1 for an ID off the step.
+    fn slurm(&self, id: i64) -> Result<Task, ShardError> {
+        let require = |missing| {
+            self.num(missing)?.ok_or(ShardError::Missing {
+                var: SLURM_ID,
+                missing,
+            })
+        };
+        let min = require(SLURM_MIN)?;
+        let total = require(SLURM_COUNT)?;
+        let step = self.num(SLURM_STEP)?.unwrap_or(1).max(1);
+        let mut from = format!("{SLURM_ID}={id} − {SLURM_MIN}={min}");
+        if step > 1 {
+            from = format!("({from}) ÷ {SLURM_STEP}={step}");
+        }
+        let offset = id - min;
+        let index = if offset % step == 0 {
+            offset / step
+        } else {
+            -1
+        };
+        if index < 0 {
+            from.push_str(", not a task of the array");
+        }
+        let n = u32::try_from(total).unwrap_or(0);
+        Ok((index, from, n, format!("{SLURM_COUNT}={total}")))
     }
 }
 
@@ -381,6 +404,11 @@ mod tests {
             "shard auto: task index 7 (SLURM_ARRAY_TASK_ID=7 − SLURM_ARRAY_TASK_MIN=0) \
              is not below the task count 3 (SLURM_ARRAY_TASK_COUNT=3)"
         );
+        // --array=10-40:10 has no task 25.
+        let mut v = slurm("25", "10", "4");
+        v.push((SLURM_STEP, "10"));
+        let e = auto(&v, None).unwrap_err();
+        assert!(e.to_string().contains("not a task of the array"), "{e}");
         let e = auto(&slurm("x", "0", "3"), None).unwrap_err();
         assert_eq!(
             e.to_string(),
