@@ -6,28 +6,29 @@
 //! - `project`: a manifest with its scene and timeline, loaded once (`Project::load`), and
 //!   `Animation`, which draws any frame of it;
 //! - producing frames: `run` (the render command: frames, destination, checks first),
-//!   `pipeline` (folders and streams, reporting `events`), `select`
-//!   (frame lists and shards), `provenance` (what made a frame), `status` (which frames
-//!   are up to date), `video` (ffmpeg);
+//!   `pipeline` (folders and streams, reporting `events`), `frames::select` (frame lists,
+//!   shards, a render farm's task index), `provenance` (what made a frame), `status` (which
+//!   frames are up to date), `video` (ffmpeg);
 //! - checking frames: `diff` and `regress` (`animate check` and `bless`);
 //! - `error`: why a run stopped, and its exit status.
 
 pub mod diff;
 pub mod error;
 pub mod events;
+pub mod frames;
 pub mod manifest;
 pub mod pipeline;
 pub mod project;
 pub mod provenance;
 pub mod regress;
 pub mod run;
-pub mod select;
 pub mod status;
 pub mod timeline;
 pub mod video;
 
 pub use error::AnimError;
 pub use events::{Event, Reporter};
+pub use frames::select;
 pub use manifest::{Manifest, ManifestError};
 pub use project::{Animation, Project, Settings};
 pub use timeline::{CameraPath, Timeline};

@@ -34,11 +34,12 @@ impl Destination {
     }
 }
 
-/// The frames of a run: a `--frames` list and a shard of it, over the whole sequence.
+/// The frames of a run: a frame list and chunk `(index, count)` of it, over the whole
+/// sequence.
 pub fn frames_of(
     anim: &Animation,
     list: Option<&str>,
-    shard: Option<&str>,
+    shard: Option<(u32, u32)>,
 ) -> Result<Vec<u32>, AnimError> {
     Ok(select(anim.manifest.frames, list, shard)?)
 }

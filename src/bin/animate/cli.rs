@@ -5,6 +5,7 @@ use clap::{Args, Parser, Subcommand};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use whitted::anim::run::Destination;
+use whitted::anim::select::{process_env, SelectError, Shard};
 use whitted::anim::{AnimError, Manifest, Project};
 use whitted::output::ImageFormat;
 
@@ -82,10 +83,15 @@ pub struct RenderArgs {
     /// The frame folder, instead of the manifest's `[output] dir`.
     #[arg(short, long, value_name = "DIR")]
     pub out: Option<PathBuf>,
-    /// Render the K-th of N contiguous chunks of the frames (0-based), e.g. for
-    /// `--shard $SLURM_ARRAY_TASK_ID/16`.
-    #[arg(long, value_name = "K/N")]
-    pub shard: Option<String>,
+    /// Render the K-th of N contiguous chunks of the frames (0-based), or `auto`: the
+    /// index from a Slurm array job, Kubernetes Indexed Job or AWS Batch array job.
+    #[arg(long, value_name = "K/N|auto")]
+    pub shard: Option<Shard>,
+    /// The number of tasks, for `--shard auto` under Kubernetes or AWS Batch (under Slurm
+    /// it must agree with the array's size).
+    #[arg(long, value_name = "N", requires = "shard",
+          value_parser = clap::value_parser!(u32).range(1..))]
+    pub shards: Option<u32>,
     /// Render only the frames that are missing or whose recorded inputs differ from what
     /// the manifest now gives them; leave up-to-date files untouched.
     #[arg(long, conflicts_with_all = ["stdout", "video"])]
@@ -108,6 +114,13 @@ pub struct RenderArgs {
 }
 
 impl RenderArgs {
+    /// The shard of this task: `K/N`, or resolved from the scheduler's environment.
+    pub fn shard(&self) -> Result<Option<(u32, u32)>, AnimError> {
+        let resolve = |s: Shard| s.resolve(process_env, self.shards, "--shards");
+        let shard = self.shard.map(resolve).transpose();
+        Ok(shard.map_err(SelectError::from)?)
+    }
+
     /// Where the frames go: a stream, a video, or a folder (`-o`, else the manifest's).
     /// Binary frames are refused on a terminal unless forced.
     pub fn destination(&self, m: &Manifest) -> Result<Destination, AnimError> {

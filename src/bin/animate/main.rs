@@ -26,7 +26,7 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     let c = &args.common;
     let project = c.load()?;
     let (m, anim) = (&project.manifest, Animation::new(&project)?);
-    let frames = run::frames_of(&anim, c.frames.as_deref(), args.shard.as_deref())?;
+    let frames = run::frames_of(&anim, c.frames.as_deref(), args.shard()?)?;
     if frames.is_empty() && !c.quiet {
         eprintln!(
             "animate: this shard has no frames ({} in all): nothing to do",

@@ -77,14 +77,11 @@ impl Reporter for JsonLines {
 pub fn summary(s: &Summary, secs: f64, place: &str) {
     let secs = secs.max(1e-9);
     let frames = |n: usize| if n == 1 { "frame" } else { "frames" };
-    let skipped = match s.skipped {
-        0 => String::new(),
-        n => format!(", {n} up to date and left as they were"),
-    };
     eprintln!(
-        "animate: {} {} rendered{skipped} in {:.2} s: {:.2} frames/s, {:.1} Mrays/s -> {place}",
+        "animate: {} {} rendered, {} up to date in {:.2} s: {:.2} frames/s, {:.1} Mrays/s -> {place}",
         s.rendered,
         frames(s.rendered),
+        s.skipped,
         secs,
         s.rendered as f64 / secs,
         s.rays.total() as f64 / secs / 1e6,

@@ -1,0 +1,470 @@
+//! Which frames a run renders: a frame list `0-99,120` (inclusive ranges, as render farms
+//! write them) and a shard, the K-th of N contiguous chunks (0-based, sizes differing by
+//! at most one). A shard is written `K/N` or `auto`; `auto` reads the task's index from
+//! the render farm's environment (SPEC §9):
+//!
+//! ```text
+//! Slurm array job          SLURM_ARRAY_TASK_ID − SLURM_ARRAY_TASK_MIN (÷ SLURM_ARRAY_TASK_STEP)
+//!                          of SLURM_ARRAY_TASK_COUNT
+//! Kubernetes Indexed Job   JOB_COMPLETION_INDEX       of the count the user gives
+//! AWS Batch array job      AWS_BATCH_JOB_ARRAY_INDEX  of the count the user gives
+//! ```
+//!
+//! A shard splits the frames the run would otherwise render, so a list and a shard
+//! compose. The camera's time always comes from the whole sequence, so a subset renders
+//! exactly the frames a full run would.
+
+use std::collections::BTreeSet;
+use std::str::FromStr;
+
+/// A bad frame list or shard.
+#[derive(Debug, thiserror::Error, PartialEq, Eq)]
+pub enum SelectError {
+    #[error("{0}")]
+    Frames(String),
+    #[error(transparent)]
+    Shard(#[from] ShardError),
+}
+
+/// Why a shard cannot be parsed or resolved. `count_name` is how the caller lets the user
+/// give the task count (the binary passes its option's name).
+#[derive(Debug, thiserror::Error, PartialEq, Eq)]
+pub enum ShardError {
+    #[error("shard {0:?}: expected K/N with 0 ≤ K < N, as in 3/16, or auto")]
+    Syntax(String),
+    #[error(
+        "shard auto: no scheduler's task index is set: none of SLURM_ARRAY_TASK_ID (Slurm \
+         array job), JOB_COMPLETION_INDEX (Kubernetes Indexed Job), AWS_BATCH_JOB_ARRAY_INDEX \
+         (AWS Batch array job)"
+    )]
+    NoScheduler,
+    #[error("shard auto: more than one scheduler's task index is set ({0}); unset the others")]
+    Several(String),
+    #[error("shard auto: {var}={value:?} is not a whole number")]
+    NotANumber { var: &'static str, value: String },
+    #[error("shard auto: {var} is set but {missing} is not")]
+    Missing {
+        var: &'static str,
+        missing: &'static str,
+    },
+    #[error(
+        "shard auto: {var}={index} gives this task's index but not the number of tasks; \
+         give it with {count_name} N"
+    )]
+    NoCount {
+        var: &'static str,
+        index: u32,
+        count_name: String,
+    },
+    #[error("shard {shard}: {from} tasks, but {count_name} {count}")]
+    Disagree {
+        shard: String,
+        from: String,
+        count_name: String,
+        count: u32,
+    },
+    #[error("shard auto: task index {index} ({from}) is not below the task count {count} ({of})")]
+    OutOfRange {
+        index: i64,
+        from: String,
+        count: u32,
+        of: String,
+    },
+}
+
+/// Which part of the frames a task renders.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Shard {
+    /// Chunk `index` of `count` (`K/N`).
+    Part { index: u32, count: u32 },
+    /// The index (and for Slurm the count) from the scheduler's environment.
+    Auto,
+}
+
+impl FromStr for Shard {
+    type Err = ShardError;
+
+    fn from_str(spec: &str) -> Result<Shard, ShardError> {
+        if spec.trim() == "auto" {
+            return Ok(Shard::Auto);
+        }
+        let bad = || ShardError::Syntax(spec.to_string());
+        let (k, n) = spec.split_once('/').ok_or_else(bad)?;
+        let index: u32 = k.trim().parse().map_err(|_| bad())?;
+        let count: u32 = n.trim().parse().map_err(|_| bad())?;
+        if count == 0 || index >= count {
+            return Err(bad());
+        }
+        Ok(Shard::Part { index, count })
+    }
+}
+
+const SLURM_ID: &str = "SLURM_ARRAY_TASK_ID";
+const SLURM_MIN: &str = "SLURM_ARRAY_TASK_MIN";
+const SLURM_STEP: &str = "SLURM_ARRAY_TASK_STEP";
+const SLURM_COUNT: &str = "SLURM_ARRAY_TASK_COUNT";
+const K8S_INDEX: &str = "JOB_COMPLETION_INDEX";
+const AWS_INDEX: &str = "AWS_BATCH_JOB_ARRAY_INDEX";
+
+impl Shard {
+    /// This task's (index, count). `env` looks a variable up (an empty value counts as
+    /// unset); `count` is the task count the user gave, if any, which must agree with the
+    /// shard's own; `count_name` names it in messages.
+    pub fn resolve(
+        self,
+        env: impl Fn(&str) -> Option<String>,
+        count: Option<u32>,
+        count_name: &str,
+    ) -> Result<(u32, u32), ShardError> {
+        let disagree = |shard: &str, from: String, given: u32| ShardError::Disagree {
+            shard: shard.to_string(),
+            from,
+            count_name: count_name.to_string(),
+            count: given,
+        };
+        let Shard::Part { index, count: n } = self else {
+            let env = Vars(&env);
+            let task = match env.scheduler()? {
+                (SLURM_ID, id) => env.slurm(id)?,
+                (var, index) => {
+                    let n = count.ok_or_else(|| ShardError::NoCount {
+                        var,
+                        index: u32::try_from(index).unwrap_or(u32::MAX),
+                        count_name: count_name.to_string(),
+                    })?;
+                    let of = format!("{count_name} {n}");
+                    (index, format!("{var}={index}"), n, of)
+                }
+            };
+            let (index, from, n, of) = task;
+            if let Some(given) = count.filter(|&c| c != n) {
+                return Err(disagree("auto", of, given));
+            }
+            return match u32::try_from(index) {
+                Ok(k) if k < n => Ok((k, n)),
+                _ => Err(ShardError::OutOfRange {
+                    index,
+                    from,
+                    count: n,
+                    of,
+                }),
+            };
+        };
+        match count {
+            Some(given) if given != n => {
+                Err(disagree(&format!("{index}/{n}"), n.to_string(), given))
+            }
+            _ => Ok((index, n)),
+        }
+    }
+}
+
+/// A task's index, how it was computed, the task count, and where that came from.
+type Task = (i64, String, u32, String);
+
+/// The environment `auto` reads.
+struct Vars<'a, F: Fn(&str) -> Option<String>>(&'a F);
+
+impl<F: Fn(&str) -> Option<String>> Vars<'_, F> {
+    /// A variable's whole-number value, `None` when unset or empty.
+    fn num(&self, var: &'static str) -> Result<Option<i64>, ShardError> {
+        let Some(value) = (self.0)(var).filter(|v| !v.trim().is_empty()) else {
+            return Ok(None);
+        };
+        match value.trim().parse() {
+            Ok(n) => Ok(Some(n)),
+            Err(_) => Err(ShardError::NotANumber { var, value }),
+        }
+    }
+
+    /// The one scheduler index variable that is set, and its value.
+    fn scheduler(&self) -> Result<(&'static str, i64), ShardError> {
+        let mut set = Vec::new();
+        for var in [SLURM_ID, K8S_INDEX, AWS_INDEX] {
+            if let Some(v) = self.num(var)? {
+                set.push((var, v));
+            }
+        }
+        match set[..] {
+            [one] => Ok(one),
+            [] => Err(ShardError::NoScheduler),
+            _ => {
+                let list: Vec<String> = set.iter().map(|(v, x)| format!("{v}={x}")).collect();
+                Err(ShardError::Several(list.join(", ")))
+            }
+        }
+    }
+
+    /// A Slurm array task: (ID − MIN) ÷ STEP of COUNT; -1 for an ID off the step.
+    fn slurm(&self, id: i64) -> Result<Task, ShardError> {
+        let require = |missing| {
+            self.num(missing)?.ok_or(ShardError::Missing {
+                var: SLURM_ID,
+                missing,
+            })
+        };
+        let min = require(SLURM_MIN)?;
+        let total = require(SLURM_COUNT)?;
+        let step = self.num(SLURM_STEP)?.unwrap_or(1).max(1);
+        let mut from = format!("{SLURM_ID}={id} − {SLURM_MIN}={min}");
+        if step > 1 {
+            from = format!("({from}) ÷ {SLURM_STEP}={step}");
+        }
+        let offset = id - min;
+        let index = if offset % step == 0 {
+            offset / step
+        } else {
+            -1
+        };
+        if index < 0 {
+            from.push_str(", not a task of the array");
+        }
+        let n = u32::try_from(total).unwrap_or(0);
+        Ok((index, from, n, format!("{SLURM_COUNT}={total}")))
+    }
+}
+
+/// The process environment, for [`Shard::resolve`].
+pub fn process_env(var: &str) -> Option<String> {
+    std::env::var(var).ok()
+}
+
+/// The frames of a run over a `total`-frame sequence: all, or the `frames` list, then
+/// chunk `(index, count)` of that.
+pub fn select(
+    total: u32,
+    frames: Option<&str>,
+    shard: Option<(u32, u32)>,
+) -> Result<Vec<u32>, SelectError> {
+    let mut list = match frames {
+        Some(spec) => parse_frames(spec, total)?,
+        None => (0..total).collect(),
+    };
+    if let Some((k, n)) = shard {
+        list = self::shard(&list, k, n);
+    }
+    Ok(list)
+}
+
+/// Parses a `--frames` list against a sequence of `frames` frames: sorted, without
+/// repeats.
+pub fn parse_frames(spec: &str, frames: u32) -> Result<Vec<u32>, SelectError> {
+    let err = |m: String| Err(SelectError::Frames(format!("--frames {spec:?}: {m}")));
+    let mut set = BTreeSet::new();
+    for part in spec.split(',').map(str::trim) {
+        if part.is_empty() {
+            return err("an empty item (two commas, or a comma at an end)".into());
+        }
+        let (lo, hi) = match part.split_once('-') {
+            Some((a, b)) => (a.trim(), b.trim()),
+            None => (part, part),
+        };
+        let num = |s: &str| {
+            s.parse::<u32>().map_err(|_| {
+                SelectError::Frames(format!("--frames {spec:?}: '{s}' is not a frame number"))
+            })
+        };
+        let (lo, hi) = (num(lo)?, num(hi)?);
+        if lo > hi {
+            return err(format!("the range {lo}-{hi} runs backwards"));
+        }
+        if hi >= frames {
+            return err(format!("frame {hi} is past the last frame, {}", frames - 1));
+        }
+        set.extend(lo..=hi);
+    }
+    Ok(set.into_iter().collect())
+}
+
+/// The K-th of N contiguous chunks of `frames`: chunk k is `frames[k·L/N .. (k+1)·L/N]`.
+pub fn shard(frames: &[u32], k: u32, n: u32) -> Vec<u32> {
+    let len = frames.len() as u64;
+    let start = (k as u64 * len / n as u64) as usize;
+    let end = ((k as u64 + 1) * len / n as u64) as usize;
+    frames[start..end].to_vec()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn ranges_and_singles() {
+        assert_eq!(
+            parse_frames("0-3,10, 7", 20).unwrap(),
+            vec![0, 1, 2, 3, 7, 10]
+        );
+        assert_eq!(parse_frames("5", 6).unwrap(), vec![5]);
+        assert_eq!(parse_frames("2-4,3-5", 6).unwrap(), vec![2, 3, 4, 5]);
+    }
+
+    #[test]
+    fn bad_lists() {
+        assert!(parse_frames("6", 6).is_err());
+        assert!(parse_frames("4-2", 6).is_err());
+        assert!(parse_frames("1,,2", 6).is_err());
+        assert!(parse_frames("a-2", 6).is_err());
+        assert!(parse_frames("-1", 6).is_err());
+        assert!(parse_frames("", 6).is_err());
+    }
+
+    #[test]
+    fn shards_cover_everything_once_with_near_equal_sizes() {
+        let all: Vec<u32> = (0..250).collect();
+        for n in 1..=17 {
+            let parts: Vec<Vec<u32>> = (0..n).map(|k| shard(&all, k, n)).collect();
+            let joined: Vec<u32> = parts.concat();
+            assert_eq!(joined, all, "n = {n}");
+            let sizes: Vec<usize> = parts.iter().map(Vec::len).collect();
+            let (min, max) = (sizes.iter().min().unwrap(), sizes.iter().max().unwrap());
+            assert!(max - min <= 1, "{sizes:?}");
+        }
+        // 10 frames in 3 shards: 3, 3, 4.
+        assert_eq!(shard(&(0..10).collect::<Vec<_>>(), 0, 3), vec![0, 1, 2]);
+        assert_eq!(shard(&(0..10).collect::<Vec<_>>(), 2, 3), vec![6, 7, 8, 9]);
+    }
+
+    #[test]
+    fn shard_of_a_subset() {
+        assert_eq!(select(10, None, None).unwrap(), (0..10).collect::<Vec<_>>());
+        // Frames 2..=7 are six; the second of two halves is 5, 6, 7.
+        assert_eq!(
+            select(10, Some("2-7"), Some((1, 2))).unwrap(),
+            vec![5, 6, 7]
+        );
+    }
+
+    #[test]
+    fn shard_specs() {
+        let part = |index, count| Shard::Part { index, count };
+        assert_eq!("3/16".parse(), Ok(part(3, 16)));
+        assert_eq!(" 0 / 1 ".parse(), Ok(part(0, 1)));
+        assert_eq!("auto".parse(), Ok(Shard::Auto));
+        for bad in ["16/16", "0/0", "1", "x/2", "-1/2", "Auto", ""] {
+            assert_eq!(
+                bad.parse::<Shard>(),
+                Err(ShardError::Syntax(bad.into())),
+                "{bad}"
+            );
+        }
+    }
+
+    /// An environment of the given variables only.
+    fn env(vars: &[(&str, &str)]) -> impl Fn(&str) -> Option<String> {
+        let vars: Vec<(String, String)> = vars
+            .iter()
+            .map(|(k, v)| (k.to_string(), v.to_string()))
+            .collect();
+        move |name| vars.iter().find(|(k, _)| k == name).map(|(_, v)| v.clone())
+    }
+
+    fn auto(vars: &[(&str, &str)], count: Option<u32>) -> Result<(u32, u32), ShardError> {
+        Shard::Auto.resolve(env(vars), count, "--shards")
+    }
+
+    fn slurm(
+        id: &'static str,
+        min: &'static str,
+        n: &'static str,
+    ) -> Vec<(&'static str, &'static str)> {
+        vec![(SLURM_ID, id), (SLURM_MIN, min), (SLURM_COUNT, n)]
+    }
+
+    #[test]
+    fn slurm_arrays_from_zero_or_one_or_with_a_step() {
+        // --array=0-15: task 5 is chunk 5 of 16.
+        assert_eq!(auto(&slurm("5", "0", "16"), None), Ok((5, 16)));
+        // --array=1-16: task 1 is chunk 0 and task 16 the last, 15.
+        assert_eq!(auto(&slurm("1", "1", "16"), None), Ok((0, 16)));
+        assert_eq!(auto(&slurm("16", "1", "16"), None), Ok((15, 16)));
+        // --array=10-40:10 is tasks 10, 20, 30, 40: task 30 is (30 − 10) ÷ 10 = chunk 2.
+        let mut v = slurm("30", "10", "4");
+        v.push((SLURM_STEP, "10"));
+        assert_eq!(auto(&v, None), Ok((2, 4)));
+        // A count that agrees is accepted.
+        assert_eq!(auto(&slurm("2", "0", "4"), Some(4)), Ok((2, 4)));
+    }
+
+    #[test]
+    fn slurm_errors_name_the_variables() {
+        let e = auto(&slurm("2", "0", "4"), Some(8)).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "shard auto: SLURM_ARRAY_TASK_COUNT=4 tasks, but --shards 8"
+        );
+        let e = auto(&[(SLURM_ID, "3"), (SLURM_MIN, "0")], None).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "shard auto: SLURM_ARRAY_TASK_ID is set but SLURM_ARRAY_TASK_COUNT is not"
+        );
+        // --array=0,3,7 is three tasks, but task 7 is not chunk 7 of 3.
+        let e = auto(&slurm("7", "0", "3"), None).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "shard auto: task index 7 (SLURM_ARRAY_TASK_ID=7 − SLURM_ARRAY_TASK_MIN=0) \
+             is not below the task count 3 (SLURM_ARRAY_TASK_COUNT=3)"
+        );
+        // --array=10-40:10 has no task 25.
+        let mut v = slurm("25", "10", "4");
+        v.push((SLURM_STEP, "10"));
+        let e = auto(&v, None).unwrap_err();
+        assert!(e.to_string().contains("not a task of the array"), "{e}");
+        let e = auto(&slurm("x", "0", "3"), None).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "shard auto: SLURM_ARRAY_TASK_ID=\"x\" is not a whole number"
+        );
+    }
+
+    #[test]
+    fn kubernetes_and_aws_take_the_count_from_the_caller() {
+        assert_eq!(auto(&[(K8S_INDEX, "7")], Some(8)), Ok((7, 8)));
+        assert_eq!(auto(&[(AWS_INDEX, "0")], Some(3)), Ok((0, 3)));
+        let e = auto(&[(K8S_INDEX, "7")], None).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "shard auto: JOB_COMPLETION_INDEX=7 gives this task's index but not the number \
+             of tasks; give it with --shards N"
+        );
+        let e = auto(&[(AWS_INDEX, "8")], Some(8)).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "shard auto: task index 8 (AWS_BATCH_JOB_ARRAY_INDEX=8) is not below the task \
+             count 8 (--shards 8)"
+        );
+    }
+
+    #[test]
+    fn no_scheduler_or_several() {
+        let e = auto(&[], Some(4)).unwrap_err();
+        for var in [SLURM_ID, K8S_INDEX, AWS_INDEX] {
+            assert!(e.to_string().contains(var), "{e}");
+        }
+        // An empty value is unset.
+        assert_eq!(
+            auto(&[(K8S_INDEX, "")], Some(4)),
+            Err(ShardError::NoScheduler)
+        );
+        let e = auto(&[(K8S_INDEX, "1"), (AWS_INDEX, "2")], Some(4)).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "shard auto: more than one scheduler's task index is set \
+             (JOB_COMPLETION_INDEX=1, AWS_BATCH_JOB_ARRAY_INDEX=2); unset the others"
+        );
+    }
+
+    #[test]
+    fn a_given_shard_must_agree_with_the_count() {
+        let part = Shard::Part {
+            index: 3,
+            count: 16,
+        };
+        assert_eq!(part.resolve(env(&[]), None, "--shards"), Ok((3, 16)));
+        assert_eq!(part.resolve(env(&[]), Some(16), "--shards"), Ok((3, 16)));
+        let e = part.resolve(env(&[]), Some(8), "--shards").unwrap_err();
+        assert_eq!(e.to_string(), "shard 3/16: 16 tasks, but --shards 8");
+        // The environment is not read for K/N.
+        let slurm = slurm("0", "0", "2");
+        assert_eq!(part.resolve(env(&slurm), None, "-n"), Ok((3, 16)));
+    }
+}
