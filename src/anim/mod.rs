@@ -9,6 +9,7 @@ pub mod error;
 pub mod manifest;
 pub mod path;
 pub mod pipeline;
+pub mod preview;
 pub mod record;
 pub mod regress;
 pub mod select;

@@ -12,6 +12,7 @@ use std::sync::atomic::AtomicUsize;
 use std::sync::Arc;
 use std::time::Instant;
 use whitted::anim::pipeline::{render_to_folder, render_to_stream, Project};
+use whitted::anim::preview::{self, PreviewError, PreviewOptions};
 use whitted::anim::regress;
 use whitted::anim::select::select;
 use whitted::anim::video::render_to_video;
@@ -41,6 +42,31 @@ enum Command {
     Check(CheckArgs),
     /// Render the `[check]` frames (or --frames) and write them as the references.
     Bless(BlessArgs),
+    /// Write quick pictures for people into a folder: a looping GIF of every frame at 1/K
+    /// size, a contact sheet of every N-th frame and a plot of the camera path.
+    Preview(PreviewArgs),
+}
+
+#[derive(Args, Debug)]
+struct PreviewArgs {
+    /// The animation manifest (TOML).
+    manifest: PathBuf,
+    /// The folder for the pictures (default: the frame folder's name + `-preview`).
+    #[arg(short, long, value_name = "DIR")]
+    out: Option<PathBuf>,
+    /// Draw the frames at 1/K of their size.
+    #[arg(long, value_name = "K", default_value_t = preview::DEFAULT_SCALE,
+          value_parser = clap::value_parser!(u32).range(1..=1024))]
+    scale: u32,
+    /// One contact-sheet tile every N frames (default: about 24 tiles).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    every: Option<u32>,
+    /// Worker threads (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    threads: Option<u32>,
+    /// No progress bar and no summary.
+    #[arg(short, long)]
+    quiet: bool,
 }
 
 #[derive(Args, Debug)]
@@ -280,6 +306,36 @@ fn check_command(args: CheckArgs) -> Result<bool, AnimError> {
     Ok(pass)
 }
 
+fn preview_command(args: PreviewArgs) -> Result<(), PreviewError> {
+    let opts = PreviewOptions {
+        manifest: args.manifest,
+        out: args.out,
+        scale: args.scale,
+        every: args.every,
+    };
+    let bar = progress_bar(0, args.quiet);
+    let progress = |done: usize, total: usize| {
+        bar.set_length(total as u64);
+        bar.set_position(done as u64);
+    };
+    let start = Instant::now();
+    let s = pool(args.threads)?.install(|| preview::run(&opts, &progress))?;
+    bar.finish_and_clear();
+    if !args.quiet {
+        eprintln!(
+            "animate: preview of {} frames at {}×{} in {:.2} s -> {}, {}, {}",
+            s.frames,
+            s.width,
+            s.height,
+            start.elapsed().as_secs_f64(),
+            s.gif.display(),
+            s.sheet.display(),
+            s.plot.display()
+        );
+    }
+    Ok(())
+}
+
 /// The one-line summary: frames, wall time, frames/s, rays/s.
 fn report(s: &Summary, secs: f64, place: &str) {
     let secs = secs.max(1e-9);
@@ -300,6 +356,15 @@ fn main() -> ExitCode {
         None => render_command(cli.render).map(|()| true),
         Some(Command::Bless(args)) => bless_command(args).map(|()| true),
         Some(Command::Check(args)) => check_command(args),
+        Some(Command::Preview(args)) => {
+            return match preview_command(args) {
+                Ok(()) => ExitCode::SUCCESS,
+                Err(e) => {
+                    eprintln!("animate: {e}");
+                    ExitCode::from(e.exit_code())
+                }
+            }
+        }
     };
     match result {
         Ok(true) => ExitCode::SUCCESS,
