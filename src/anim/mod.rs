@@ -10,6 +10,7 @@
 //!   shards, a render farm's task index), `provenance` (what made a frame), `status` (which
 //!   frames are up to date), `video` (ffmpeg);
 //! - checking frames: `diff` and `regress` (`animate check` and `bless`);
+//! - `preview`: quick pictures for people (a GIF, a contact sheet, a plot of the paths);
 //! - `error`: why a run stopped, and its exit status.
 
 pub mod diff;
@@ -18,6 +19,7 @@ pub mod events;
 pub mod frames;
 pub mod manifest;
 pub mod pipeline;
+pub mod preview;
 pub mod project;
 pub mod provenance;
 pub mod regress;

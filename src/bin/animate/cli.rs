@@ -4,6 +4,7 @@
 use clap::{Args, Parser, Subcommand};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
+use whitted::anim::preview::{self, PreviewOptions};
 use whitted::anim::run::Destination;
 use whitted::anim::select::{process_env, SelectError, Shard};
 use whitted::anim::{AnimError, Manifest, Project};
@@ -50,6 +51,42 @@ pub enum Command {
     /// Say which frames of the folder are up to date, stale or missing, from the frames'
     /// recorded provenance; renders nothing. Exit 0 all up to date, 1 not, 2 bad input.
     Status(StatusArgs),
+    /// Write quick pictures for people into a folder: a looping GIF of every frame at 1/K
+    /// size, a contact sheet of every N-th frame and a plot of the camera and tracked paths.
+    Preview(PreviewArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct PreviewArgs {
+    /// The animation manifest (TOML).
+    pub manifest: PathBuf,
+    /// The folder for the pictures (default: the frame folder's name + `-preview`).
+    #[arg(short, long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Draw the frames at 1/K of their size.
+    #[arg(long, value_name = "K", default_value_t = preview::DEFAULT_SCALE,
+          value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub scale: u32,
+    /// One contact-sheet tile every N frames (default: about 24 tiles).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..))]
+    pub every: Option<u32>,
+    /// Worker threads (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub threads: Option<u32>,
+    /// No progress bar and no summary.
+    #[arg(short, long)]
+    pub quiet: bool,
+}
+
+impl PreviewArgs {
+    pub fn options(&self) -> PreviewOptions {
+        PreviewOptions {
+            manifest: self.manifest.clone(),
+            out: self.out.clone(),
+            scale: self.scale,
+            every: self.every,
+        }
+    }
 }
 
 /// Options shared by every subcommand.

@@ -9,12 +9,12 @@ mod report;
 
 use anyhow::Context;
 use clap::Parser;
-use cli::{BlessArgs, CheckArgs, Cli, Command, RenderArgs, StatusArgs};
+use cli::{BlessArgs, CheckArgs, Cli, Command, PreviewArgs, RenderArgs, StatusArgs};
 use std::process::ExitCode;
 use std::time::Instant;
 use whitted::anim::run;
 use whitted::anim::status::status;
-use whitted::anim::{regress, AnimError, Animation, Reporter};
+use whitted::anim::{preview, regress, AnimError, Animation, Reporter};
 use whitted::exit::Outcome;
 use whitted::output::ImageFormat;
 
@@ -148,6 +148,23 @@ fn status_command(args: StatusArgs) -> anyhow::Result<Outcome> {
     })
 }
 
+fn preview(args: PreviewArgs) -> anyhow::Result<Outcome> {
+    let bar = report::Bar::new(0, args.quiet);
+    let start = Instant::now();
+    let s = pool(args.threads)?.install(|| preview::run(&args.options(), &|d, t| bar.set(d, t)));
+    bar.finish();
+    let s = s?;
+    if !args.quiet {
+        let (secs, w, h) = (start.elapsed().as_secs_f64(), s.width, s.height);
+        eprintln!(
+            "animate: preview of {} frames at {w}×{h} in {secs:.2} s -> {}",
+            s.frames,
+            s.dir.display()
+        );
+    }
+    Ok(Outcome::Success)
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
@@ -155,16 +172,16 @@ fn main() -> ExitCode {
         Some(Command::Bless(args)) => bless(args),
         Some(Command::Check(args)) => check(args),
         Some(Command::Status(args)) => status_command(args),
+        Some(Command::Preview(args)) => preview(args),
     };
     match result {
         Ok(outcome) => ExitCode::from(outcome.code()),
         Err(e) => {
-            let anim = e.downcast_ref::<AnimError>();
             eprintln!("animate: {e}");
-            if let Some(hint) = anim.and_then(report::hint) {
+            if let Some(hint) = e.downcast_ref::<AnimError>().and_then(report::hint) {
                 eprintln!("animate: hint: {hint}");
             }
-            ExitCode::from(anim.map_or(Outcome::Failed, AnimError::outcome).code())
+            ExitCode::from(report::outcome(&e).code())
         }
     }
 }

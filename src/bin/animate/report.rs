@@ -6,7 +6,9 @@
 use indicatif::{ProgressBar, ProgressState, ProgressStyle};
 use std::io::IsTerminal;
 use whitted::anim::pipeline::Summary;
+use whitted::anim::preview::PreviewError;
 use whitted::anim::{AnimError, Event, Reporter};
+use whitted::exit::Outcome;
 
 /// The progress bar: frames done (skipped ones count as done), frames/s, ETA.
 pub struct Bar(ProgressBar);
@@ -31,6 +33,12 @@ impl Bar {
         );
         bar.set_style(style.progress_chars("=> "));
         Bar(bar)
+    }
+
+    /// Shows `done` of `total` (for work counted outside the render pipeline).
+    pub fn set(&self, done: usize, total: usize) {
+        self.0.set_length(total as u64);
+        self.0.set_position(done as u64);
     }
 
     pub fn finish(&self) {
@@ -86,6 +94,17 @@ pub fn summary(s: &Summary, secs: f64, place: &str) {
         s.rendered as f64 / secs,
         s.rays.total() as f64 / secs / 1e6,
     );
+}
+
+/// The exit-status row of an error from any part of the library.
+pub fn outcome(e: &anyhow::Error) -> Outcome {
+    if let Some(e) = e.downcast_ref::<AnimError>() {
+        e.outcome()
+    } else if let Some(e) = e.downcast_ref::<PreviewError>() {
+        e.outcome()
+    } else {
+        Outcome::Failed
+    }
 }
 
 /// A hint naming the flag that helps, for errors where one does.

@@ -1,0 +1,269 @@
+//! `animate preview` (SPEC §11): fast pictures of an animation for people, written into
+//! one folder (default: the frame folder's name + `-preview`):
+//!
+//! - `animation.gif`: every frame at 1/K size (default K = 4), at the manifest's fps,
+//!   looping forever (`gif`);
+//! - `contact-sheet.png`: every N-th frame in a grid, labelled with its frame number
+//!   (`sheet`; N defaults to about 24 tiles);
+//! - `camera-path.png`: top and side views of the camera path, look-at points, objects,
+//!   lights and tracked paths, to scale (`plot`, `view`, `clip`).
+//!
+//! Frames are drawn by the animation pipeline at the small size (`source`, the only file
+//! that calls it), in parallel windows; each is quantised for the GIF on its worker, then
+//! appended in frame order, so the files are the same bytes on any thread count. Every
+//! file is written under a hidden temporary name and renamed when complete.
+
+mod clip;
+mod font;
+pub mod gif;
+mod legend;
+pub mod plot;
+pub mod sheet;
+mod source;
+mod view;
+
+pub use plot::{CameraSample, PlotData, Track};
+pub use source::scaled;
+
+use self::gif::{GifError, GifFrame, GifWriter};
+use crate::anim::AnimError;
+use crate::output::{write_atomic, ImageFormat, OutputError};
+use crate::render::Frame;
+use crate::scene::MAX_PIXELS;
+use rayon::prelude::*;
+use sheet::{Layout, Sheet};
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// K when `--scale` is not given.
+pub const DEFAULT_SCALE: u32 = 4;
+/// The names of the three pictures inside the preview folder.
+pub const GIF_NAME: &str = "animation.gif";
+pub const SHEET_NAME: &str = "contact-sheet.png";
+pub const PLOT_NAME: &str = "camera-path.png";
+/// The memory the frames in flight may take (pixels and their GIF copy).
+const WINDOW_MEMORY: usize = 256 << 20;
+
+/// What `animate preview` was asked for.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PreviewOptions {
+    pub manifest: PathBuf,
+    /// The folder for the pictures; default `default_dir` of the frame folder.
+    pub out: Option<PathBuf>,
+    /// Frames are drawn at 1/scale of their size, at least one pixel a side.
+    pub scale: u32,
+    /// One contact-sheet tile every `every` frames; default `sheet::default_every`.
+    pub every: Option<u32>,
+}
+
+/// What a preview wrote.
+#[derive(Clone, Debug, PartialEq)]
+pub struct PreviewSummary {
+    pub dir: PathBuf,
+    pub gif: PathBuf,
+    pub sheet: PathBuf,
+    pub plot: PathBuf,
+    pub frames: u32,
+    pub width: u32,
+    pub height: u32,
+    pub tiles: u32,
+}
+
+/// Why a preview stopped.
+#[derive(Debug, thiserror::Error)]
+pub enum PreviewError {
+    #[error(transparent)]
+    Anim(#[from] AnimError),
+    #[error("{0}")]
+    Usage(String),
+    #[error("cannot use the preview folder {dir}: {source}")]
+    Folder {
+        dir: PathBuf,
+        #[source]
+        source: std::io::Error,
+    },
+    #[error(transparent)]
+    Gif(#[from] GifError),
+    #[error(transparent)]
+    Write(#[from] OutputError),
+    #[error(transparent)]
+    Plot(#[from] plot::PlotError),
+}
+
+impl PreviewError {
+    /// The row of the exit-status table: bad input, or what could not be written or drawn.
+    pub fn outcome(&self) -> crate::exit::Outcome {
+        match self {
+            PreviewError::Anim(e) => e.outcome(),
+            PreviewError::Usage(_) => crate::exit::Outcome::BadInput,
+            _ => crate::exit::Outcome::Failed,
+        }
+    }
+
+    /// The exit status: 2 for bad input, 1 for what could not be written or drawn.
+    pub fn exit_code(&self) -> u8 {
+        self.outcome().code()
+    }
+}
+
+impl From<font::FontError> for PreviewError {
+    fn from(e: font::FontError) -> PreviewError {
+        PreviewError::Plot(e.into())
+    }
+}
+
+/// The default preview folder beside `frame_dir`: its name + `-preview`.
+pub fn default_dir(frame_dir: &Path) -> PathBuf {
+    let mut name = frame_dir
+        .file_name()
+        .map(|n| n.to_os_string())
+        .unwrap_or_else(|| "frames".into());
+    name.push("-preview");
+    frame_dir.with_file_name(name)
+}
+
+/// Refuses options no preview can be made with, naming the option.
+fn check(opts: &PreviewOptions) -> Result<(), PreviewError> {
+    if opts.scale == 0 {
+        return Err(PreviewError::Usage("--scale 0: K must be 1 or more".into()));
+    }
+    if opts.every == Some(0) {
+        return Err(PreviewError::Usage("--every 0: N must be 1 or more".into()));
+    }
+    Ok(())
+}
+
+/// The sheet's grid, refused when it would be past the pixel limit.
+fn layout(frames: u32, every: Option<u32>, w: u32, h: u32) -> Result<Layout, PreviewError> {
+    let every = every.unwrap_or_else(|| sheet::default_every(frames));
+    let l = Layout::new(frames, every, w, h);
+    let (sw, sh) = l.size();
+    if sw * sh > MAX_PIXELS {
+        return Err(PreviewError::Usage(format!(
+            "--every {every}: a contact sheet of {} tiles of {w}×{h} would be {sw}×{sh} \
+             pixels, past the limit of {MAX_PIXELS}; take a larger --every or --scale",
+            l.tiles
+        )));
+    }
+    Ok(l)
+}
+
+/// Makes the preview of `opts.manifest`. `progress(done, total)` is called from the
+/// worker threads as frames finish.
+pub fn run(
+    opts: &PreviewOptions,
+    progress: &(dyn Fn(usize, usize) + Sync),
+) -> Result<PreviewSummary, PreviewError> {
+    check(opts)?;
+    let src = source::Source::load(&opts.manifest, opts.scale)?;
+    let anim = src.animation()?;
+    let (w, h, frames) = (anim.width, anim.height, src.frames());
+    let layout = layout(frames, opts.every, w, h)?;
+    let dir = opts
+        .out
+        .clone()
+        .unwrap_or_else(|| default_dir(src.frame_dir()));
+    std::fs::create_dir_all(&dir).map_err(|source| PreviewError::Folder {
+        dir: dir.clone(),
+        source,
+    })?;
+
+    let mut gif = GifWriter::create(&dir.join(GIF_NAME), w, h, src.fps())?;
+    let mut sheet = Sheet::new(layout);
+    let frame_bytes = (w as usize * h as usize * 4).max(1);
+    let window = (4 * rayon::current_num_threads().max(1))
+        .min(WINDOW_MEMORY / frame_bytes)
+        .max(1);
+    let all: Vec<u32> = (0..frames).collect();
+    let done = AtomicUsize::new(0);
+    let total = all.len();
+    for chunk in all.chunks(window) {
+        let drawn: Vec<Result<(Frame, GifFrame), AnimError>> = chunk
+            .par_iter()
+            .map(|&f| {
+                let image = source::draw(&anim, f)?;
+                let quantised = GifFrame::new(&image);
+                progress(done.fetch_add(1, Ordering::Relaxed) + 1, total);
+                Ok((image, quantised))
+            })
+            .collect();
+        for (&f, item) in chunk.iter().zip(drawn) {
+            let (image, quantised) = item?;
+            sheet.place(f, &image);
+            gif.add(quantised)?;
+        }
+    }
+    let gif_path = gif.finish()?;
+    let sheet_path = dir.join(SHEET_NAME);
+    write_atomic(&sheet_path, &sheet.finish()?, ImageFormat::Png)?;
+
+    let name = src.manifest_path().file_name().unwrap_or_default();
+    let camera = src.camera_samples();
+    let tracks = src.tracks();
+    let data = PlotData {
+        title: format!(
+            "{}: {frames} frames at {} fps",
+            name.to_string_lossy(),
+            view::number(src.fps())
+        ),
+        camera: &camera,
+        tracks: &tracks,
+        scene: src.scene(),
+    };
+    let plot_path = dir.join(PLOT_NAME);
+    write_atomic(&plot_path, &plot::plot(&data)?, ImageFormat::Png)?;
+    Ok(PreviewSummary {
+        dir,
+        gif: gif_path,
+        sheet: sheet_path,
+        plot: plot_path,
+        frames,
+        width: w,
+        height: h,
+        tiles: layout.tiles,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_dir_is_a_sibling_named_after_the_frame_folder() {
+        assert_eq!(
+            default_dir(Path::new("/x/out/orbit")),
+            PathBuf::from("/x/out/orbit-preview")
+        );
+        assert_eq!(
+            default_dir(Path::new("frames")),
+            PathBuf::from("frames-preview")
+        );
+    }
+
+    #[test]
+    fn zero_scale_and_every_are_refused_by_name() {
+        let opts = |scale, every| PreviewOptions {
+            manifest: "m.toml".into(),
+            out: None,
+            scale,
+            every,
+        };
+        let e = check(&opts(0, None)).unwrap_err();
+        assert!(e.to_string().starts_with("--scale 0"), "{e}");
+        assert_eq!(e.exit_code(), 2);
+        let e = check(&opts(4, Some(0))).unwrap_err();
+        assert!(e.to_string().starts_with("--every 0"), "{e}");
+        assert!(check(&opts(1, Some(1))).is_ok());
+    }
+
+    #[test]
+    fn a_sheet_past_the_pixel_limit_is_refused_before_rendering() {
+        // 1,000,000 tiles of 160×120 at --every 1: far past 2^26 pixels.
+        let e = layout(1_000_000, Some(1), 160, 120).unwrap_err();
+        assert!(e
+            .to_string()
+            .starts_with("--every 1: a contact sheet of 1000000 tiles"));
+        // The default step keeps about 24 tiles: fine.
+        assert_eq!(layout(1_000_000, None, 160, 120).unwrap().tiles, 24);
+    }
+}
