@@ -140,7 +140,12 @@ fn the_scene_errors_shown_are_the_real_ones() {
 #[test]
 fn the_pages_point_nowhere_outside_the_repository() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
-    for name in ["README.md", "docs/manifest.md", "docs/scene-format.md"] {
+    for name in [
+        "README.md",
+        "docs/manifest.md",
+        "docs/scene-format.md",
+        "docs/decisions.md",
+    ] {
         let text = std::fs::read_to_string(root.join(name)).unwrap();
         assert!(!text.contains("SPEC.md"), "{name} points at the SPEC");
         // Every relative Markdown link names a file of the repository.

@@ -317,6 +317,24 @@ mod tests {
     }
 
     #[test]
+    fn the_reference_page_names_every_table_and_key() {
+        let page = include_str!("../../../docs/manifest.md");
+        let places = [
+            TOP, STILL, CIRCLE, SPLINE, ANY_CAMERA, SPLINE_KEY, TRACK, TRACK_KEY, OUTPUT, RENDER,
+            BLUR, CHECK,
+        ];
+        for place in places {
+            for (key, _) in place.keys {
+                assert!(
+                    page.contains(&format!("`{key}`")) || page.contains(&format!("[{key}]")),
+                    "docs/manifest.md does not name `{key}` of {}",
+                    place.name
+                );
+            }
+        }
+    }
+
+    #[test]
     fn camera_keys_follow_the_path() {
         let found = unknown_keys("[camera]\nradius = 3\n");
         assert_eq!(found.len(), 1);
