@@ -264,13 +264,15 @@ fn has(place: &Place, name: &str) -> bool {
 
 /// The known name nearest to `name` by edit distance (a transposition counting one), if
 /// near enough to be a typo: at most 1 edit for names of up to 4 characters, 2 up to 8,
-/// and a third of the length beyond. Ties go to the first known name.
+/// and a third of the length beyond. Ties go to the first known name. Names of more than
+/// 40 characters are no typo of a known one (and would cost time to compare).
 fn nearest<'a>(name: &str, known: impl Iterator<Item = &'a str>) -> Option<&'a str> {
     let lower = name.to_lowercase();
     let limit = match name.chars().count() {
         0..=4 => 1,
         5..=8 => 2,
-        n => n / 3,
+        n @ 9..=40 => n / 3,
+        _ => return None,
     };
     known
         .map(|k| (strsim::damerau_levenshtein(&lower, k), k))
@@ -292,6 +294,7 @@ mod tests {
         assert_eq!(nearest("tracks", tops.clone()), Some("track"));
         // "zzz" is 3 edits from "fps": no suggestion.
         assert_eq!(nearest("zzz", tops.clone()), None);
+        assert_eq!(nearest(&"x".repeat(41), tops.clone()), None);
         let check = CHECK.keys.iter().map(|(k, _)| *k);
         // fail_percentage: 3 deletions, within 15 / 3 = 5.
         assert_eq!(nearest("fail_percentage", check), Some("fail_percent"));

@@ -48,7 +48,12 @@ impl Counts<'_> {
         let Some(first) = record.first else {
             return error;
         };
-        let on_line: Vec<Token> = Lexer::new(src).filter(|t| t.line == first.line).collect();
+        // A record cut short by the end of the file says nothing of the counts.
+        let mut all = Lexer::new(src);
+        let on_line: Vec<Token> = all.by_ref().filter(|t| t.line == first.line).collect();
+        if error.loc().map(|l| (l.line, l.column)) == Some(all.position()) {
+            return error;
+        }
         // The record must begin its line for the line to be a record.
         if on_line.first() != Some(&first) {
             return error;
