@@ -387,20 +387,56 @@ fn cases() -> Vec<Case> {
         case(
             "extra tokens after the last light",
             &[
+                "40 30", "0 2 10", "0 1 0", "0 20", "1 1 1 1", SPHERE, PLANE, CYLINDER, LIGHT,
+                "  @oops",
+            ],
+            "after the last record",
+            "expected the end of the file after the last light",
+        ),
+        // Issue 16 item 4: a record that runs into the next section is put on the count
+        // that announced it, saying what the count announced.
+        case(
+            "a second light the counts forgot",
+            &[
                 "40 30",
                 "0 2 10",
                 "0 1 0",
                 "0 20",
-                "1 1 1 1",
+                "1 1 1 @1",
                 SPHERE,
                 PLANE,
                 CYLINDER,
                 LIGHT,
                 "# a second light the counts forgot",
-                "  @-5 10 5  1 1 1  1",
+                "  -5 10 5  1 1 1  1",
             ],
-            "after the last record",
-            "expected the end of the file after the last light",
+            "counts, field NLights",
+            "the counts announce 1 light, but line 11, after the last record, holds 7 values, as a light does: should NLights be 2",
+        ),
+        case(
+            "five spheres announced, four given",
+            &[
+                "40 30", "0 2 10", "0 1 0", "0 20", "@5 1 0 1", SPHERE, SPHERE, SPHERE, SPHERE,
+                PLANE, LIGHT,
+            ],
+            "counts, field NSpheres",
+            "the counts announce 5 spheres, but line 10, read as sphere 5 of 5, holds 16 values, as a plane does: is a sphere missing, or should NSpheres be 4? (the error there, 10:1: Radius must be greater than 0, found '0')",
+        ),
+        case(
+            "a sphere the counts forgot, read as a cylinder",
+            &[
+                "40 30", "0 2 10", "0 1 0", "0 20", "@1 0 1 1", SPHERE, SPHERE, CYLINDER, LIGHT,
+            ],
+            "counts, field NSpheres",
+            "the counts announce 1 sphere, but line 7, read as cylinder 1 of 1, holds 14 values, as a sphere does: should NSpheres be 2, or is this sphere out of place?",
+        ),
+        case(
+            "a wrong record that fits no kind stays where it is",
+            &[
+                "40 30", "0 2 10", "0 1 0", "0 20", "2 0 0 0", SPHERE, "@-1 0 1 0   1 1 0 0   0.7 0.3 0 1 0",
+            ],
+            "sphere 2 of 2, field Radius",
+            "Radius must be greater than 0",
         ),
         Case {
             name: "a Latin-1 byte in a comment",

@@ -767,12 +767,31 @@ fn exercise_manifest(m: &Manifest) -> Result<(), String> {
     Ok(())
 }
 
-/// An `Invalid` error names the manifest, and its line and column are inside the text.
+/// An `Invalid` error (or each line of an `Unknown` one) names the manifest, and its line
+/// and column are inside the text.
 fn check_manifest_error(src: &str, err: &ManifestError) -> Result<(), String> {
     let shown = err.to_string();
-    let ManifestError::Invalid { loc, message } = err else {
-        return Err(format!("parsing text gave an I/O error: {shown}"));
+    let entries: Vec<(&whitted::fileloc::FileLoc, &String)> = match err {
+        ManifestError::Invalid { loc, message } => vec![(loc, message)],
+        ManifestError::Unknown(found) => found.iter().map(|(l, m)| (l, m)).collect(),
+        ManifestError::Io { .. } => return Err(format!("parsing text gave an I/O error: {shown}")),
     };
+    let several = matches!(err, ManifestError::Unknown(_));
+    if entries.is_empty() || (several && entries.len() != shown.lines().count()) {
+        return Err(format!("not one line per error: {shown}"));
+    }
+    for ((loc, message), shown) in entries.into_iter().zip(shown.lines()) {
+        check_located_line(src, loc, message, shown)?;
+    }
+    Ok(())
+}
+
+fn check_located_line(
+    src: &str,
+    loc: &whitted::fileloc::FileLoc,
+    message: &str,
+    shown: &str,
+) -> Result<(), String> {
     let (path, line, column) = (&loc.file, loc.line, loc.column);
     if path != MANIFEST_PATH {
         return Err(format!("the error names {path:?}: {shown}"));
@@ -1454,7 +1473,7 @@ fn load_manifest_ok_or_located(bytes: Vec<u8>) -> Result<bool, String> {
         match Manifest::load(&path) {
             Ok(m) => exercise_manifest(&m).map(|()| true),
             Err(ManifestError::Io { source, .. }) => Err(format!("an I/O error: {source}")),
-            Err(e @ ManifestError::Invalid { .. }) => {
+            Err(e @ (ManifestError::Invalid { .. } | ManifestError::Unknown(_))) => {
                 let (line, column) = e.loc().map_or((0, 0), |l| (l.line, l.column));
                 let text = match std::str::from_utf8(&bytes) {
                     Ok(t) => t,

@@ -1,9 +1,9 @@
 //! Fuzz target: `Manifest::parse` on arbitrary text (bytes decoded lossily), then, for a
 //! manifest that parses, its camera and file names on frames in and out of the sequence.
 //!
-//! A crash is any panic, an I/O error from parsing text, an `Invalid` error whose
-//! `path:line:column:` is missing or outside the input, a non-finite camera position or
-//! look-at point, or a file name that is empty or has a `/`.
+//! A crash is any panic, an I/O error from parsing text, an `Invalid` error (or a line of
+//! an `Unknown` one) whose `path:line:column:` is missing or outside the input, a
+//! non-finite camera position or look-at point, or a file name that is empty or has a `/`.
 
 #![no_main]
 
@@ -23,23 +23,28 @@ fuzz_target!(|data: &[u8]| {
 
 fn check_located(src: &str, err: &ManifestError) {
     let shown = err.to_string();
-    let ManifestError::Invalid { loc, .. } = err else {
-        panic!("an I/O error from text: {shown}");
+    let entries: Vec<_> = match err {
+        ManifestError::Invalid { loc, .. } => vec![loc],
+        ManifestError::Unknown(found) => found.iter().map(|(loc, _)| loc).collect(),
+        ManifestError::Io { .. } => panic!("an I/O error from text: {shown}"),
     };
-    let (path, line, column) = (&loc.file, &loc.line, &loc.column);
-    assert_eq!(path, PATH);
-    assert!(
-        shown.starts_with(&format!("{PATH}:{line}:{column}: ")),
-        "{shown}"
-    );
-    let lines: Vec<&str> = src.split('\n').collect();
-    assert!(
-        *line >= 1
-            && *line <= lines.len()
-            && *column >= 1
-            && *column <= lines[line - 1].chars().count() + 1,
-        "outside the input: {shown}"
-    );
+    assert!(!entries.is_empty(), "{shown}");
+    for (loc, shown) in entries.into_iter().zip(shown.lines()) {
+        let (path, line, column) = (&loc.file, &loc.line, &loc.column);
+        assert_eq!(path, PATH);
+        assert!(
+            shown.starts_with(&format!("{PATH}:{line}:{column}: ")),
+            "{shown}"
+        );
+        let lines: Vec<&str> = src.split('\n').collect();
+        assert!(
+            *line >= 1
+                && *line <= lines.len()
+                && *column >= 1
+                && *column <= lines[line - 1].chars().count() + 1,
+            "outside the input: {shown}"
+        );
+    }
 }
 
 fn exercise(m: &Manifest) {

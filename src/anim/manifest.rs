@@ -2,7 +2,9 @@
 //! TOML (`raw`), check every value, resolve paths against the manifest's own folder and
 //! build the camera (`camera`) and the tracks (`tracks`). Every refusal, syntax or meaning, is a
 //! `ManifestError::Invalid` rendered `path:line:column: message` at the offending key or
-//! value; unknown keys are refused and the valid ones named. Never panics.
+//! value; unknown keys and tables are found first (`schema`), all of them in one
+//! `ManifestError::Unknown`, each located with the nearest known name suggested. The user's
+//! reference is docs/manifest.md. Never panics.
 //!
 //! ```toml
 //! scene = "../scenes/orbit.txt"    # required, relative to the manifest's folder
@@ -43,6 +45,7 @@
 mod camera;
 mod locate;
 mod raw;
+mod schema;
 mod sections;
 mod tracks;
 
@@ -153,13 +156,27 @@ pub enum ManifestError {
     },
     #[error("{loc}: {message}")]
     Invalid { loc: FileLoc, message: String },
+    /// Every unknown key or table of the manifest, in file order (at least one): one
+    /// `path:line:column: message` line each.
+    #[error("{}", lines(.0))]
+    Unknown(Vec<(FileLoc, String)>),
+}
+
+/// One `loc: message` line per entry.
+fn lines(found: &[(FileLoc, String)]) -> String {
+    let lines: Vec<String> = found
+        .iter()
+        .map(|(loc, message)| format!("{loc}: {message}"))
+        .collect();
+    lines.join("\n")
 }
 
 impl ManifestError {
-    /// The location of an `Invalid` error.
+    /// The location of an `Invalid` error, or of the first unknown name.
     pub fn loc(&self) -> Option<&FileLoc> {
         match self {
             ManifestError::Invalid { loc, .. } => Some(loc),
+            ManifestError::Unknown(found) => found.first().map(|(loc, _)| loc),
             ManifestError::Io { .. } => None,
         }
     }
@@ -183,6 +200,14 @@ impl Manifest {
     /// Parses manifest text; `path` is where it came from (for errors and relative paths).
     pub fn parse(src: &str, path: &Path) -> Result<Manifest, ManifestError> {
         let source = Source { text: src, path };
+        let unknown = schema::unknown_keys(src);
+        if !unknown.is_empty() {
+            let found = unknown
+                .into_iter()
+                .map(|(span, message)| (source.loc(span), message))
+                .collect();
+            return Err(ManifestError::Unknown(found));
+        }
         let probe: Probe = source.deserialize()?;
         let kind = probe
             .camera

@@ -10,7 +10,8 @@ pub struct Token<'a> {
     pub column: usize,
 }
 
-/// An iterator over the tokens of a source text.
+/// An iterator over the tokens of a source text (cloned to look ahead).
+#[derive(Clone)]
 pub struct Lexer<'a> {
     src: &'a str,
     pos: usize,

@@ -1,6 +1,10 @@
 //! The Scene.txt grammar: records in a fixed order (SPEC §1), checked as they are read.
 //! Every error points at the token that broke a rule and names its place in the
-//! structure; nothing is rendered from a scene that failed.
+//! structure; nothing is rendered from a scene that failed. When a record fails on a line
+//! that holds a record of another kind, the error is put on the count to blame
+//! (`counts`).
+
+mod counts;
 
 use super::error::{FileLoc, SceneError};
 use super::lexer::{Lexer, Token};
@@ -10,6 +14,7 @@ use crate::camera::Camera;
 use crate::fog::Fog;
 use crate::object::{Light, Material, Object};
 use crate::texture::{Color, Texture};
+use counts::{Counts, Record};
 use glam::DVec3;
 
 /// Decodes file bytes as UTF-8, or says where the first invalid byte is.
@@ -246,6 +251,45 @@ impl<'a> Parser<'a> {
         })
     }
 
+    fn sphere(&mut self, i: u64, n: u64, specs: &mut Vec<ShapeSpec>) -> Result<Object> {
+        self.enter("sphere", Some((i, n)));
+        let radius = self.positive("Radius")?;
+        let (center, _) = self.vector(["Cx", "Cy", "Cz"])?;
+        self.object(ShapeSpec::Sphere { center, radius }, specs)
+    }
+
+    fn plane(&mut self, i: u64, n: u64, specs: &mut Vec<ShapeSpec>) -> Result<Object> {
+        self.enter("plane", Some((i, n)));
+        let (point, _) = self.vector(["Px", "Py", "Pz"])?;
+        let normal = self.direction(["Nx", "Ny", "Nz"], "normal")?;
+        self.object(ShapeSpec::Plane { point, normal }, specs)
+    }
+
+    fn cylinder(&mut self, i: u64, n: u64, specs: &mut Vec<ShapeSpec>) -> Result<Object> {
+        self.enter("cylinder", Some((i, n)));
+        let axis = self.direction(["Ax", "Ay", "Az"], "axis")?;
+        let (point, _) = self.vector(["Px", "Py", "Pz"])?;
+        let radius = self.positive("Radius")?;
+        let cylinder = ShapeSpec::Cylinder {
+            axis,
+            point,
+            radius,
+        };
+        self.object(cylinder, specs)
+    }
+
+    fn light(&mut self, i: u64, n: u64) -> Result<Light> {
+        self.enter("light", Some((i, n)));
+        let (position, _) = self.vector(["Lx", "Ly", "Lz"])?;
+        let color = self.color(["R", "G", "B"])?;
+        let intensity = self.ranged("Intensity", 0.0, MAX_INTENSITY)?;
+        Ok(Light {
+            position,
+            color,
+            intensity,
+        })
+    }
+
     fn enter(&mut self, record: &'static str, index: Option<(u64, u64)>) {
         self.place = Place {
             record,
@@ -309,48 +353,30 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
 
     p.enter("counts", None);
     let count = format!("a count from 0 to {MAX_COUNT}");
-    let (ns, _) = p.integer("NSpheres", 0, MAX_COUNT, &count)?;
-    let (np, _) = p.integer("NPlanes", 0, MAX_COUNT, &count)?;
-    let (nc, _) = p.integer("NCylinders", 0, MAX_COUNT, &count)?;
-    let (nl, _) = p.integer("NLights", 0, MAX_COUNT, &count)?;
+    let (ns, s_at) = p.integer("NSpheres", 0, MAX_COUNT, &count)?;
+    let (np, p_at) = p.integer("NPlanes", 0, MAX_COUNT, &count)?;
+    let (nc, c_at) = p.integer("NCylinders", 0, MAX_COUNT, &count)?;
+    let (nl, l_at) = p.integer("NLights", 0, MAX_COUNT, &count)?;
+    let counts = Counts {
+        n: [ns, np, nc, nl],
+        at: [s_at, p_at, c_at, l_at],
+    };
 
     let mut objects = Vec::new();
     let mut specs = Vec::new();
-    for i in 1..=ns {
-        p.enter("sphere", Some((i, ns)));
-        let radius = p.positive("Radius")?;
-        let (center, _) = p.vector(["Cx", "Cy", "Cz"])?;
-        objects.push(p.object(ShapeSpec::Sphere { center, radius }, &mut specs)?);
-    }
-    for i in 1..=np {
-        p.enter("plane", Some((i, np)));
-        let (point, _) = p.vector(["Px", "Py", "Pz"])?;
-        let normal = p.direction(["Nx", "Ny", "Nz"], "normal")?;
-        objects.push(p.object(ShapeSpec::Plane { point, normal }, &mut specs)?);
-    }
-    for i in 1..=nc {
-        p.enter("cylinder", Some((i, nc)));
-        let axis = p.direction(["Ax", "Ay", "Az"], "axis")?;
-        let (point, _) = p.vector(["Px", "Py", "Pz"])?;
-        let radius = p.positive("Radius")?;
-        let cylinder = ShapeSpec::Cylinder {
-            axis,
-            point,
-            radius,
-        };
-        objects.push(p.object(cylinder, &mut specs)?);
-    }
     let mut lights = Vec::new();
-    for i in 1..=nl {
-        p.enter("light", Some((i, nl)));
-        let (position, _) = p.vector(["Lx", "Ly", "Lz"])?;
-        let color = p.color(["R", "G", "B"])?;
-        let intensity = p.ranged("Intensity", 0.0, MAX_INTENSITY)?;
-        lights.push(Light {
-            position,
-            color,
-            intensity,
-        });
+    for (kind, n) in counts.n.into_iter().enumerate() {
+        for index in 1..=n {
+            let first = p.lexer.clone().next();
+            let record = Record { kind, index, first };
+            let read = match kind {
+                0 => p.sphere(index, n, &mut specs).map(|o| objects.push(o)),
+                1 => p.plane(index, n, &mut specs).map(|o| objects.push(o)),
+                2 => p.cylinder(index, n, &mut specs).map(|o| objects.push(o)),
+                _ => p.light(index, n).map(|l| lights.push(l)),
+            };
+            read.map_err(|e| counts.explain(src, file, record, e))?;
+        }
     }
 
     if let Some(tok) = p.lexer.next() {
@@ -359,7 +385,12 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
             "expected the end of the file after the last light, found '{}' (do the counts match the records?)",
             tok.text
         );
-        return Err(p.error(&tok, msg, ""));
+        let record = Record {
+            kind: 4,
+            index: 1,
+            first: Some(tok),
+        };
+        return Err(counts.explain(src, file, record, p.error(&tok, msg, "")));
     }
     Ok(Scene {
         width: width as u32,

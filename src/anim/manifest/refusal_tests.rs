@@ -8,22 +8,48 @@ use super::*;
 fn unknown_keys_are_located_and_the_valid_ones_named() {
     assert_eq!(
         refusal(&with("bogus = 1")),
-        "3:1: unknown field `bogus`, expected one of `scene`, `frames`, `fps`, `camera`, `output`, `render`, `check`, `track`"
+        "3:1: unknown key `bogus`; the top level takes `scene`, `frames`, `fps`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`"
     );
     assert_eq!(
         refusal(&format!("scene = \"s\"\nframes = 3\n{CIRCLE}  spin = 2\n")),
-        "8:3: camera: unknown field `spin`, expected one of `path`, `center`, `radius`, `height`, `start_angle`, `turns`, `look_at`"
+        "8:3: camera: unknown key `spin`; [camera] with path = \"circle\" takes `path`, `center`, `radius`, `height`, `start_angle`, `turns`, `look_at`"
     );
     // A circle's key in a spline is unknown too, and the spline's keys are named.
     let src = TOUR.replace("closed = false", "radius = 3.0");
     assert_eq!(
         refusal(&src),
-        "5:1: camera: unknown field `radius`, expected one of `path`, `closed`, `constant_speed`, `look_at`, `keys`"
+        "5:1: camera: unknown key `radius` (a key of path = \"circle\"); [camera] with path = \"spline\" takes `path`, `closed`, `constant_speed`, `look_at`, `keys`"
     );
     let src = TOUR.replace("{ frame = 120,", "{ frame = 120, fov = 2,");
     assert_eq!(
         refusal(&src),
-        "10:18: camera.keys[1]: unknown field `fov`, expected one of `frame`, `position`, `look_at`"
+        "10:18: camera.keys[1]: unknown key `fov`; a spline key takes `frame`, `position`, `look_at`"
+    );
+}
+
+#[test]
+fn misspelt_tables_and_keys_are_all_located_with_the_nearest_name() {
+    // Issue 16 item 5: `[camra]` was "missing the [camera] table" at 1:1; now it is
+    // located at its name, with the nearest known name, and so is every other unknown
+    // name of the file, in file order.
+    let src = "scene = \"s\"\nframes = 3\n[outptu]\nfromat = \"png\"\n[camra]\npath = \"circle\"\n\
+               [render]\nsamles = 2\nmotion_blur = { shuter = 0.5 }\n[[track]]\ntarget = \"light 1 intensity\"\n\
+               keys = [{ frame = 0, vlaue = 1 }]\n";
+    assert_eq!(
+        refusal(src),
+        "3:2: unknown table `[outptu]` (did you mean `[output]`?); the top level takes `scene`, `frames`, `fps`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`\n\
+         5:2: unknown table `[camra]` (did you mean `[camera]`?); the top level takes `scene`, `frames`, `fps`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`\n\
+         8:1: render: unknown key `samles` (did you mean `samples`?); [render] takes `width`, `height`, `samples`, `motion_blur`\n\
+         9:17: render.motion_blur: unknown key `shuter` (did you mean `shutter`?); motion_blur takes `shutter`, `samples`\n\
+         12:22: track[0].keys[0]: unknown key `vlaue` (did you mean `value`?); a track key takes `frame`, `value`, `ease`"
+    );
+    // A top-level key near a table's name is suggested as the table.
+    assert!(refusal("scene = \"s\"\nframe = 3\n")
+        .starts_with("2:1: unknown key `frame` (did you mean `frames`?)"));
+    // Dotted keys are walked like tables.
+    assert!(
+        refusal("scene = \"s\"\nframes = 3\noutput.fromat = \"png\"\n")
+            .starts_with("3:8: output: unknown key `fromat` (did you mean `format`?)")
     );
 }
 
@@ -72,7 +98,7 @@ fn wrong_types_are_located() {
 fn columns_count_characters_and_lines_survive_crlf() {
     let src = with("output = { name = \"é\", bogus = 1 }");
     assert!(
-        refusal(&src).starts_with("3:24: output: unknown field `bogus`"),
+        refusal(&src).starts_with("3:24: output: unknown key `bogus`"),
         "{}",
         refusal(&src)
     );
@@ -92,7 +118,7 @@ fn the_camera_path_is_checked() {
     let src = "scene = \"s\"\nframes = 3\n[camera]\nradius = 1\n";
     assert_eq!(
         refusal(src),
-        "4:1: camera: unknown field `radius`, expected `look_at`"
+        "4:1: camera: unknown key `radius` (a key of path = \"circle\"); [camera] without a path takes `path`, `look_at`"
     );
     let src = "scene = \"s\"\nframes = 3\n[camera]\npath = \"spiral\"\n";
     assert!(refusal(src)

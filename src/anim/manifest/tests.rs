@@ -59,14 +59,16 @@ pub(super) fn parse(src: &str) -> Result<Manifest, ManifestError> {
     Manifest::parse(src, Path::new("anims/m.toml"))
 }
 
-/// The `line:column: message` of a refused manifest.
+/// The `line:column: message` of a refused manifest (one line per unknown name).
 pub(super) fn refusal(src: &str) -> String {
     match parse(src) {
-        Err(e @ ManifestError::Invalid { .. }) => {
+        Err(e @ (ManifestError::Invalid { .. } | ManifestError::Unknown(_))) => {
             let text = e.to_string();
-            text.strip_prefix("anims/m.toml:")
-                .unwrap_or(&text)
-                .to_string()
+            let lines: Vec<&str> = text
+                .lines()
+                .map(|l| l.strip_prefix("anims/m.toml:").unwrap_or(l))
+                .collect();
+            lines.join("\n")
         }
         other => panic!("expected a refusal, got {other:?}"),
     }
