@@ -28,6 +28,7 @@
 use crate::object::Object;
 use crate::shapes::{Quadric, Shape};
 use glam::DVec3;
+use std::sync::OnceLock;
 
 /// Cells per side of each cube face.
 const N: usize = 8;
@@ -87,6 +88,16 @@ fn face_dir(face: usize, u: f64, v: f64) -> DVec3 {
         1 => DVec3::new(u, s, v),
         _ => DVec3::new(u, v, s),
     }
+}
+
+/// The cones of every cell, in cell order: the same for every grid, computed once.
+fn cones() -> &'static [Cone] {
+    static CONES: OnceLock<Vec<Cone>> = OnceLock::new();
+    CONES.get_or_init(|| {
+        (0..6)
+            .flat_map(|f| (0..N).flat_map(move |i| (0..N).map(move |j| cell_cone(f, i, j))))
+            .collect()
+    })
 }
 
 fn cell_cone(face: usize, i: usize, j: usize) -> Cone {
@@ -222,11 +233,11 @@ impl DirGrid {
         for face in 0..6 {
             for i in 0..N {
                 for j in 0..N {
-                    let cone = cell_cone(face, i, j);
+                    let cone = &cones()[(face * N + i) * N + j];
                     let mut cell = [0u64; 2];
                     for (k, o) in objects.iter().enumerate() {
                         let Some(g) = group(o) else { continue };
-                        if may_hit(&o.shape, center, &cone, delta) {
+                        if may_hit(&o.shape, center, cone, delta) {
                             cell[usize::from(!g)] |= 1 << k;
                         }
                     }

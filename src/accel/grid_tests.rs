@@ -13,9 +13,13 @@ use crate::shapes::{Shape, Sphere};
 use crate::texture::{Color, Texture};
 use glam::DVec3;
 
-/// `scene` plus an opaque dome of radius 500 around everything.
+/// `scene`, and for odd `n` an opaque dome of radius 500 around everything (a scale
+/// that makes the margins wide; without it they are tight).
 fn domed(rng: &mut Rng, n: usize) -> Vec<Object> {
     let mut objects = scene(rng, n);
+    if n % 2 == 0 {
+        return objects;
+    }
     let sky = Texture::Uniform(Color::new(0.7, 0.8, 0.95));
     objects.push(object(
         Shape::Sphere(Sphere::new(DVec3::ZERO, 500.0)),
@@ -48,7 +52,7 @@ fn grazing(objects: &[Object], from: DVec3, rng: &mut Rng) -> Vec<DVec3> {
 #[test]
 fn light_buffer_answers_as_the_linear_scan() {
     let mut answered = 0;
-    for (seed, n) in [(3u64, 8usize), (41, 20), (977, 45)] {
+    for (seed, n) in [(3u64, 8usize), (41, 21), (977, 45), (12, 30)] {
         let mut rng = Rng(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1);
         let objects = domed(&mut rng, n);
         assert!(objects.len() <= 64, "{}", objects.len());
@@ -112,7 +116,7 @@ fn light_buffer_answers_as_the_linear_scan() {
 #[test]
 fn eye_grid_answers_as_the_linear_scan() {
     let mut answered = 0;
-    for (seed, n) in [(5u64, 6usize), (64, 25), (1000, 45)] {
+    for (seed, n) in [(5u64, 6usize), (64, 25), (1000, 45), (77, 12)] {
         let mut rng = Rng(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1);
         let objects = domed(&mut rng, n);
         for scale in [1.0, 10.0, 1e4] {
