@@ -17,7 +17,7 @@ use glam::DVec3;
 /// that makes the margins wide; without it they are tight).
 fn domed(rng: &mut Rng, n: usize) -> Vec<Object> {
     let mut objects = scene(rng, n);
-    if n % 2 == 0 {
+    if n.is_multiple_of(2) {
         return objects;
     }
     let sky = Texture::Uniform(Color::new(0.7, 0.8, 0.95));
