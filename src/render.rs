@@ -5,6 +5,7 @@
 //! n×n stratified grid of sub-pixel centres, each sample clamped before averaging (see
 //! docs/decisions.md); n = 1 samples the pixel centre, as the report does.
 
+use crate::accel::ViewGrid;
 use crate::camera::Camera;
 use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
@@ -44,13 +45,15 @@ pub fn render(
     let row_len = width as usize * 3;
     let mut pixels = vec![0u8; row_len * height as usize];
     let n = samples.max(1);
+    let view = ViewGrid::new(camera.eye(), &tracer.scene().objects);
+    let view = view.as_ref();
     let count = pixels
         .par_chunks_mut(row_len)
         .enumerate()
         .map(|(j, row)| {
             let mut count = RayCount::default();
             for (i, px) in row.chunks_exact_mut(3).enumerate() {
-                let c = pixel(tracer, camera, i as f64, j as f64, n, &mut count);
+                let c = pixel(tracer, view, camera, i as f64, j as f64, n, &mut count);
                 px.copy_from_slice(&[to_byte(c.x), to_byte(c.y), to_byte(c.z)]);
             }
             count
@@ -77,13 +80,15 @@ pub fn render_add(
     sum: &mut [Color],
 ) -> RayCount {
     let n = samples.max(1);
+    let view = ViewGrid::new(camera.eye(), &tracer.scene().objects);
+    let view = view.as_ref();
     sum.par_chunks_mut(width.max(1) as usize)
         .take(height as usize)
         .enumerate()
         .map(|(j, row)| {
             let mut count = RayCount::default();
             for (i, acc) in row.iter_mut().enumerate() {
-                let c = pixel(tracer, camera, i as f64, j as f64, n, &mut count);
+                let c = pixel(tracer, view, camera, i as f64, j as f64, n, &mut count);
                 *acc += c.clamp(Color::ZERO, Color::ONE);
             }
             count
@@ -110,11 +115,20 @@ impl Frame {
     }
 }
 
-/// The colour of pixel (i, j) from an n×n grid of samples.
+/// The colour of pixel (i, j) from an n×n grid of samples; `view`, the frame's first-hit
+/// grid around the eye, when there is one.
 #[inline]
-fn pixel(tracer: &Tracer, camera: &Camera, i: f64, j: f64, n: u32, count: &mut RayCount) -> Color {
+fn pixel(
+    tracer: &Tracer,
+    view: Option<&ViewGrid>,
+    camera: &Camera,
+    i: f64,
+    j: f64,
+    n: u32,
+    count: &mut RayCount,
+) -> Color {
     if n == 1 {
-        return tracer.primary(&camera.ray(i + 0.5, j + 0.5), count);
+        return tracer.primary_in(view, &camera.ray(i + 0.5, j + 0.5), count);
     }
     let step = 1.0 / n as f64;
     let mut sum = Color::ZERO;
@@ -122,7 +136,7 @@ fn pixel(tracer: &Tracer, camera: &Camera, i: f64, j: f64, n: u32, count: &mut R
         for a in 0..n {
             let x = i + (a as f64 + 0.5) * step;
             let y = j + (b as f64 + 0.5) * step;
-            let c = tracer.primary(&camera.ray(x, y), count);
+            let c = tracer.primary_in(view, &camera.ray(x, y), count);
             sum += c.clamp(Color::ZERO, Color::ONE);
         }
     }

@@ -45,6 +45,14 @@ pub trait Occluders {
     /// What a shadow ray from `p` along the unit `to_light` lets through over a distance
     /// `dist`, as the free function `transmission` defines it.
     fn transmission(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color;
+
+    /// The same, knowing that the ray goes to light number `light` of the scene (an
+    /// implementation may keep per-light structures); by default, `transmission`.
+    #[inline]
+    fn transmission_to(&self, light: usize, p: DVec3, to_light: DVec3, dist: f64) -> Color {
+        let _ = light;
+        self.transmission(p, to_light, dist)
+    }
 }
 
 /// The reference: a linear scan over the objects.
@@ -68,7 +76,7 @@ pub fn direct<O: Occluders + ?Sized>(
     shadow_rays: &mut u64,
 ) -> Color {
     let mut out = AMBIENT * color;
-    for light in lights {
+    for (k, light) in lights.iter().enumerate() {
         let to = light.position - p;
         let dist = to.length();
         if dist == 0.0 {
@@ -80,7 +88,7 @@ pub fn direct<O: Occluders + ?Sized>(
             continue;
         }
         *shadow_rays += 1;
-        let through = occluders.transmission(p, l, dist);
+        let through = occluders.transmission_to(k, p, l, dist);
         if through == Color::ZERO {
             continue;
         }

@@ -10,7 +10,7 @@
 //!   (the product of the Kr / Kt along its path) is below 1/256;
 //! - a ray that hits nothing is black.
 
-use crate::accel::Accel;
+use crate::accel::{Accel, LightBuffer, ViewGrid};
 use crate::object::Object;
 use crate::optics::{reflect, refract, Ray};
 use crate::scene::Scene;
@@ -55,10 +55,12 @@ impl std::ops::Add for RayCount {
 /// Traces rays through one scene: everything prepared once per scene (and shared by every
 /// frame of an animation) lives here — the acceleration structures of `accel`. The
 /// structure is shared (`Arc`): frames whose tracks change only colours or lights draw
-/// their own scene values through one structure built once (`with_accel`).
+/// their own scene values through one structure built once (`with_accel`). The light
+/// buffer depends on the lights, so every tracer builds its own (microseconds).
 pub struct Tracer<'a> {
     scene: &'a Scene,
     accel: Arc<Accel>,
+    lights: LightBuffer,
 }
 
 impl<'a> Tracer<'a> {
@@ -69,17 +71,19 @@ impl<'a> Tracer<'a> {
 
     /// Prepares `scene` for tracing: builds its BVH (once; every frame shares it).
     pub fn new(scene: &'a Scene) -> Tracer<'a> {
-        Tracer {
-            scene,
-            accel: Arc::new(Accel::new(&scene.objects)),
-        }
+        Tracer::with_accel(scene, Arc::new(Accel::new(&scene.objects)))
     }
 
     /// A tracer for `scene` that reuses `accel`, built by `Accel::new` from objects with
     /// the same shapes and the same transparency (Kt > 0 or not) as `scene`'s: only
-    /// colours, other coefficients and lights may differ. The caller guarantees it.
+    /// colours, other coefficients and lights may differ. The caller guarantees it. (The
+    /// light buffer, which depends on the lights too, is built here from `scene`.)
     pub fn with_accel(scene: &'a Scene, accel: Arc<Accel>) -> Tracer<'a> {
-        Tracer { scene, accel }
+        Tracer {
+            scene,
+            accel,
+            lights: LightBuffer::new(&scene.objects, &scene.lights),
+        }
     }
 
     /// The acceleration structure, to share with `with_accel`.
@@ -106,8 +110,20 @@ impl<'a> Tracer<'a> {
     /// The colour seen along a camera ray: the traced colour with the scene's fog, not
     /// clamped.
     pub fn primary(&self, ray: &Ray, count: &mut RayCount) -> Color {
+        self.primary_in(None, ray, count)
+    }
+
+    /// `primary`, with the first hit looked up in `view` (the same answer, found
+    /// faster) when it is given and the ray leaves its eye.
+    #[inline]
+    pub fn primary_in(&self, view: Option<&ViewGrid>, ray: &Ray, count: &mut RayCount) -> Color {
         count.primary += 1;
-        match self.nearest(ray) {
+        let objects = &self.scene.objects;
+        let hit = match view.and_then(|v| v.nearest(objects, ray)) {
+            Some(found) => found.map(|(t, i)| (t, &objects[i])),
+            None => self.nearest(ray),
+        };
+        match hit {
             Some((t, obj)) => {
                 let c = self.shade(ray, t, obj, 0, 1.0, count);
                 self.scene.fog.apply(c, t)
@@ -181,5 +197,15 @@ impl Occluders for Tracer<'_> {
     #[inline]
     fn transmission(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color {
         Tracer::transmission(self, p, to_light, dist)
+    }
+
+    /// Through the light buffer when it can answer, else the full query.
+    #[inline]
+    fn transmission_to(&self, light: usize, p: DVec3, to_light: DVec3, dist: f64) -> Color {
+        let objects = &self.scene.objects;
+        match self.lights.transmission(light, objects, p, to_light, dist) {
+            Some(c) => c,
+            None => Tracer::transmission(self, p, to_light, dist),
+        }
     }
 }

@@ -1651,8 +1651,8 @@ fn track_target() -> BoxedStrategy<String> {
         "size",
     ];
     (
-        prop::sample::select(&kinds[..]),
-        prop::sample::select(&fields[..]),
+        prop::sample::select(kinds.to_vec()),
+        prop::sample::select(fields.to_vec()),
     )
         .prop_map(|(k, f)| format!("\"{k} {f}\""))
         .boxed()

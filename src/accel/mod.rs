@@ -13,8 +13,14 @@
 //!   rounding of the product is the same.
 
 mod bvh;
+mod dirgrid;
+mod lightbuf;
+mod view;
 
 pub use bvh::{Bvh, Prim};
+pub use dirgrid::DirGrid;
+pub use lightbuf::LightBuffer;
+pub use view::ViewGrid;
 
 use crate::object::Object;
 use crate::optics::Ray;
@@ -237,6 +243,9 @@ impl Accel {
 }
 
 #[cfg(test)]
+mod grid_tests;
+
+#[cfg(test)]
 mod tests {
     use super::*;
     use crate::bump::Bump;
@@ -246,20 +255,20 @@ mod tests {
     use crate::texture::Texture;
 
     /// xorshift in −1..1, deterministic.
-    struct Rng(u64);
+    pub(super) struct Rng(pub(super) u64);
     impl Rng {
-        fn next(&mut self) -> f64 {
+        pub(super) fn next(&mut self) -> f64 {
             self.0 ^= self.0 << 13;
             self.0 ^= self.0 >> 7;
             self.0 ^= self.0 << 17;
             (self.0 >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
         }
-        fn vec(&mut self, s: f64) -> DVec3 {
+        pub(super) fn vec(&mut self, s: f64) -> DVec3 {
             DVec3::new(self.next() * s, self.next() * s, self.next() * s)
         }
     }
 
-    fn object(shape: Shape, kt: f64, texture: Texture) -> Object {
+    pub(super) fn object(shape: Shape, kt: f64, texture: Texture) -> Object {
         Object {
             shape,
             texture,
@@ -275,7 +284,7 @@ mod tests {
 
     /// `n` spheres (some of them twice, at the same place: ties), a floor, a tilted plane
     /// and two cylinders; about a third of everything is transparent.
-    fn scene(rng: &mut Rng, n: usize) -> Vec<Object> {
+    pub(super) fn scene(rng: &mut Rng, n: usize) -> Vec<Object> {
         let mut objects = Vec::new();
         for i in 0..n {
             let c = rng.vec(6.0);
@@ -322,7 +331,7 @@ mod tests {
         objects
     }
 
-    fn linear_nearest(objects: &[Object], ray: &Ray) -> Option<(u64, usize)> {
+    pub(super) fn linear_nearest(objects: &[Object], ray: &Ray) -> Option<(u64, usize)> {
         let mut best = None;
         let mut t_max = f64::INFINITY;
         for (i, obj) in objects.iter().enumerate() {
@@ -334,7 +343,7 @@ mod tests {
         best
     }
 
-    fn bits(c: Color) -> [u64; 3] {
+    pub(super) fn bits(c: Color) -> [u64; 3] {
         [c.x.to_bits(), c.y.to_bits(), c.z.to_bits()]
     }
 

@@ -1,0 +1,394 @@
+//! Direction grids: for one point (a light, or the eye), the directions around it cut
+//! into the cells of a cube map, each cell listing the objects a ray from that point
+//! along one of its directions may meet — the light buffer of Haines and Greenberg (1986)
+//! for shadow rays, and first-hit culling for camera rays (every camera ray leaves the
+//! eye). A query looks up its direction's cell and tests only that cell's objects.
+//!
+//! Exactness. A cell lists every object whose (widened) cone of directions seen from the
+//! point overlaps the cell's (widened) cone; an object left out cannot be hit by a ray
+//! in that cell, because the shape tests' rounding is far smaller than the widening:
+//! - a sphere of radius r at distance D subtends asin((r + δ)/D); closer than r + δ, it
+//!   is in every cell. δ = `PAD`·(4B + 1), B bounding every coordinate involved (queries
+//!   from points beyond B are not answered: the caller falls back to the full scan); the
+//!   sphere test's error is about 1e-8·B, a few thousand times less;
+//! - a plane is left out of the cells whose directions all point away from it (by more
+//!   than the margin), from a point more than δ away from it: a ray between the point and
+//!   the plane's far side never crosses it;
+//! - a cylinder (a quadric made by `Quadric::cylinder`) is left out of the cells whose
+//!   directions, seen along its axis, all pass further than its radius + δ from it; any
+//!   other quadric is in every cell;
+//! - cell cones are bounded by their corners (the widest angle from the cell's centre
+//!   direction is at a corner), widened by `ANGLE_PAD`, which covers the rounding of the
+//!   lookup and of the cone tests at build time.
+//!
+//! Cells list their objects in object order, in two groups chosen by the builder (shadow
+//! rays: opaque, then transparent), so that a caller looping over a cell's list meets the
+//! objects in the order of the linear scan.
+
+use crate::object::Object;
+use crate::shapes::{Quadric, Shape};
+use glam::DVec3;
+use std::sync::OnceLock;
+
+/// Cells per side of each cube face.
+const N: usize = 8;
+/// Relative distance margin, as in the BVH (`bvh::PAD`).
+const PAD: f64 = 1e-5;
+/// Angular margin of every cell cone, in radians.
+const ANGLE_PAD: f64 = 1e-6;
+/// Objects beyond which no grid is built (its build would cost more than it saves; the
+/// BVH answers instead).
+pub const GRID_MAX_OBJECTS: usize = 64;
+
+/// Which group of a cell an object goes into: `None` leaves it out altogether.
+pub type Group = Option<bool>;
+
+/// The cells around one point.
+#[derive(Clone, Debug)]
+pub struct DirGrid {
+    center: DVec3,
+    /// Queries from points with a coordinate beyond this are not answered.
+    bound: f64,
+    /// The distance margin δ the cones were widened by.
+    delta: f64,
+    /// Per cell: the objects of the first group and of the second, as bit sets (bit k:
+    /// object k; at most 64 objects).
+    cells: Vec<[u64; 2]>,
+}
+
+/// A set of object indices below 64, iterated in increasing order (object order).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Objects(pub u64);
+
+impl Iterator for Objects {
+    type Item = usize;
+    #[inline(always)]
+    fn next(&mut self) -> Option<usize> {
+        if self.0 == 0 {
+            return None;
+        }
+        let k = self.0.trailing_zeros() as usize;
+        self.0 &= self.0 - 1;
+        Some(k)
+    }
+}
+
+/// A cell's cone: unit axis, sine and cosine of its widened half-angle.
+struct Cone {
+    axis: DVec3,
+    sin: f64,
+    cos: f64,
+}
+
+/// The direction through face coordinates (u, v) in −1..1 of cube face `face`.
+fn face_dir(face: usize, u: f64, v: f64) -> DVec3 {
+    let s = if face.is_multiple_of(2) { 1.0 } else { -1.0 };
+    match face / 2 {
+        0 => DVec3::new(s, u, v),
+        1 => DVec3::new(u, s, v),
+        _ => DVec3::new(u, v, s),
+    }
+}
+
+/// The cones of every cell, in cell order: the same for every grid, computed once.
+fn cones() -> &'static [Cone] {
+    static CONES: OnceLock<Vec<Cone>> = OnceLock::new();
+    CONES.get_or_init(|| {
+        (0..6)
+            .flat_map(|f| (0..N).flat_map(move |i| (0..N).map(move |j| cell_cone(f, i, j))))
+            .collect()
+    })
+}
+
+fn cell_cone(face: usize, i: usize, j: usize) -> Cone {
+    let at = |k: usize| -1.0 + 2.0 * k as f64 / N as f64;
+    let (u0, u1, v0, v1) = (at(i), at(i + 1), at(j), at(j + 1));
+    let axis = face_dir(face, 0.5 * (u0 + u1), 0.5 * (v0 + v1)).normalize();
+    let mut half = 0.0f64;
+    for (u, v) in [(u0, v0), (u0, v1), (u1, v0), (u1, v1)] {
+        let c = face_dir(face, u, v).normalize();
+        half = half.max(axis.dot(c).clamp(-1.0, 1.0).acos());
+    }
+    let half = half + ANGLE_PAD;
+    Cone {
+        axis,
+        sin: half.sin(),
+        cos: half.cos(),
+    }
+}
+
+/// The largest coordinate, in absolute value, of the point and of every shape's defining
+/// points (the far side of spheres included); `None` when something is not finite.
+fn bound(center: DVec3, objects: &[Object]) -> Option<f64> {
+    let mut b = center.abs().max_element();
+    for o in objects {
+        let r = match o.shape {
+            Shape::Sphere(s) => s.center.abs().max_element() + s.radius,
+            Shape::Plane(p) => p.point.abs().max_element(),
+            Shape::Quadric(q) => q.origin.abs().max_element(),
+        };
+        b = b.max(r);
+        if !r.is_finite() {
+            return None;
+        }
+    }
+    b.is_finite().then_some(b)
+}
+
+/// May a ray from `from` along a direction of `cone` meet `shape`? (False only when it
+/// cannot, widened by `delta`.)
+fn may_hit(shape: &Shape, from: DVec3, cone: &Cone, delta: f64) -> bool {
+    match shape {
+        Shape::Sphere(s) => {
+            let to = s.center - from;
+            let d = to.length();
+            let r = s.radius + delta;
+            if d <= r {
+                return true;
+            }
+            let sin = r / d;
+            let cos = (1.0 - sin * sin).sqrt();
+            // angle(axis, to) ≤ cell half-angle + sphere half-angle, in cosines.
+            cone.axis.dot(to / d) >= cone.cos * cos - cone.sin * sin - 1e-12
+        }
+        Shape::Plane(p) => {
+            let h = p.normal().dot(from - p.point);
+            if h.abs() <= delta {
+                return true;
+            }
+            let away = if h > 0.0 { p.normal() } else { -p.normal() };
+            // Every direction of the cone points away from the plane: it is never met.
+            cone.axis.dot(away) <= cone.sin + 1e-9
+        }
+        Shape::Quadric(q) => match cylinder_of(q) {
+            Some((axis, point, radius)) => {
+                cylinder_may_hit(axis, point, radius + delta, from, cone)
+            }
+            None => true,
+        },
+    }
+}
+
+/// The axis, a point of the axis and the radius of a quadric made by
+/// `Quadric::cylinder`, recovered from its coefficients (and checked: rebuilt, they must
+/// agree to 1e-9); `None` for any other quadric.
+fn cylinder_of(q: &Quadric) -> Option<(DVec3, DVec3, f64)> {
+    let c = &q.coef;
+    let (xx, yy, zz) = (1.0 - c[0], 1.0 - c[1], 1.0 - c[2]);
+    let a = if xx >= yy && xx >= zz {
+        let x = xx.sqrt();
+        DVec3::new(x, -c[3] / (2.0 * x), -c[4] / (2.0 * x))
+    } else if yy >= zz {
+        let y = yy.sqrt();
+        DVec3::new(-c[3] / (2.0 * y), y, -c[5] / (2.0 * y))
+    } else {
+        let z = zz.sqrt();
+        DVec3::new(-c[4] / (2.0 * z), -c[5] / (2.0 * z), z)
+    };
+    let radius = (-c[9]).sqrt();
+    if !(a.is_finite() && radius.is_finite() && (a.length() - 1.0).abs() < 1e-9) {
+        return None;
+    }
+    let back = Quadric::cylinder(a, q.origin, radius);
+    let same = back.coef.iter().zip(c).all(|(x, y)| (x - y).abs() <= 1e-9);
+    same.then_some((a, q.origin, radius))
+}
+
+/// May a ray from `from` along a direction of `cone` meet the infinite cylinder of
+/// radius `radius` (already widened) around the line through `point` along the unit
+/// `axis`? In the plane across the axis the cylinder is a disc, seen from `from` within
+/// asin(radius/ρ) of the direction to the axis; the cone's directions project within
+/// asin(sin φ / sin α) of its axis' projection (α its angle to the cylinder's axis, φ
+/// its half-angle), or onto every direction when α ≤ φ.
+fn cylinder_may_hit(axis: DVec3, point: DVec3, radius: f64, from: DVec3, cone: &Cone) -> bool {
+    let lq = from - point;
+    let w = lq - lq.dot(axis) * axis;
+    let rho = w.length();
+    if rho <= radius || rho.is_nan() {
+        return true;
+    }
+    let phi = cone.sin.atan2(cone.cos);
+    let alpha = cone.axis.dot(axis).abs().min(1.0).acos();
+    if alpha <= phi + ANGLE_PAD {
+        return true;
+    }
+    let spread = (cone.sin / alpha.sin()).min(1.0).asin();
+    let proj = cone.axis - cone.axis.dot(axis) * axis;
+    let toward = -w / rho;
+    let off = (proj.normalize().dot(toward)).clamp(-1.0, 1.0).acos();
+    off <= spread + (radius / rho).min(1.0).asin() + ANGLE_PAD
+}
+
+impl DirGrid {
+    /// The grid around `center` over `objects`, `group` sorting each object into the
+    /// first or second list of a cell, or neither. `None` for too many objects or
+    /// coordinates that are not finite.
+    pub fn build(
+        center: DVec3,
+        objects: &[Object],
+        group: impl Fn(&Object) -> Group,
+    ) -> Option<DirGrid> {
+        let (bound, delta) = Self::margins(center, objects)?;
+        let mut cells = Vec::with_capacity(6 * N * N);
+        for face in 0..6 {
+            for i in 0..N {
+                for j in 0..N {
+                    let cone = &cones()[(face * N + i) * N + j];
+                    let mut cell = [0u64; 2];
+                    for (k, o) in objects.iter().enumerate() {
+                        let Some(g) = group(o) else { continue };
+                        if may_hit(&o.shape, center, cone, delta) {
+                            cell[usize::from(!g)] |= 1 << k;
+                        }
+                    }
+                    cells.push(cell);
+                }
+            }
+        }
+        Some(DirGrid {
+            center,
+            bound,
+            delta,
+            cells,
+        })
+    }
+
+    /// The query bound and the distance margin δ of a grid around `center` over
+    /// `objects` (`None`: no grid, too many objects or coordinates not finite).
+    pub fn margins(center: DVec3, objects: &[Object]) -> Option<(f64, f64)> {
+        if objects.len() > GRID_MAX_OBJECTS {
+            return None;
+        }
+        // Queries come from points within 2B + 1; δ covers every coordinate up to there.
+        let bound = 2.0 * bound(center, objects)? + 1.0;
+        Some((bound, PAD * (4.0 * bound + 1.0)))
+    }
+
+    /// The point the grid is around.
+    #[inline]
+    pub fn center(&self) -> DVec3 {
+        self.center
+    }
+
+    /// The distance margin its cones were widened by.
+    pub fn delta(&self) -> f64 {
+        self.delta
+    }
+
+    /// Whether a query from `p` may use the grid (its coordinates within the bound).
+    #[inline(always)]
+    pub fn covers(&self, p: DVec3) -> bool {
+        p.abs().max_element() <= self.bound
+    }
+
+    /// The two lists of the cell of direction `d` (from the centre; any length), or
+    /// `None` for a direction that is zero or not finite.
+    #[inline(always)]
+    pub fn cell(&self, d: DVec3) -> Option<(Objects, Objects)> {
+        let a = d.abs();
+        // Zero, infinite or NaN components: no cell (the caller falls back).
+        let sum = a.x + a.y + a.z;
+        if !(sum > 0.0 && sum < f64::INFINITY) {
+            return None;
+        }
+        let (face, u, v, m) = if a.x >= a.y && a.x >= a.z {
+            ((d.x < 0.0) as usize, d.y, d.z, a.x)
+        } else if a.y >= a.z {
+            (2 + (d.y < 0.0) as usize, d.x, d.z, a.y)
+        } else {
+            (4 + (d.z < 0.0) as usize, d.x, d.y, a.z)
+        };
+        let k = 0.5 * N as f64 / m;
+        // ⌊(u/m + 1)·N/2⌋, clamped to 0..N−1 (u = m gives N; rounding may put a
+        // direction on a cell boundary in its neighbour, which the cones' margin covers).
+        let i = ((u * k + 0.5 * N as f64) as i32).clamp(0, N as i32 - 1) as usize;
+        let j = ((v * k + 0.5 * N as f64) as i32).clamp(0, N as i32 - 1) as usize;
+        let [first, second] = self.cells[(face * N + i) * N + j];
+        Some((Objects(first), Objects(second)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bump::Bump;
+    use crate::object::Material;
+    use crate::shapes::{Plane, Sphere};
+    use crate::texture::{Color, Texture};
+
+    fn obj(shape: Shape) -> Object {
+        Object {
+            shape,
+            texture: Texture::Uniform(Color::ONE),
+            material: Material {
+                kd: 1.0,
+                kr: 0.0,
+                kt: 0.0,
+                ior: 1.0,
+                bump: Bump::None,
+            },
+        }
+    }
+
+    fn set(o: Objects) -> Vec<usize> {
+        o.collect()
+    }
+
+    #[test]
+    fn bit_sets_iterate_in_object_order() {
+        assert_eq!(set(Objects(0b1010_0101)), vec![0, 2, 5, 7]);
+        assert_eq!(set(Objects(1 << 63)), vec![63]);
+        assert_eq!(set(Objects(0)), Vec::<usize>::new());
+    }
+
+    #[test]
+    fn cylinder_recovered_from_its_coefficients() {
+        let q = Quadric::cylinder(DVec3::new(0.0, 2.0, 0.0), DVec3::new(1.0, 0.0, 2.0), 0.35);
+        let (a, p, r) = cylinder_of(&q).unwrap();
+        assert_eq!((a, p), (DVec3::Y, DVec3::new(1.0, 0.0, 2.0)));
+        assert!((r - 0.35).abs() < 1e-15);
+        let slant = DVec3::new(1.0, 2.0, -2.0) / 3.0;
+        let (a, _, _) = cylinder_of(&Quadric::cylinder(slant, DVec3::ZERO, 1.0)).unwrap();
+        assert!((a - slant).length() < 1e-15, "{a}");
+        // A sphere as a quadric (x² + y² + z² − 1) is no cylinder.
+        let mut ball = q;
+        ball.coef = [1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, -1.0];
+        assert_eq!(cylinder_of(&ball), None);
+    }
+
+    #[test]
+    fn cells_keep_only_what_their_directions_can_meet() {
+        // From the origin: a sphere of radius 1 at (10, 0, 0) (seen within asin(0.1),
+        // 5.7°, of +x), the floor y = −2, and a vertical cylinder of radius 0.5 through
+        // (0, 0, −10) (within asin(0.05), 2.9°, of −z azimuthally, at every height).
+        let objects = [
+            obj(Shape::Sphere(Sphere::new(DVec3::new(10.0, 0.0, 0.0), 1.0))),
+            obj(Shape::Plane(Plane::new(
+                DVec3::new(0.0, -2.0, 0.0),
+                DVec3::Y,
+            ))),
+            obj(Shape::Quadric(Quadric::cylinder(
+                DVec3::Y,
+                DVec3::new(0.0, 0.0, -10.0),
+                0.5,
+            ))),
+        ];
+        let g = DirGrid::build(DVec3::ZERO, &objects, |_| Some(true)).unwrap();
+        let at = |d: DVec3| set(g.cell(d).unwrap().0);
+        // +x, level: the sphere, and the floor (the cell's lower edge is the horizon, and
+        // its margin reaches just below it).
+        assert_eq!(at(DVec3::X), vec![0, 1]);
+        assert_eq!(at(DVec3::new(1.0, 0.3, 0.0)), Vec::<usize>::new()); // above the sphere
+        assert_eq!(at(DVec3::new(1.0, -0.01, 0.02)), vec![0, 1]); // slightly down: the floor
+                                                                  // Straight up or down, the cell holds directions parallel to the cylinder's axis:
+                                                                  // it is kept (the test is by bounding cones), as the floor is below.
+        assert_eq!(at(DVec3::Y), vec![2]);
+        assert_eq!(at(-DVec3::Y), vec![1, 2]);
+        assert_eq!(at(-DVec3::Z), vec![1, 2]); // towards the cylinder, at the horizon
+        assert_eq!(at(DVec3::new(0.01, 0.3, -1.0)), vec![2]); // towards it, above
+        assert_eq!(at(DVec3::new(0.0, 0.9, -1.0)), vec![2]); // up along it, still
+        assert_eq!(at(DVec3::new(1.0, 0.5, -1.0)), Vec::<usize>::new()); // beside it
+        assert_eq!(g.cell(DVec3::ZERO), None);
+        assert_eq!(g.cell(DVec3::new(f64::NAN, 1.0, 0.0)), None);
+    }
+}

@@ -1,0 +1,142 @@
+//! The direction grids against the linear scans, bit for bit: the light buffer's shadow
+//! queries against `shading::transmission`, the eye grid's first hits against the linear
+//! nearest-hit scan, on random scenes (spheres with duplicates, planes, axis-aligned and
+//! slanted cylinders, transparent objects, NaN Kt, a sky dome around everything) and on
+//! rays grazing the silhouettes of the spheres and cylinders seen from the grid's centre.
+
+use super::tests::{bits, linear_nearest, object, scene, Rng};
+use super::{LightBuffer, ViewGrid};
+use crate::object::{Light, Object};
+use crate::optics::Ray;
+use crate::shading;
+use crate::shapes::{Shape, Sphere};
+use crate::texture::{Color, Texture};
+use glam::DVec3;
+
+/// `scene`, and for odd `n` an opaque dome of radius 500 around everything (a scale
+/// that makes the margins wide; without it they are tight).
+fn domed(rng: &mut Rng, n: usize) -> Vec<Object> {
+    let mut objects = scene(rng, n);
+    if n.is_multiple_of(2) {
+        return objects;
+    }
+    let sky = Texture::Uniform(Color::new(0.7, 0.8, 0.95));
+    objects.push(object(
+        Shape::Sphere(Sphere::new(DVec3::ZERO, 500.0)),
+        0.0,
+        sky,
+    ));
+    objects
+}
+
+/// Points seen from `from` just inside or outside the silhouette of every sphere and
+/// along the edges of every cylinder (nudged by a few 1e-9 of the radius), `far` beyond.
+fn grazing(objects: &[Object], from: DVec3, rng: &mut Rng) -> Vec<DVec3> {
+    let mut dirs = Vec::new();
+    for o in objects {
+        let (c, r) = match o.shape {
+            Shape::Sphere(s) => (s.center, s.radius),
+            Shape::Quadric(q) => (q.origin + rng.vec(3.0).project_onto(DVec3::Y), 0.35),
+            Shape::Plane(_) => continue,
+        };
+        let to = c - from;
+        let side = to
+            .any_orthonormal_vector()
+            .lerp(to.cross(DVec3::X), rng.next());
+        let edge = c + side.normalize() * r * (1.0 + rng.next() * 1e-9);
+        dirs.push((edge - from).normalize());
+    }
+    dirs
+}
+
+#[test]
+fn light_buffer_answers_as_the_linear_scan() {
+    let mut answered = 0;
+    for (seed, n) in [(3u64, 8usize), (41, 21), (977, 45), (12, 30)] {
+        let mut rng = Rng(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1);
+        let objects = domed(&mut rng, n);
+        assert!(objects.len() <= 64, "{}", objects.len());
+        let lights: Vec<Light> = (0..4)
+            .map(|k| Light {
+                // One light inside a sphere (object 0), the others anywhere.
+                position: if k == 0 {
+                    match objects[0].shape {
+                        Shape::Sphere(s) => s.center,
+                        _ => unreachable!(),
+                    }
+                } else {
+                    rng.vec(12.0)
+                },
+                color: Color::ONE,
+                intensity: 1.0,
+            })
+            .collect();
+        let buffer = LightBuffer::new(&objects, &lights);
+        for (k, light) in lights.iter().enumerate() {
+            let mut points: Vec<DVec3> = (0..3000).map(|_| rng.vec(10.0)).collect();
+            // Points on the surfaces (where shadow rays start), far out on the floor, on
+            // the dome, and beyond the grazing directions.
+            for i in 0..3000 {
+                let ray = Ray::new(rng.vec(9.0), rng.vec(1.0).normalize());
+                if let Some(t) = linear_nearest(&objects, &ray) {
+                    points.push(ray.at(f64::from_bits(t.0)));
+                }
+                if i % 10 == 0 {
+                    points.push(DVec3::new(rng.next() * 1e6, -6.0, rng.next() * 1e6));
+                }
+            }
+            for d in grazing(&objects, light.position, &mut rng) {
+                for far in [5.0, 20.0, 300.0] {
+                    points.push(light.position + d * far);
+                }
+            }
+            for p in points {
+                let to = light.position - p;
+                let dist = to.length();
+                if dist == 0.0 {
+                    continue;
+                }
+                let l = to / dist;
+                let want = shading::transmission(&objects, p, l, dist);
+                if let Some(got) = buffer.transmission(k, &objects, p, l, dist) {
+                    assert_eq!(
+                        bits(got),
+                        bits(want),
+                        "light {k} from {p} to {}",
+                        light.position
+                    );
+                    answered += 1;
+                }
+            }
+        }
+    }
+    assert!(answered > 60_000, "{answered}");
+}
+
+#[test]
+fn eye_grid_answers_as_the_linear_scan() {
+    let mut answered = 0;
+    for (seed, n) in [(5u64, 6usize), (64, 25), (1000, 45), (77, 12)] {
+        let mut rng = Rng(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1);
+        let objects = domed(&mut rng, n);
+        for scale in [1.0, 10.0, 1e4] {
+            let eye = rng.vec(scale);
+            let view = ViewGrid::new(eye, &objects).expect("a grid");
+            let mut dirs: Vec<DVec3> = (0..5000).map(|_| rng.vec(1.0).normalize()).collect();
+            dirs.extend([DVec3::X, -DVec3::Y, DVec3::Z, DVec3::Y]);
+            dirs.extend(grazing(&objects, eye, &mut rng));
+            for d in dirs {
+                let ray = Ray::new(eye, d);
+                let want = linear_nearest(&objects, &ray);
+                let got = view.nearest(&objects, &ray).expect("the eye's ray");
+                assert_eq!(got.map(|(t, i)| (t.to_bits(), i)), want, "{ray:?}");
+                answered += 1;
+            }
+            // Another origin: not the grid's to answer.
+            assert!(view
+                .nearest(&objects, &Ray::new(eye + DVec3::X, DVec3::Y))
+                .is_none());
+        }
+    }
+    assert!(answered > 45_000);
+}
