@@ -11,8 +11,9 @@ use std::process::ExitCode;
 use std::sync::atomic::AtomicUsize;
 use std::sync::Arc;
 use std::time::Instant;
+use whitted::anim::check::export::{Exporter, Html, Json, Junit, Sink, Table};
+use whitted::anim::check::{self, CheckError, CheckOptions, Missing, Overrides};
 use whitted::anim::pipeline::{render_to_folder, render_to_stream, Project};
-use whitted::anim::regress;
 use whitted::anim::select::select;
 use whitted::anim::video::render_to_video;
 use whitted::anim::{AnimError, Animation, Summary};
@@ -68,9 +69,19 @@ struct CheckArgs {
     /// A frame fails when any channel differs by more than this (0..255).
     #[arg(long)]
     hard_fail: Option<u8>,
+    /// A frame fails when its mean FLIP error (NVIDIA's perceptual metric, 0..1) is
+    /// above this.
+    #[arg(long, value_name = "X")]
+    flip: Option<f64>,
     /// Print the results as JSON on standard output instead of a table.
     #[arg(long)]
     json: bool,
+    /// Also write the results as JUnit XML into this file.
+    #[arg(long, value_name = "FILE")]
+    junit: Option<PathBuf>,
+    /// Also write a report page, DIR/index.html, with the images of failing frames.
+    #[arg(long, value_name = "DIR")]
+    html: Option<PathBuf>,
 }
 
 /// Options shared by every subcommand.
@@ -219,12 +230,13 @@ fn render_command(args: RenderArgs) -> Result<(), AnimError> {
 fn bless_command(args: BlessArgs) -> Result<(), AnimError> {
     let project = Project::load(args.common.manifest())?;
     let anim = Animation::new(&project.manifest, &project.scene)?;
-    let (frames, refs) = regress::targets(
+    let (frames, refs) = check::targets(
         &project.manifest,
         args.common.frames.as_deref(),
         args.references.as_deref(),
-    )?;
-    let paths = pool(args.common.threads)?.install(|| regress::bless(&anim, &frames, &refs))?;
+    )
+    .map_err(with_flags)?;
+    let paths = pool(args.common.threads)?.install(|| check::bless(&anim, &frames, &refs))?;
     if !args.common.quiet {
         eprintln!(
             "animate: blessed {} reference(s) in {}",
@@ -235,49 +247,54 @@ fn bless_command(args: BlessArgs) -> Result<(), AnimError> {
     Ok(())
 }
 
+/// The library's check error, with the flag that settles it.
+fn with_flags(e: CheckError) -> AnimError {
+    let hint = match &e {
+        CheckError::NoCheckSection { what, .. } => match what {
+            Missing::Frames => "; name them with --frames",
+            Missing::References => "; name it with --references",
+        },
+        CheckError::FailPercent(_) => " (--fail-percent or [check] fail_percent)",
+        CheckError::Flip(_) => " (--flip or [check] flip)",
+        CheckError::Frames(_) => "",
+    };
+    AnimError::Usage(format!("{e}{hint}"))
+}
+
 /// Runs a check; `Ok(false)` when a frame failed.
 fn check_command(args: CheckArgs) -> Result<bool, AnimError> {
     let common = &args.bless.common;
     let project = Project::load(common.manifest())?;
-    let manifest = &project.manifest;
-    let anim = Animation::new(manifest, &project.scene)?;
-    let (frames, refs) = regress::targets(
-        manifest,
-        common.frames.as_deref(),
-        args.bless.references.as_deref(),
-    )?;
-    let tol = regress::tolerance(manifest, args.fail, args.fail_percent, args.hard_fail)?;
-    let report = args
-        .report
-        .clone()
-        .unwrap_or_else(|| regress::default_report(manifest));
-    let results =
-        pool(common.threads)?.install(|| regress::check(&anim, &frames, &refs, tol, &report))?;
-    let pass = results.iter().all(|r| r.comparison.pass);
+    let anim = Animation::new(&project.manifest, &project.scene)?;
+    let over = Overrides {
+        frames: common.frames.as_deref(),
+        references: args.bless.references.as_deref(),
+        report: args.report.as_deref(),
+        fail: args.fail,
+        fail_percent: args.fail_percent,
+        hard_fail: args.hard_fail,
+        flip: args.flip,
+    };
+    let opts = CheckOptions::new(&project.manifest, &over).map_err(with_flags)?;
+    let report = pool(common.threads)?.install(|| check::check(&anim, &opts))?;
+    let mut exporters: Vec<Box<dyn Exporter>> = Vec::new();
     if args.json {
-        let doc = serde_json::json!({
-            "manifest": manifest.path,
-            "references": refs,
-            "report": report,
-            "tolerance": tol,
-            "pass": pass,
-            "frames": results,
-        });
-        println!("{}", serde_json::to_string_pretty(&doc).unwrap_or_default());
+        exporters.push(Box::new(Json(Sink::Stdout)));
     } else {
-        print!("{}", regress::table(&results));
-        let failed = results.iter().filter(|r| !r.comparison.pass).count();
-        if failed == 0 {
-            println!("PASS: {} frame(s) within tolerance", results.len());
-        } else {
-            println!(
-                "FAIL: {failed} of {} frame(s); rendered frames and diff images in {}",
-                results.len(),
-                report.display()
-            );
-        }
+        exporters.push(Box::new(Table(Sink::Stdout)));
     }
-    Ok(pass)
+    if let Some(file) = args.junit {
+        exporters.push(Box::new(Junit(file)));
+    }
+    if let Some(dir) = args.html {
+        exporters.push(Box::new(Html(dir)));
+    }
+    for exporter in exporters {
+        exporter
+            .export(&report)
+            .map_err(|e| AnimError::Usage(e.to_string()))?;
+    }
+    Ok(report.pass)
 }
 
 /// The one-line summary: frames, wall time, frames/s, rays/s.

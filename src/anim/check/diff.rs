@@ -4,7 +4,8 @@
 //! by more than `fail`; a frame fails when more than `fail_percent` % of its pixels fail,
 //! or when any channel differs by more than `hard_fail`. Alongside the verdict: the largest
 //! difference and where, the mean absolute error per channel, and the PSNR
-//! 10·log10(255² / MSE) (infinite for identical frames).
+//! 10·log10(255² / MSE) (infinite for identical frames). A FLIP limit (`flip.rs`) may be
+//! added to the tolerance; [`Tolerance::failed`] names every limit a frame breaks.
 
 use crate::render::Frame;
 use serde::Serialize;
@@ -15,6 +16,31 @@ pub struct Tolerance {
     pub fail: u8,
     pub fail_percent: f64,
     pub hard_fail: u8,
+    /// The largest mean FLIP error a frame may have; `None`: FLIP is not computed.
+    pub flip: Option<f64>,
+}
+
+/// A limit of the tolerance that a frame can break.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Limit {
+    /// More than `fail_percent` % of the pixels differ by more than `fail`.
+    FailPercent,
+    /// A channel differs by more than `hard_fail`.
+    HardFail,
+    /// The mean FLIP error is above `flip`.
+    Flip,
+}
+
+impl Limit {
+    /// The name of the limit as the manifest's `[check]` spells it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Limit::FailPercent => "fail_percent",
+            Limit::HardFail => "hard_fail",
+            Limit::Flip => "flip",
+        }
+    }
 }
 
 impl Tolerance {
@@ -23,7 +49,25 @@ impl Tolerance {
         fail: 2,
         fail_percent: 0.1,
         hard_fail: 64,
+        flip: None,
     };
+
+    /// The limits that a frame with these figures breaks (none: it passes).
+    pub fn failed(&self, c: &Comparison, flip: Option<f64>) -> Vec<Limit> {
+        let mut limits = Vec::new();
+        if c.failing_percent > self.fail_percent {
+            limits.push(Limit::FailPercent);
+        }
+        if c.max_diff > self.hard_fail {
+            limits.push(Limit::HardFail);
+        }
+        if let (Some(limit), Some(mean)) = (self.flip, flip) {
+            if mean > limit {
+                limits.push(Limit::Flip);
+            }
+        }
+        limits
+    }
 }
 
 /// How a rendered frame compares with its reference.
@@ -40,7 +84,6 @@ pub struct Comparison {
     pub mean_error: f64,
     /// In dB; `None` when the frames are identical (infinite PSNR).
     pub psnr: Option<f64>,
-    pub pass: bool,
 }
 
 /// Compares `rendered` with `reference`, which must have the same size.
@@ -80,36 +123,48 @@ pub fn compare(reference: &Frame, rendered: &Frame, tol: Tolerance) -> Compariso
         failing_percent,
         mean_error: abs_sum as f64 / (pixels * 3.0),
         psnr: (mse > 0.0).then(|| 10.0 * (255.0f64 * 255.0 / mse).log10()),
-        pass: failing_percent <= tol.fail_percent && max_diff <= tol.hard_fail,
     }
 }
 
-/// A heat map of the differences: black where the frames agree, then red, yellow and
-/// white as the largest channel difference of a pixel grows towards the frame's maximum.
+/// The heat-map colour of a largest channel difference `d` (0..255), on a fixed
+/// logarithmic scale: t = log2(1 + d) / 8, so 1 level is t = 1/8, 3 levels 1/4, 15 levels
+/// 1/2, 255 levels 1; then black -> red -> yellow -> white as t goes 0 -> 1/3 -> 2/3 -> 1.
+/// The same `d` gets the same colour in every frame, and a 1-level difference is a dim red.
+pub fn heat_colour(d: u8) -> [u8; 3] {
+    let t = (1.0 + d as f64).log2() / 8.0;
+    let ramp = |x: f64| (x.clamp(0.0, 1.0) * 255.0).round() as u8;
+    [ramp(3.0 * t), ramp(3.0 * t - 1.0), ramp(3.0 * t - 2.0)]
+}
+
+/// A heat map of the differences: each pixel's largest channel difference through
+/// [`heat_colour`]; black where the frames agree.
 pub fn heat_map(reference: &Frame, rendered: &Frame) -> Frame {
-    let diffs: Vec<u8> = reference
+    let pixels = reference
         .pixels
         .chunks_exact(3)
         .zip(rendered.pixels.chunks_exact(3))
-        .map(|(a, b)| (0..3).map(|c| a[c].abs_diff(b[c])).max().unwrap_or(0))
-        .collect();
-    let top = diffs.iter().copied().max().unwrap_or(0).max(1) as f64;
-    let ramp = |t: f64| (t.clamp(0.0, 1.0) * 255.0).round() as u8;
-    let pixels = diffs
-        .iter()
-        .flat_map(|&d| {
-            let t = if d == 0 {
-                0.0
-            } else {
-                (d as f64 / top) * 0.8 + 0.2
-            };
-            [ramp(3.0 * t), ramp(3.0 * t - 1.0), ramp(3.0 * t - 2.0)]
-        })
+        .flat_map(|(a, b)| heat_colour((0..3).map(|c| a[c].abs_diff(b[c])).max().unwrap_or(0)))
         .collect();
     Frame {
         width: reference.width,
         height: reference.height,
         pixels,
+    }
+}
+
+/// The heat map's legend: a `width`×`height` strip of the scale, difference 0 at the left
+/// and 255 at the right (column x shows d = round(255·x / (width − 1))).
+pub fn heat_legend(width: u32, height: u32) -> Frame {
+    let row: Vec<u8> = (0..width)
+        .flat_map(|x| {
+            let d = (255.0 * x as f64 / (width.max(2) - 1) as f64).round() as u8;
+            heat_colour(d)
+        })
+        .collect();
+    Frame {
+        width,
+        height,
+        pixels: row.repeat(height as usize),
     }
 }
 
@@ -121,7 +176,12 @@ mod tests {
         fail: 2,
         fail_percent: 10.0,
         hard_fail: 64,
+        flip: Some(0.05),
     };
+
+    fn pass(c: &Comparison) -> bool {
+        TOL.failed(c, None).is_empty()
+    }
 
     fn grey(w: u32, h: u32, v: u8) -> Frame {
         Frame {
@@ -135,7 +195,7 @@ mod tests {
     fn identical_frames() {
         let c = compare(&grey(4, 4, 100), &grey(4, 4, 100), TOL);
         assert_eq!((c.max_diff, c.max_at, c.failing_pixels), (0, None, 0));
-        assert_eq!((c.mean_error, c.psnr, c.pass), (0.0, None, true));
+        assert_eq!((c.mean_error, c.psnr, pass(&c)), (0.0, None, true));
     }
 
     #[test]
@@ -152,10 +212,11 @@ mod tests {
         let c = compare(&reference, &r, TOL);
         assert_eq!(c.failing_pixels, 1);
         // 1 pixel of 10 is 10 %: not more than fail_percent, so the frame still passes.
-        assert_eq!((c.failing_percent, c.pass), (10.0, true));
+        assert_eq!((c.failing_percent, pass(&c)), (10.0, true));
         r.pixels[0] = 90;
         let c = compare(&reference, &r, TOL);
-        assert_eq!((c.failing_percent, c.pass), (20.0, false));
+        assert_eq!(TOL.failed(&c, None), [Limit::FailPercent]);
+        assert_eq!(c.failing_percent, 20.0);
     }
 
     #[test]
@@ -166,9 +227,23 @@ mod tests {
         let c = compare(&reference, &r, TOL);
         assert_eq!(c.max_at, Some((42, 5, 2)));
         assert!(c.failing_percent < 0.02);
-        assert!(!c.pass);
+        assert_eq!(TOL.failed(&c, None), [Limit::HardFail]);
         r.pixels[3 * (5 * 100 + 42) + 2] = 74; // 64: not more than hard_fail
-        assert!(compare(&reference, &r, TOL).pass);
+        assert!(pass(&compare(&reference, &r, TOL)));
+    }
+
+    #[test]
+    fn flip_limit_is_judged_only_when_a_figure_exists() {
+        let c = compare(&grey(2, 2, 50), &grey(2, 2, 50), TOL);
+        assert_eq!(TOL.failed(&c, Some(0.05)), []); // not more than the limit
+        assert_eq!(TOL.failed(&c, Some(0.0501)), [Limit::Flip]);
+        let no_flip = Tolerance { flip: None, ..TOL };
+        assert_eq!(no_flip.failed(&c, Some(0.9)), []);
+        let c = compare(&grey(1, 1, 0), &grey(1, 1, 200), TOL);
+        assert_eq!(
+            TOL.failed(&c, Some(0.6)),
+            [Limit::FailPercent, Limit::HardFail, Limit::Flip]
+        );
     }
 
     #[test]
@@ -181,13 +256,34 @@ mod tests {
     }
 
     #[test]
-    fn heat_map_is_black_where_equal() {
+    fn heat_colours_on_the_fixed_log_scale_by_hand() {
+        // t = log2(1 + d) / 8; red = 3t, green = 3t - 1, blue = 3t - 2 (× 255, rounded).
+        assert_eq!(heat_colour(0), [0, 0, 0]);
+        assert_eq!(heat_colour(1), [96, 0, 0]); // t = 1/8: 95.625
+        assert_eq!(heat_colour(3), [191, 0, 0]); // t = 1/4: 191.25
+        assert_eq!(heat_colour(15), [255, 128, 0]); // t = 1/2: green 127.5
+        assert_eq!(heat_colour(255), [255, 255, 255]);
+    }
+
+    #[test]
+    fn heat_map_does_not_depend_on_the_frame_maximum() {
         let reference = grey(3, 1, 0);
         let mut r = reference.clone();
-        r.pixels[3] = 200;
+        r.pixels[3] = 1; // pixel 1 off by one level, the frame's largest difference
         let h = heat_map(&reference, &r);
-        assert_eq!(&h.pixels[0..3], &[0, 0, 0]);
-        assert_eq!(&h.pixels[3..6], &[255, 255, 255]); // the maximum is white
-        assert_eq!(&h.pixels[6..9], &[0, 0, 0]);
+        assert_eq!(&h.pixels, &[0, 0, 0, 96, 0, 0, 0, 0, 0]);
+        r.pixels[8] = 255; // pixel 2 off by 255: pixel 1 keeps its colour
+        let h = heat_map(&reference, &r);
+        assert_eq!(&h.pixels, &[0, 0, 0, 96, 0, 0, 255, 255, 255]);
+    }
+
+    #[test]
+    fn legend_runs_from_equal_to_255() {
+        let l = heat_legend(256, 2);
+        assert_eq!((l.width, l.height, l.pixels.len()), (256, 2, 256 * 2 * 3));
+        assert_eq!(&l.pixels[0..3], &[0, 0, 0]);
+        assert_eq!(&l.pixels[3..6], &[96, 0, 0]); // column 1 is d = 1
+        assert_eq!(&l.pixels[255 * 3..256 * 3], &[255, 255, 255]);
+        assert_eq!(&l.pixels[256 * 3..256 * 3 + 6], &[0, 0, 0, 96, 0, 0]); // row 2 repeats
     }
 }
