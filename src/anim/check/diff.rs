@@ -152,13 +152,14 @@ pub fn heat_map(reference: &Frame, rendered: &Frame) -> Frame {
     }
 }
 
-/// The heat map's legend: a `width`×`height` strip of the scale, difference 0 at the left
-/// and 255 at the right (column x shows d = round(255·x / (width − 1))).
+/// The heat map's legend: a `width`×`height` strip of the scale, even in t: column x
+/// shows d = round(2^(8x / (width − 1)) − 1), so on a 256-wide strip d = 1, 3, 15, 63 and
+/// 255 sit at columns 32, 64, 128, 191 and 255.
 pub fn heat_legend(width: u32, height: u32) -> Frame {
     let row: Vec<u8> = (0..width)
         .flat_map(|x| {
-            let d = (255.0 * x as f64 / (width.max(2) - 1) as f64).round() as u8;
-            heat_colour(d)
+            let t = x as f64 / (width.max(2) - 1) as f64;
+            heat_colour(((8.0 * t).exp2() - 1.0).round() as u8)
         })
         .collect();
     Frame {
@@ -282,8 +283,10 @@ mod tests {
         let l = heat_legend(256, 2);
         assert_eq!((l.width, l.height, l.pixels.len()), (256, 2, 256 * 2 * 3));
         assert_eq!(&l.pixels[0..3], &[0, 0, 0]);
-        assert_eq!(&l.pixels[3..6], &[96, 0, 0]); // column 1 is d = 1
+        assert_eq!(&l.pixels[32 * 3..33 * 3], &[96, 0, 0]); // 2^(256/255) - 1 = 1.005: d = 1
+        assert_eq!(&l.pixels[128 * 3..129 * 3], &[255, 128, 0]); // 15.17: d = 15
         assert_eq!(&l.pixels[255 * 3..256 * 3], &[255, 255, 255]);
-        assert_eq!(&l.pixels[256 * 3..256 * 3 + 6], &[0, 0, 0, 96, 0, 0]); // row 2 repeats
+        assert_eq!(&l.pixels[256 * 3..256 * 3 + 3], &[0, 0, 0]); // row 2 repeats
+        assert_eq!(&l.pixels[(256 + 32) * 3..(256 + 33) * 3], &[96, 0, 0]);
     }
 }
