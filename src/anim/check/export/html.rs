@@ -133,12 +133,13 @@ fn legends(flip: bool) -> String {
          on a fixed logarithmic scale (the same colour means the same difference in every \
          frame).</p><div class=\"legend\"><img src=\"heat-legend.png\" alt=\"heat map \
          legend\">{}</div>\n",
+        // Columns of the strip where d = 1, 3, 15, 63 (see diff::heat_legend).
         ticks(&[
             (0, "0"),
-            (1, "1"),
-            (3, "3"),
-            (15, "15"),
-            (63, "63"),
+            (32, "1"),
+            (64, "3"),
+            (128, "15"),
+            (191, "63"),
             (255, "255")
         ])
     );
