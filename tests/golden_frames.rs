@@ -5,20 +5,33 @@
 //! the new references, and commit them.
 
 use assert_cmd::Command;
+use quick_junit::Report;
 
+/// Checks `manifest` through every output: the table, JUnit XML and the HTML page.
 fn check(manifest: &str) {
     let root = env!("CARGO_MANIFEST_DIR");
+    let work = tempfile::tempdir().unwrap();
+    let (junit, html) = (work.path().join("golden.xml"), work.path().join("page"));
     let out = Command::cargo_bin("animate")
         .unwrap()
         .current_dir(root)
         .args(["check", manifest, "--report"])
-        .arg(std::env::temp_dir().join(format!("golden-report-{}", std::process::id())))
+        .arg(work.path().join("report"))
+        .arg("--junit")
+        .arg(&junit)
+        .arg("--html")
+        .arg(&html)
         .output()
         .unwrap();
     let stdout = String::from_utf8_lossy(&out.stdout);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(0), "{stdout}{stderr}");
     assert_eq!(stdout.matches("PASS").count(), 6, "{stdout}"); // five frames and the verdict
+    let xml = std::fs::read_to_string(&junit).unwrap();
+    let suite = &Report::deserialize_from_str(&xml).unwrap().test_suites[0];
+    assert_eq!((suite.tests, suite.failures), (5, 0), "{xml}");
+    let page = std::fs::read_to_string(html.join("index.html")).unwrap();
+    assert_eq!(page.matches("<tr class=\"pass\">").count(), 5, "{page}");
 }
 
 #[test]

@@ -40,6 +40,7 @@
 //! fail = 2                         # 0..=255; default 2
 //! fail_percent = 0.1               # 0..=100; default 0.1
 //! hard_fail = 64                   # 0..=255; default 64
+//! flip = 0.05                      # optional: also fail when the mean FLIP error is above
 //! ```
 
 mod camera;
@@ -121,6 +122,8 @@ pub struct CheckSpec {
     pub fail: u8,
     pub fail_percent: f64,
     pub hard_fail: u8,
+    /// The FLIP limit, when the manifest sets one.
+    pub flip: Option<f64>,
 }
 
 /// A parsed and validated manifest.

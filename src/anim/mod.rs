@@ -9,11 +9,12 @@
 //!   `pipeline` (folders and streams, reporting `events`), `frames::select` (frame lists,
 //!   shards, a render farm's task index), `provenance` (what made a frame), `status` (which
 //!   frames are up to date), `video` (ffmpeg);
-//! - checking frames: `diff` and `regress` (`animate check` and `bless`);
+//! - checking frames: `check` (`animate check` and `bless`: idiff metrics, FLIP, one
+//!   report value and its exporters: table, JSON, JUnit, HTML);
 //! - `preview`: quick pictures for people (a GIF, a contact sheet, a plot of the paths);
 //! - `error`: why a run stopped, and its exit status.
 
-pub mod diff;
+pub mod check;
 pub mod error;
 pub mod events;
 pub mod frames;
@@ -22,7 +23,6 @@ pub mod pipeline;
 pub mod preview;
 pub mod project;
 pub mod provenance;
-pub mod regress;
 pub mod run;
 pub mod status;
 pub mod timeline;

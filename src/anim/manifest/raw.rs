@@ -147,4 +147,5 @@ pub(super) struct RawCheck {
     pub fail: Option<Spanned<i64>>,
     pub fail_percent: Option<Spanned<f64>>,
     pub hard_fail: Option<Spanned<i64>>,
+    pub flip: Option<Spanned<f64>>,
 }

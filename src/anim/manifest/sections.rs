@@ -18,6 +18,7 @@
 //! fail = 2                  # 0..=255; default 2
 //! fail_percent = 0.1        # 0..=100; default 0.1
 //! hard_fail = 64            # 0..=255; default 64
+//! flip = 0.05               # optional, 0..=1: the largest mean FLIP error
 //! ```
 
 use super::raw::{RawCheck, RawOutput, RawRender};
@@ -156,12 +157,20 @@ impl Source<'_> {
             Some(v) => *v.get_ref(),
             None => 0.1,
         };
+        let flip = match &raw.flip {
+            Some(v) if !(0.0..=1.0).contains(v.get_ref()) => {
+                let message = format!("`flip` must be between 0 and 1, found {}", v.get_ref());
+                return Err(self.error(v.span(), message));
+            }
+            v => v.as_ref().map(|v| *v.get_ref()),
+        };
         Ok(CheckSpec {
             frames: list,
             references,
             fail,
             fail_percent,
             hard_fail,
+            flip,
         })
     }
 }

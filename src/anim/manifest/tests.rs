@@ -113,6 +113,7 @@ fn the_spec_orbit_parses_with_its_values() {
         fail: 2,
         fail_percent: 0.1,
         hard_fail: 64,
+        flip: None,
     };
     assert_eq!(m.check, Some(check));
 }

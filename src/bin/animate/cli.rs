@@ -4,6 +4,8 @@
 use clap::{Args, Parser, Subcommand};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
+use whitted::anim::check::export::{Exporter, Html, Json, Junit, Sink, Table};
+use whitted::anim::check::Overrides;
 use whitted::anim::preview::{self, PreviewOptions};
 use whitted::anim::run::Destination;
 use whitted::anim::select::{process_env, SelectError, Shard};
@@ -205,9 +207,49 @@ pub struct CheckArgs {
     /// A frame fails when any channel differs by more than this (0..255).
     #[arg(long)]
     pub hard_fail: Option<u8>,
+    /// A frame fails when its mean FLIP error (NVIDIA's perceptual metric, 0..1) is
+    /// above this.
+    #[arg(long, value_name = "X")]
+    pub flip: Option<f64>,
     /// Print the results as JSON on standard output instead of a table.
     #[arg(long)]
     pub json: bool,
+    /// Also write the results as JUnit XML into this file.
+    #[arg(long, value_name = "FILE")]
+    pub junit: Option<PathBuf>,
+    /// Also write a report page, DIR/index.html, with the images of failing frames.
+    #[arg(long, value_name = "DIR")]
+    pub html: Option<PathBuf>,
+}
+
+impl CheckArgs {
+    /// The command line's share of the check's options.
+    pub fn overrides(&self) -> Overrides<'_> {
+        Overrides {
+            frames: self.bless.common.frames.as_deref(),
+            references: self.bless.references.as_deref(),
+            report: self.report.as_deref(),
+            fail: self.fail,
+            fail_percent: self.fail_percent,
+            hard_fail: self.hard_fail,
+            flip: self.flip,
+        }
+    }
+
+    /// The exporters asked for: the table or JSON on standard output, JUnit, HTML.
+    pub fn exporters(&self) -> Vec<Box<dyn Exporter>> {
+        let mut out: Vec<Box<dyn Exporter>> = match self.json {
+            true => vec![Box::new(Json(Sink::Stdout))],
+            false => vec![Box::new(Table(Sink::Stdout))],
+        };
+        if let Some(file) = &self.junit {
+            out.push(Box::new(Junit(file.clone())));
+        }
+        if let Some(dir) = &self.html {
+            out.push(Box::new(Html(dir.clone())));
+        }
+        out
+    }
 }
 
 #[derive(Args, Debug)]

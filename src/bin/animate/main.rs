@@ -1,8 +1,7 @@
-//! `animate MANIFEST.toml`: renders every frame of an animation manifest (SPEC §5-§8) in
-//! parallel into a folder, or streams them in order to standard output or ffmpeg;
-//! `check`, `bless` and `status` are subcommands. This file only turns the command line
-//! (`cli`) into library calls and their outcome into an exit status (`whitted::exit`);
-//! `report` draws the progress.
+//! `animate MANIFEST.toml`: renders the frames of an animation manifest into a folder,
+//! or streams them to standard output or ffmpeg; `status`, `preview`, `check` and `bless`
+//! are subcommands. This file turns the command line (`cli`) into library calls and their
+//! outcome into an exit status (`whitted::exit`); `report` shows progress and results.
 
 mod cli;
 mod report;
@@ -12,9 +11,10 @@ use clap::Parser;
 use cli::{BlessArgs, CheckArgs, Cli, Command, PreviewArgs, RenderArgs, StatusArgs};
 use std::process::ExitCode;
 use std::time::Instant;
+use whitted::anim::check::{self, CheckOptions};
 use whitted::anim::run;
 use whitted::anim::status::status;
-use whitted::anim::{preview, regress, AnimError, Animation, Reporter};
+use whitted::anim::{preview, AnimError, Animation, Reporter};
 use whitted::exit::Outcome;
 use whitted::output::ImageFormat;
 
@@ -27,18 +27,9 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     let project = c.load()?;
     let (m, anim) = (&project.manifest, Animation::new(&project)?);
     let frames = run::frames_of(&anim, c.frames.as_deref(), args.shard()?)?;
-    if frames.is_empty() && !c.quiet {
-        eprintln!(
-            "animate: this shard has no frames ({} in all): nothing to do",
-            m.frames
-        );
-    }
     let destination = args.destination(m)?;
-    if args.stdout == Some(ImageFormat::Raw) && !c.quiet {
-        eprintln!(
-            "animate: raw RGB frames; for ffmpeg: {}",
-            run::ffmpeg_raw_input(&anim)
-        );
+    if !c.quiet {
+        report::announce(&anim, frames.len(), args.stdout == Some(ImageFormat::Raw));
     }
     let (stop, pool) = (whitted::process::watch_signals(), pool(c.threads)?);
     let bar = report::Bar::new(frames.len(), c.quiet || args.events);
@@ -62,25 +53,23 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     })?;
     bar.finish();
     if !c.quiet {
-        report::summary(
-            &summary,
-            start.elapsed().as_secs_f64(),
-            &destination.describe(),
-        );
+        report::summary(&summary, start, &destination.describe());
     }
     Ok(Outcome::Success)
 }
 
 fn bless(args: BlessArgs) -> anyhow::Result<Outcome> {
-    let project = args.common.load()?;
+    let c = &args.common;
+    let project = c.load()?;
     let anim = Animation::new(&project)?;
-    let (frames, refs) = regress::targets(
+    let targets = check::targets(
         &project.manifest,
-        args.common.frames.as_deref(),
+        c.frames.as_deref(),
         args.references.as_deref(),
-    )?;
-    let paths = pool(args.common.threads)?.install(|| regress::bless(&anim, &frames, &refs))?;
-    if !args.common.quiet {
+    );
+    let (frames, refs) = targets.map_err(report::with_flags)?;
+    let paths = pool(c.threads)?.install(|| check::bless(&anim, &frames, &refs))?;
+    if !c.quiet {
         eprintln!(
             "animate: blessed {} reference(s) in {}",
             paths.len(),
@@ -90,40 +79,18 @@ fn bless(args: BlessArgs) -> anyhow::Result<Outcome> {
     Ok(Outcome::Success)
 }
 
-fn check(args: CheckArgs) -> anyhow::Result<Outcome> {
-    let common = &args.bless.common;
-    let project = common.load()?;
-    let (manifest, anim) = (&project.manifest, Animation::new(&project)?);
-    let (frames, refs) = regress::targets(
-        manifest,
-        common.frames.as_deref(),
-        args.bless.references.as_deref(),
-    )?;
-    let tol = regress::tolerance(manifest, args.fail, args.fail_percent, args.hard_fail)?;
-    let report = args
-        .report
-        .clone()
-        .unwrap_or_else(|| regress::default_report(manifest));
-    let results =
-        pool(common.threads)?.install(|| regress::check(&anim, &frames, &refs, tol, &report))?;
-    let pass = results.iter().all(|r| r.comparison.pass);
-    if args.json {
-        let doc = serde_json::json!({"manifest": manifest.path, "references": refs,
-            "report": report, "tolerance": tol, "pass": pass, "frames": results});
-        println!("{}", serde_json::to_string_pretty(&doc)?);
-    } else {
-        print!("{}", regress::table(&results));
-        let failed = results.iter().filter(|r| !r.comparison.pass).count();
-        match failed {
-            0 => println!("PASS: {} frame(s) within tolerance", results.len()),
-            n => println!(
-                "FAIL: {n} of {} frame(s); rendered frames and diff images in {}",
-                results.len(),
-                report.display()
-            ),
-        }
+fn check_command(args: CheckArgs) -> anyhow::Result<Outcome> {
+    let project = args.bless.common.load()?;
+    let anim = Animation::new(&project)?;
+    let opts =
+        CheckOptions::new(&project.manifest, &args.overrides()).map_err(report::with_flags)?;
+    let report = pool(args.bless.common.threads)?.install(|| check::check(&anim, &opts))?;
+    for exporter in args.exporters() {
+        exporter
+            .export(&report)
+            .map_err(|e| AnimError::Usage(e.to_string()))?;
     }
-    Ok(if pass {
+    Ok(if report.pass {
         Outcome::Success
     } else {
         Outcome::Failed
@@ -153,14 +120,8 @@ fn preview(args: PreviewArgs) -> anyhow::Result<Outcome> {
     let start = Instant::now();
     let s = pool(args.threads)?.install(|| preview::run(&args.options(), &|d, t| bar.set(d, t)));
     bar.finish();
-    let s = s?;
     if !args.quiet {
-        let (secs, w, h) = (start.elapsed().as_secs_f64(), s.width, s.height);
-        eprintln!(
-            "animate: preview of {} frames at {w}×{h} in {secs:.2} s -> {}",
-            s.frames,
-            s.dir.display()
-        );
+        report::previewed(&s?, start);
     }
     Ok(Outcome::Success)
 }
@@ -170,7 +131,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         None => render(cli.render),
         Some(Command::Bless(args)) => bless(args),
-        Some(Command::Check(args)) => check(args),
+        Some(Command::Check(args)) => check_command(args),
         Some(Command::Status(args)) => status_command(args),
         Some(Command::Preview(args)) => preview(args),
     };

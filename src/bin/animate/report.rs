@@ -5,9 +5,12 @@
 
 use indicatif::{ProgressBar, ProgressState, ProgressStyle};
 use std::io::IsTerminal;
+use std::time::Instant;
+use whitted::anim::check::{CheckError, Missing};
 use whitted::anim::pipeline::Summary;
-use whitted::anim::preview::PreviewError;
-use whitted::anim::{AnimError, Event, Reporter};
+use whitted::anim::preview::{PreviewError, PreviewSummary};
+use whitted::anim::run::ffmpeg_raw_input;
+use whitted::anim::{AnimError, Animation, Event, Reporter};
 use whitted::exit::Outcome;
 
 /// The progress bar: frames done (skipped ones count as done), frames/s, ETA.
@@ -81,9 +84,24 @@ impl Reporter for JsonLines {
     }
 }
 
+/// What a run says before it starts: that a selection is empty, and the ffmpeg input
+/// options that read raw frames.
+pub fn announce(anim: &Animation, frames: usize, raw: bool) {
+    if frames == 0 {
+        let all = anim.manifest.frames;
+        eprintln!("animate: this selection has no frames ({all} in all): nothing to do");
+    }
+    if raw {
+        eprintln!(
+            "animate: raw RGB frames; for ffmpeg: {}",
+            ffmpeg_raw_input(anim)
+        );
+    }
+}
+
 /// The one-line summary: frames, wall time, frames/s, rays/s, where they went.
-pub fn summary(s: &Summary, secs: f64, place: &str) {
-    let secs = secs.max(1e-9);
+pub fn summary(s: &Summary, start: Instant, place: &str) {
+    let secs = start.elapsed().as_secs_f64().max(1e-9);
     let frames = |n: usize| if n == 1 { "frame" } else { "frames" };
     eprintln!(
         "animate: {} {} rendered, {} up to date in {:.2} s: {:.2} frames/s, {:.1} Mrays/s -> {place}",
@@ -105,6 +123,27 @@ pub fn outcome(e: &anyhow::Error) -> Outcome {
     } else {
         Outcome::Failed
     }
+}
+
+/// The preview's one-line summary.
+pub fn previewed(s: &PreviewSummary, start: Instant) {
+    let (secs, w, h) = (start.elapsed().as_secs_f64(), s.width, s.height);
+    let (n, dir) = (s.frames, s.dir.display());
+    eprintln!("animate: preview of {n} frames at {w}×{h} in {secs:.2} s -> {dir}");
+}
+
+/// A check error, with the flag that settles it.
+pub fn with_flags(e: CheckError) -> AnimError {
+    let hint = match &e {
+        CheckError::NoCheckSection { what, .. } => match what {
+            Missing::Frames => "; name them with --frames",
+            Missing::References => "; name it with --references",
+        },
+        CheckError::FailPercent(_) => " (--fail-percent or [check] fail_percent)",
+        CheckError::Flip(_) => " (--flip or [check] flip)",
+        CheckError::Frames(_) => "",
+    };
+    AnimError::Usage(format!("{e}{hint}"))
 }
 
 /// A hint naming the flag that helps, for errors where one does.

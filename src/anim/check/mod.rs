@@ -1,0 +1,294 @@
+//! `animate bless` and `animate check`: regression on selected frames.
+//!
+//! `bless` renders the chosen frames and writes them as lossless PNG references into the
+//! references folder (atomically). `check` loads every reference first (a missing,
+//! unreadable or wrongly sized one stops the check before anything renders), renders the
+//! frames in parallel, compares each (`diff.rs`, and `flip.rs` when the tolerance has a
+//! FLIP limit), and for every failing frame writes the rendered frame, a diff heat map and
+//! the FLIP map into a report folder; stale report images of frames that now pass are
+//! removed, so the folder shows failures only. The result is one [`CheckReport`]
+//! (`report.rs`) that the exporters of `export/` turn into a table, JSON, JUnit XML or an
+//! HTML page. References are named by the manifest's `[output] name` pattern with `.png`.
+//!
+//! Options come from the manifest's `[check]` (frames, references, fail, fail_percent,
+//! hard_fail, flip), each overridden by the caller's [`Overrides`].
+
+pub mod diff;
+pub mod export;
+pub mod flip;
+pub mod report;
+
+pub use diff::{Comparison, Limit, Tolerance};
+pub use report::{CheckReport, FrameReport};
+
+use super::error::AnimError;
+use super::manifest::Manifest;
+use super::project::Animation;
+use super::select::{parse_frames, SelectError};
+use crate::output::{write_atomic, ImageFormat};
+use crate::render::Frame;
+use diff::{compare, heat_map};
+use rayon::prelude::*;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// Why the options of a check cannot be settled. The messages name manifest keys, never
+/// command-line flags: the binary says which flag to use.
+#[derive(Debug, thiserror::Error)]
+pub enum CheckError {
+    #[error("{manifest}: no [check] section names the {what}")]
+    NoCheckSection { manifest: PathBuf, what: Missing },
+    #[error(transparent)]
+    Frames(#[from] SelectError),
+    #[error("fail_percent must be from 0 to 100, found {0}")]
+    FailPercent(f64),
+    #[error("the FLIP limit must be from 0 to 1, found {0}")]
+    Flip(f64),
+}
+
+/// What a manifest without `[check]` leaves unnamed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Missing {
+    Frames,
+    References,
+}
+
+impl std::fmt::Display for Missing {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(match self {
+            Missing::Frames => "frames to check",
+            Missing::References => "references folder",
+        })
+    }
+}
+
+/// The caller's choices, each replacing the manifest's `[check]` value when given.
+#[derive(Clone, Debug, Default)]
+pub struct Overrides<'a> {
+    pub frames: Option<&'a str>,
+    pub references: Option<&'a Path>,
+    pub report: Option<&'a Path>,
+    pub fail: Option<u8>,
+    pub fail_percent: Option<f64>,
+    pub hard_fail: Option<u8>,
+    pub flip: Option<f64>,
+}
+
+/// A check's settled options.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CheckOptions {
+    pub frames: Vec<u32>,
+    pub references: PathBuf,
+    pub report: PathBuf,
+    pub tolerance: Tolerance,
+}
+
+impl CheckOptions {
+    /// The manifest's `[check]` (or the SPEC's default thresholds without it) merged with
+    /// `over`. Frames and references must come from one or the other.
+    pub fn new(manifest: &Manifest, over: &Overrides) -> Result<CheckOptions, CheckError> {
+        let (frames, references) = targets(manifest, over.frames, over.references)?;
+        let check = manifest.check.as_ref();
+        let base = check.map_or(Tolerance::DEFAULT, |c| Tolerance {
+            fail: c.fail,
+            fail_percent: c.fail_percent,
+            hard_fail: c.hard_fail,
+            flip: c.flip,
+        });
+        let tolerance = Tolerance {
+            fail: over.fail.unwrap_or(base.fail),
+            fail_percent: over.fail_percent.unwrap_or(base.fail_percent),
+            hard_fail: over.hard_fail.unwrap_or(base.hard_fail),
+            flip: over.flip.or(base.flip),
+        };
+        if !(0.0..=100.0).contains(&tolerance.fail_percent) {
+            return Err(CheckError::FailPercent(tolerance.fail_percent));
+        }
+        if let Some(f) = tolerance.flip.filter(|f| !(0.0..=1.0).contains(f)) {
+            return Err(CheckError::Flip(f));
+        }
+        let report = over
+            .report
+            .map_or_else(|| default_report(manifest), Path::to_path_buf);
+        Ok(CheckOptions {
+            frames,
+            references,
+            report,
+            tolerance,
+        })
+    }
+}
+
+/// The frames and the references folder of a check or bless: the caller's when given,
+/// else the manifest's `[check]`.
+pub fn targets(
+    manifest: &Manifest,
+    frames: Option<&str>,
+    references: Option<&Path>,
+) -> Result<(Vec<u32>, PathBuf), CheckError> {
+    let missing = |what| CheckError::NoCheckSection {
+        manifest: manifest.path.clone(),
+        what,
+    };
+    let check = manifest.check.as_ref();
+    let frames = match (frames, check) {
+        (Some(spec), _) => parse_frames(spec, manifest.frames)?,
+        (None, Some(c)) => c.frames.clone(),
+        (None, None) => return Err(missing(Missing::Frames)),
+    };
+    let refs = match (references, check) {
+        (Some(dir), _) => dir.to_path_buf(),
+        (None, Some(c)) => c.references.clone(),
+        (None, None) => return Err(missing(Missing::References)),
+    };
+    Ok((frames, refs))
+}
+
+/// The default report folder: the frame folder's name + `-check`.
+pub fn default_report(manifest: &Manifest) -> PathBuf {
+    let mut name = manifest.output.dir.clone().into_os_string();
+    name.push("-check");
+    PathBuf::from(name)
+}
+
+/// The file name stem of frame `frame` (the name pattern, no extension).
+fn stem(anim: &Animation, frame: u32) -> String {
+    let name = anim.manifest.output.file_name(frame, anim.manifest.frames);
+    match name.rsplit_once('.') {
+        Some((stem, _)) => stem.to_string(),
+        None => name,
+    }
+}
+
+/// Where the reference of `frame` lives.
+pub fn reference_path(anim: &Animation, refs: &Path, frame: u32) -> PathBuf {
+    refs.join(format!("{}.png", stem(anim, frame)))
+}
+
+fn load_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<Frame, AnimError> {
+    let path = reference_path(anim, refs, frame);
+    if !path.exists() {
+        return Err(AnimError::Reference(format!(
+            "frame {frame}: the reference {} is missing (run `animate bless` first)",
+            path.display()
+        )));
+    }
+    let image = image::open(&path)
+        .map_err(|e| AnimError::Reference(format!("{}: cannot read it: {e}", path.display())))?
+        .to_rgb8();
+    if (image.width(), image.height()) != (anim.width, anim.height) {
+        return Err(AnimError::Reference(format!(
+            "frame {frame}: the reference {} is {}×{}, the frame is {}×{}",
+            path.display(),
+            image.width(),
+            image.height(),
+            anim.width,
+            anim.height
+        )));
+    }
+    Ok(Frame {
+        width: image.width(),
+        height: image.height(),
+        pixels: image.into_raw(),
+    })
+}
+
+fn create_dir(dir: &Path) -> Result<(), AnimError> {
+    std::fs::create_dir_all(dir).map_err(|source| AnimError::Folder {
+        dir: dir.to_path_buf(),
+        source,
+    })
+}
+
+/// Renders `frames` and writes them as references into `refs`; returns the paths.
+pub fn bless(anim: &Animation, frames: &[u32], refs: &Path) -> Result<Vec<PathBuf>, AnimError> {
+    create_dir(refs)?;
+    frames
+        .par_iter()
+        .map(|&frame| {
+            let (image, _) = anim.render(frame)?;
+            let path = reference_path(anim, refs, frame);
+            write_atomic(&path, &image, ImageFormat::Png)
+                .map_err(|source| AnimError::Write { frame, source })?;
+            Ok(path)
+        })
+        .collect()
+}
+
+/// Checks the frames of `opts` against their references, writing images of failing
+/// frames into the report folder.
+pub fn check(anim: &Animation, opts: &CheckOptions) -> Result<CheckReport, AnimError> {
+    let refs = &opts.references;
+    let references = opts
+        .frames
+        .iter()
+        .map(|&f| load_reference(anim, refs, f))
+        .collect::<Result<Vec<Frame>, AnimError>>()?;
+    let frames = opts
+        .frames
+        .par_iter()
+        .zip(references.par_iter())
+        .map(|(&frame, reference)| check_frame(anim, opts, frame, reference))
+        .collect::<Result<Vec<FrameReport>, AnimError>>()?;
+    Ok(CheckReport {
+        manifest: anim.manifest.path.clone(),
+        references: refs.clone(),
+        report: opts.report.clone(),
+        width: anim.width,
+        height: anim.height,
+        tolerance: opts.tolerance,
+        pass: frames.iter().all(|f| f.pass),
+        frames,
+    })
+}
+
+fn check_frame(
+    anim: &Animation,
+    opts: &CheckOptions,
+    frame: u32,
+    reference: &Frame,
+) -> Result<FrameReport, AnimError> {
+    let start = Instant::now();
+    let (image, _) = anim.render(frame)?;
+    let tol = opts.tolerance;
+    let comparison = compare(reference, &image, tol);
+    let flip = tol.flip.map(|_| flip::flip(reference, &image));
+    let failed = tol.failed(&comparison, flip.as_ref().map(|f| f.mean));
+    let name = stem(anim, frame);
+    let path = |kind: &str| opts.report.join(format!("{name}.{kind}.png"));
+    let (rendered_path, diff_path, flip_path) = (path("rendered"), path("diff"), path("flip"));
+    let mut images = (None, None, None);
+    if failed.is_empty() {
+        for stale in [&rendered_path, &diff_path, &flip_path] {
+            let _ = std::fs::remove_file(stale);
+        }
+    } else {
+        create_dir(&opts.report)?;
+        let write = |path: &PathBuf, img: &Frame| {
+            write_atomic(path, img, ImageFormat::Png)
+                .map_err(|source| AnimError::Write { frame, source })
+                .map(|()| Some(path.clone()))
+        };
+        images.0 = write(&rendered_path, &image)?;
+        images.1 = write(&diff_path, &heat_map(reference, &image))?;
+        match &flip {
+            Some(f) => images.2 = write(&flip_path, &f.map)?,
+            None => {
+                let _ = std::fs::remove_file(&flip_path);
+            }
+        }
+    }
+    Ok(FrameReport {
+        frame,
+        name,
+        comparison,
+        flip: flip.map(|f| f.mean),
+        pass: failed.is_empty(),
+        failed,
+        seconds: start.elapsed().as_secs_f64(),
+        reference_image: reference_path(anim, &opts.references, frame),
+        rendered_image: images.0,
+        diff_image: images.1,
+        flip_image: images.2,
+    })
+}
