@@ -1,4 +1,17 @@
-//! Producing frames: which frames a run renders (`select`: frame lists, `K/N` shards and
-//! `--shard auto` resolved from a render farm's environment).
+//! Producing frames, from "which" to "where":
+//!
+//! - `select`: frame lists, `K/N` shards and `--shard auto` resolved from a render farm's
+//!   environment;
+//! - `run`: the render command as a library call (frames, destination, checks first);
+//! - `pipeline`: rendering in parallel into a folder or a stream, reporting `events`;
+//! - `provenance`: what made a frame, recorded in the frame file; `status`: which frames
+//!   of a folder are up to date, stale or missing;
+//! - `video`: ffmpeg, checked before the first frame.
 
+pub mod events;
+pub mod pipeline;
+pub mod provenance;
+pub mod run;
 pub mod select;
+pub mod status;
+pub mod video;

@@ -12,8 +12,8 @@ use cli::{BlessArgs, CheckArgs, Cli, Command, PreviewArgs, RenderArgs, StatusArg
 use std::process::ExitCode;
 use std::time::Instant;
 use whitted::anim::check::{self, CheckOptions};
-use whitted::anim::run;
-use whitted::anim::status::status;
+use whitted::anim::frames::run;
+use whitted::anim::frames::status::status;
 use whitted::anim::{preview, AnimError, Animation, Reporter};
 use whitted::exit::Outcome;
 use whitted::output::ImageFormat;

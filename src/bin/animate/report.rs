@@ -7,9 +7,9 @@ use indicatif::{ProgressBar, ProgressState, ProgressStyle};
 use std::io::IsTerminal;
 use std::time::Instant;
 use whitted::anim::check::{CheckError, Missing};
-use whitted::anim::pipeline::Summary;
+use whitted::anim::frames::pipeline::Summary;
+use whitted::anim::frames::run::ffmpeg_raw_input;
 use whitted::anim::preview::{PreviewError, PreviewSummary};
-use whitted::anim::run::ffmpeg_raw_input;
 use whitted::anim::{AnimError, Animation, Event, Reporter};
 use whitted::exit::Outcome;
 

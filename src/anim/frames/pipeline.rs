@@ -13,11 +13,11 @@
 //! when `stop` holds a signal number, and after the first failure; the frames already
 //! finished stay finished.
 
-use super::error::AnimError;
 use super::events::{Event, Reporter};
-use super::project::Animation;
 use super::provenance::{self, raw_record_path};
 use super::status::{self, FrameState};
+use crate::anim::error::AnimError;
+use crate::anim::project::Animation;
 use crate::output::{encode, temp_beside, write_atomic_with, ImageFormat};
 use crate::trace::RayCount;
 use rayon::prelude::*;
@@ -27,7 +27,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
 
-pub use super::project::FRAME_MEMORY;
+pub use crate::anim::project::FRAME_MEMORY;
 
 /// What a run did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

@@ -2,12 +2,12 @@
 //! (`Destination`: a folder, a stream or a video), whether up-to-date frames are kept,
 //! and the checks made before any frame renders (cameras, the video target).
 
-use super::error::AnimError;
 use super::events::Reporter;
 use super::pipeline::{render_to_folder, render_to_stream, Summary};
-use super::project::Animation;
 use super::select::select;
 use super::video::render_to_video;
+use crate::anim::error::AnimError;
+use crate::anim::project::Animation;
 use crate::output::ImageFormat;
 use std::io::Write;
 use std::path::PathBuf;

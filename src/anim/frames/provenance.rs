@@ -9,7 +9,7 @@
 //! every number by its exact bits. Frames carry no render time, so that the same inputs
 //! give the same bytes on every run.
 
-use super::project::Animation;
+use crate::anim::project::Animation;
 use crate::bump::Bump;
 use crate::fog::Fog;
 use crate::output::ImageFormat;

@@ -13,10 +13,10 @@
 //! words are the error. If ffmpeg stops while frames flow, its words are the error too,
 //! not the broken pipe they cause.
 
-use super::error::AnimError;
 use super::events::Reporter;
 use super::pipeline::{render_to_stream, Summary};
-use super::project::Animation;
+use crate::anim::error::AnimError;
+use crate::anim::project::Animation;
 use crate::output::ImageFormat;
 use std::io::Read;
 use std::path::Path;

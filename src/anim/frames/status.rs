@@ -4,8 +4,8 @@
 //! it; a file that is cut short, or whose record is absent, unreadable (foreign) or
 //! different, is stale.
 
-use super::project::Animation;
 use super::provenance::{complete, digest, recorded_digest};
+use crate::anim::project::Animation;
 use rayon::prelude::*;
 use serde::Serialize;
 use std::path::Path;
