@@ -321,8 +321,9 @@ mod tests {
         let shown = write_atomic(&path, &frame(), ImageFormat::Png)
             .unwrap_err()
             .to_string();
+        // The hidden temporary file would be `.f.png.XXXXXX.tmp`.
         assert!(
-            shown.contains("f.png") && !shown.contains(".tmp"),
+            shown.contains("/f.png") && !shown.contains(".f.png."),
             "{shown}"
         );
     }

@@ -204,3 +204,20 @@ fn raw_and_jpeg_frames_keep_their_records_too() {
         }
     }
 }
+
+#[test]
+fn a_frame_does_not_depend_on_how_the_manifest_path_is_spelled() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    animate()
+        .arg(&manifest)
+        .args(["--frames", "3", "-o"])
+        .arg(dir.path().join("a"))
+        .assert()
+        .success();
+    animate()
+        .current_dir(dir.path())
+        .args(["anim.toml", "--frames", "3", "-o", "b"])
+        .assert()
+        .success();
+    assert_eq!(files(&dir.path().join("a")), files(&dir.path().join("b")));
+}

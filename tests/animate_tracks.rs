@@ -270,7 +270,7 @@ fn malformed_tracks_are_refused_at_their_line_before_any_frame() {
         ("[[track]]\ntarget = \"light 1 position\"\npath = \"circle\"\nradius = 1.0\nheight = 1.0".into(), "6:10", "a circle track needs `center`"),
         ("[[track]]\ntarget = \"sphere 1 radius\"".into(), "6:10", "a track needs `keys = [...]` or `path = \"circle\"`"),
         (format!("[[track]]\ntarget = \"sphere 1 radius\"\n{key}\n[[track]]\ntarget = \"sphere 1 radius\"\n{key}"), "9:10", "already animated by track 1"),
-        (format!("[[track]]\ntarget = \"fog distance\"\n{key}\nspeed = 2"), "8:1", "unknown field `speed`"),
+        (format!("[[track]]\ntarget = \"fog distance\"\n{key}\nspeed = 2"), "8:1", "unknown key `speed`"),
         ("[camera]\nlook_at = \"sphere 9\"".into(), "6:11", "look_at: sphere 9 does not exist"),
         ("[render]\nmotion_blur = { shutter = 1.5, samples = 4 }".into(), "6:27", "`shutter` is in frames and must be above 0 and at most 1"),
         ("[render]\nmotion_blur = { shutter = 0.5, samples = 0 }".into(), "6:42", "`samples` must be between 1 and 64"),

@@ -54,8 +54,8 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
 fn run(args: Args) -> anyhow::Result<()> {
     let out = args.out.unwrap_or_else(|| args.scene.with_extension("png"));
     let format = ImageFormat::from_path(&out)?;
-    check_target(&out)?;
     let mut scene = Scene::load(&args.scene)?;
+    check_target(&out)?;
     (scene.width, scene.height) = args.size.unwrap_or((scene.width, scene.height));
     let pool = whitted::process::pool(args.threads).context("cannot start the worker threads")?;
     let start = std::time::Instant::now();

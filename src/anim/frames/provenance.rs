@@ -136,14 +136,8 @@ pub fn stamp(anim: &Animation, frame: u32, digest: String) -> Vec<(String, Strin
             "whitted:frame".into(),
             format!("{frame} of {}", anim.manifest.frames),
         ),
-        (
-            "whitted:manifest".into(),
-            anim.manifest.path.display().to_string(),
-        ),
-        (
-            "whitted:scene".into(),
-            anim.manifest.scene.display().to_string(),
-        ),
+        ("whitted:manifest".into(), file_name(&anim.manifest.path)),
+        ("whitted:scene".into(), file_name(&anim.manifest.scene)),
         (
             "whitted:camera".into(),
             format!("eye {} look-at {}", p(state.eye), p(state.look_at)),
@@ -156,6 +150,15 @@ pub fn stamp(anim: &Animation, frame: u32, digest: String) -> Vec<(String, Strin
             ),
         ),
     ]
+}
+
+/// A path's file name: the stamp names files, not the folders they were reached through,
+/// so that a frame's bytes do not depend on how the manifest's path was spelled.
+fn file_name(path: &Path) -> String {
+    path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    )
 }
 
 /// Where a RAW frame's record lives.

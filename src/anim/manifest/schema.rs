@@ -156,6 +156,7 @@ const CHECK: Place = Place {
         ("fail", Value),
         ("fail_percent", Value),
         ("hard_fail", Value),
+        ("flip", Value),
     ],
 };
 
