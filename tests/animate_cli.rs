@@ -270,3 +270,55 @@ fn bad_frame_lists_and_shards_exit_2() {
         assert_eq!(out.status.code(), Some(2), "{args:?}");
     }
 }
+
+#[test]
+fn a_camera_key_has_one_name_in_every_message() {
+    let spline = |keys: &str| {
+        format!(
+            "scene = \"scene.txt\"\nframes = 12\n[camera]\npath = \"spline\"\nkeys = [{keys}]\n[output]\ndir = \"frames\"\n"
+        )
+    };
+    let order = spline("{ frame = 0, position = [0, 3, 8] }, { frame = 5, position = [4, 3, 4] }, { frame = 3, position = [0, 3, -8] }");
+    let type_error =
+        spline("{ frame = 0, position = [0, 3, 8] }, { frame = 5, position = [4, true, 4] }");
+    for (text, name) in [
+        (order, "camera.keys[2]: frame 3"),
+        (type_error, "camera.keys[1].position[1]: "),
+    ] {
+        let (_dir, manifest) = project(&text);
+        let out = animate().arg(&manifest).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(err.contains(name), "{name}: {err}");
+    }
+}
+
+#[test]
+fn odd_selections_get_plain_answers() {
+    let (_dir, manifest) = project(&circle_manifest(""));
+    // A negative frame is the frame list's error, not clap's "unexpected argument".
+    let out = animate()
+        .arg(&manifest)
+        .args(["--frames", "-1"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("--frames \"-1\"") && !err.contains("unexpected argument"),
+        "{err}"
+    );
+    // A shard with no frames says so and succeeds.
+    let out = animate()
+        .arg(&manifest)
+        .args(["--shard", "15/20"])
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(0), "{err}");
+    assert!(
+        err.contains("this selection has no frames (12 in all)"),
+        "{err}"
+    );
+    assert!(err.contains("0 frames rendered, 0 up to date"), "{err}");
+}

@@ -139,7 +139,7 @@ fn spline_keys_are_checked_where_they_are() {
     let src = TOUR.replace("frame = 249", "frame = 100");
     assert_eq!(
         refusal(&src),
-        "11:13: key 3: frame 100 is not after the previous key's frame 120; keys must be in increasing frame order"
+        "11:13: camera.keys[2]: frame 100 is not after the previous key's frame 120; keys must be in increasing frame order"
     );
     let single = "scene = \"s\"\nframes = 9\n[camera]\npath = \"spline\"\nkeys = [{ frame = 0, position = [0, 0, 0] }]\n";
     assert_eq!(
@@ -156,7 +156,7 @@ fn spline_keys_are_checked_where_they_are() {
         .replace("{ frame = 120,", "{ look_at = [1, 1, 1], frame = 120,");
     assert_eq!(
         refusal(&src),
-        "10:3: key 2: either every key has a look_at or none has"
+        "10:3: camera.keys[1]: either every key has a look_at or none has"
     );
 }
 

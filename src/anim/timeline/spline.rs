@@ -63,22 +63,25 @@ pub struct Spline {
     steps: usize,
 }
 
-/// Why keys do not make a spline. `index` is 0-based; messages count keys from 1.
+/// Why keys do not make a spline. `index` is 0-based, and messages name the key as the
+/// manifest's other errors do (`camera.keys[2]`), so one key has one name everywhere.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum SplineError {
     #[error("a spline needs at least two keys, found {count}")]
     TooFewKeys { count: usize },
-    #[error("key {}: frame {frame} is not after the previous key's frame {previous}; keys must be in increasing frame order", .index + 1)]
+    #[error("camera.keys[{index}]: frame {frame} is not after the previous key's frame {previous}; keys must be in increasing frame order")]
     FrameOrder {
         index: usize,
         frame: u32,
         previous: u32,
     },
-    #[error("key {}: either every key has a look_at or none has", .index + 1)]
+    #[error("camera.keys[{index}]: either every key has a look_at or none has")]
     MixedLookAt { index: usize },
     #[error("give either one look_at for the whole path or a look_at on each key, not both")]
     BothLookAts,
-    #[error("key {}: coordinates must be finite and at most {MAX_COORD:e} in magnitude", .index + 1)]
+    #[error(
+        "camera.keys[{index}]: coordinates must be finite and at most {MAX_COORD:e} in magnitude"
+    )]
     BadCoordinate { index: usize },
     #[error("look_at: coordinates must be finite and at most {MAX_COORD:e} in magnitude")]
     BadLookAt,

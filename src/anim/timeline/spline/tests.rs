@@ -287,7 +287,7 @@ fn bad_keys_are_refused() {
             previous: 5
         }
     );
-    assert!(err.to_string().starts_with("key 3: frame 5"));
+    assert!(err.to_string().starts_with("camera.keys[2]: frame 5"));
     let mixed = vec![key_look(0, [0.0; 3], [1.0; 3]), key(5, [1.0; 3])];
     assert_eq!(
         Spline::new(mixed, false, false, None),
