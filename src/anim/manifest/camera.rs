@@ -20,13 +20,10 @@
 use super::raw::{RawCircle, RawSpline, RawStill, Vec3};
 use super::tracks::LookAt;
 use super::{ManifestError, Source};
-use crate::anim::timeline::{coord_ok, CameraPath, Key, Spline, SplineError};
+use crate::anim::timeline::{coord_ok, CameraPath, Circle, Key, Spline, SplineError};
 use crate::limits::{MAX_COORD, MAX_TURNS};
 use glam::DVec3;
 use toml::Spanned;
-
-/// A circle's values: center, radius, height, start_angle, turns.
-pub(super) type CircleValues = (DVec3, f64, f64, f64, f64);
 
 impl Source<'_> {
     /// A point, refused unless finite and within `MAX_COORD`.
@@ -58,7 +55,7 @@ impl Source<'_> {
         height: &Spanned<f64>,
         start_angle: Option<&Spanned<f64>>,
         turns: Option<&Spanned<f64>>,
-    ) -> Result<CircleValues, ManifestError> {
+    ) -> Result<Circle, ManifestError> {
         let center = self.point(center, "center")?;
         let r = self.number(radius, "radius", MAX_COORD)?;
         if r <= 0.0 {
@@ -74,7 +71,13 @@ impl Source<'_> {
             Some(v) => self.number(v, "turns", MAX_TURNS)?,
             None => 1.0,
         };
-        Ok((center, r, height, start_angle, turns))
+        Ok(Circle {
+            center,
+            radius: r,
+            height,
+            start_angle,
+            turns,
+        })
     }
 
     /// A fixed look-at point, or the object to follow.
@@ -92,7 +95,7 @@ impl Source<'_> {
         &self,
         raw: RawCircle,
     ) -> Result<(Option<CameraPath>, Option<LookAt>), ManifestError> {
-        let (center, radius, height, start_angle, turns) = self.circle_values(
+        let circle = self.circle_values(
             &raw.center,
             &raw.radius,
             &raw.height,
@@ -100,14 +103,7 @@ impl Source<'_> {
             raw.turns.as_ref(),
         )?;
         let (look_at, follow) = self.split_look_at(raw.look_at.as_ref())?;
-        let path = CameraPath::Circle {
-            center,
-            radius,
-            height,
-            start_angle,
-            turns,
-            look_at,
-        };
+        let path = CameraPath::Circle { circle, look_at };
         Ok((Some(path), follow))
     }
 

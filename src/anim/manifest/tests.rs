@@ -1,7 +1,7 @@
 //! Unit tests of the manifest: the SPEC's examples, defaults, paths and file names.
 
 use super::*;
-use crate::anim::timeline::{CameraPath, Key};
+use crate::anim::timeline::{CameraPath, Circle, Key};
 use glam::DVec3;
 
 /// SPEC §5's first example, verbatim.
@@ -86,11 +86,13 @@ fn the_spec_orbit_parses_with_its_values() {
     assert_eq!(m.scene, Path::new("/work/anims/../scenes/orbit.txt"));
     assert_eq!((m.frames, m.fps), (250, 25.0));
     let circle = CameraPath::Circle {
-        center: DVec3::new(0.0, 1.0, 0.0),
-        radius: 12.0,
-        height: 3.0,
-        start_angle: 0.0,
-        turns: 1.0,
+        circle: Circle {
+            center: DVec3::new(0.0, 1.0, 0.0),
+            radius: 12.0,
+            height: 3.0,
+            start_angle: 0.0,
+            turns: 1.0,
+        },
         look_at: None,
     };
     assert_eq!(m.camera, Some(circle));

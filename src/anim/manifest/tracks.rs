@@ -231,13 +231,7 @@ impl Source<'_> {
             raw.start_angle.as_ref(),
             raw.turns.as_ref(),
         )?;
-        Ok(Motion::Circle {
-            center: circle.0,
-            radius: circle.1,
-            height: circle.2,
-            start_angle: circle.3,
-            turns: circle.4,
-        })
+        Ok(Motion::Circle(circle))
     }
 
     /// `motion_blur`: shutter in (0, 1] frames (default 0.5), samples 1..=64 (default 8).

@@ -21,18 +21,42 @@
 use super::spline::Spline;
 use glam::DVec3;
 
+/// A horizontal circle travelled over the sequence: the camera's orbit, and the path of
+/// a tracked position that follows a circle.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Circle {
+    pub center: DVec3,
+    pub radius: f64,
+    /// The absolute y of every point.
+    pub height: f64,
+    /// Degrees; 0 puts the point on the +z side of `center`.
+    pub start_angle: f64,
+    pub turns: f64,
+}
+
+impl Circle {
+    /// The point at time `frame` of a `frames`-frame sequence: θ = start_angle +
+    /// 360°·(turns·frame/n mod 1), (center.x + radius·sin θ, height, center.z + radius·cos θ).
+    pub fn at(&self, frame: f64, frames: u32) -> DVec3 {
+        let n = f64::from(frames.max(1));
+        let fraction = (self.turns * frame / n).rem_euclid(1.0);
+        let theta = (self.start_angle + 360.0 * fraction).to_radians();
+        let (sin, cos) = theta.sin_cos();
+        let c = self.center;
+        DVec3::new(
+            c.x + self.radius * sin,
+            self.height,
+            c.z + self.radius * cos,
+        )
+    }
+}
+
 /// Where the camera is on each frame.
 #[derive(Clone, Debug, PartialEq)]
 pub enum CameraPath {
-    /// The report's orbit.
+    /// The report's orbit, looking at `look_at` (defaults to the circle's centre).
     Circle {
-        center: DVec3,
-        radius: f64,
-        height: f64,
-        /// Degrees; 0 puts the camera on the +z side of `center`.
-        start_angle: f64,
-        turns: f64,
-        /// Defaults to `center`.
+        circle: Circle,
         look_at: Option<DVec3>,
     },
     Spline(Spline),
@@ -43,17 +67,8 @@ impl CameraPath {
     /// `scene_look_at` is the scene file's point, used when the path gives none.
     pub fn at(&self, frame: f64, frames: u32, scene_look_at: DVec3) -> (DVec3, DVec3) {
         match self {
-            CameraPath::Circle {
-                center,
-                radius,
-                height,
-                start_angle,
-                turns,
-                look_at,
-            } => {
-                let n = f64::from(frames.max(1));
-                let eye = circle_point(*center, *radius, *height, *start_angle, *turns, frame, n);
-                (eye, look_at.unwrap_or(*center))
+            CameraPath::Circle { circle, look_at } => {
+                (circle.at(frame, frames), look_at.unwrap_or(circle.center))
             }
             CameraPath::Spline(spline) => spline.at(frame, frames, scene_look_at),
         }
@@ -68,37 +83,19 @@ impl CameraPath {
     }
 }
 
-/// The circle's point at time `frame` of an `n`-frame sequence: θ = start_angle +
-/// 360°·(turns·frame/n mod 1), (center.x + radius·sin θ, height, center.z + radius·cos θ).
-/// Shared by the camera and by position tracks that follow a circle.
-pub fn circle_point(
-    center: DVec3,
-    radius: f64,
-    height: f64,
-    start_angle: f64,
-    turns: f64,
-    frame: f64,
-    n: f64,
-) -> DVec3 {
-    let fraction = (turns * frame / n).rem_euclid(1.0);
-    let theta = (start_angle + 360.0 * fraction).to_radians();
-    let (sin, cos) = theta.sin_cos();
-    DVec3::new(center.x + radius * sin, height, center.z + radius * cos)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
     fn orbit(start_angle: f64, turns: f64, look_at: Option<DVec3>) -> CameraPath {
-        CameraPath::Circle {
+        let circle = Circle {
             center: DVec3::new(2.0, 1.0, -3.0),
             radius: 12.0,
             height: 3.0,
             start_angle,
             turns,
-            look_at,
-        }
+        };
+        CameraPath::Circle { circle, look_at }
     }
 
     fn assert_close(a: DVec3, b: DVec3) {

@@ -15,7 +15,7 @@ mod spline;
 mod target;
 mod track;
 
-pub use camera::{circle_point, CameraPath};
+pub use camera::{CameraPath, Circle};
 pub use ease::{Ease, Interpolation};
 pub use spline::{coord_ok, Key, Spline, SplineError};
 pub use target::{Field, Kind, Target};
@@ -220,7 +220,7 @@ impl Timeline {
 fn resolve(spec: &TrackSpec, scene: &Scene) -> Result<Track, String> {
     let target = Target::parse(&spec.target, scene)?;
     match &spec.motion {
-        Motion::Circle { .. } if !target.is_position() => {
+        Motion::Circle(_) if !target.is_position() => {
             return Err(format!(
                 "`{}` is not a position: only sphere center, plane or cylinder point and light position may follow a circle",
                 spec.target
@@ -238,7 +238,7 @@ fn resolve(spec: &TrackSpec, scene: &Scene) -> Result<Track, String> {
                 ));
             }
         }
-        Motion::Circle { .. } => {}
+        Motion::Circle(_) => {}
     }
     Ok(Track {
         spec: spec.clone(),

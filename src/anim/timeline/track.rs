@@ -24,7 +24,7 @@
 //! frame. `smooth` is the camera spline's centripetal Catmull-Rom through the key values
 //! (numbers as `(x, 0, 0)`), with the open path's reflected end points.
 
-use super::camera::circle_point;
+use super::camera::Circle;
 use super::ease::{Ease, Interpolation};
 use super::spline::curve_point;
 use super::target::{Kind, Target};
@@ -50,14 +50,8 @@ pub enum Motion {
         interpolation: Interpolation,
         keys: Vec<TrackKey>,
     },
-    /// A position on the camera circle's formula.
-    Circle {
-        center: DVec3,
-        radius: f64,
-        height: f64,
-        start_angle: f64,
-        turns: f64,
-    },
+    /// A position on a circle, as the camera's.
+    Circle(Circle),
 }
 
 /// A track as the manifest states it, before its target is resolved against a scene.
@@ -81,16 +75,7 @@ impl Motion {
     /// The value at time `t` (frames, possibly fractional) of a `frames`-frame sequence.
     pub fn value_at(&self, t: f64, frames: u32) -> DVec3 {
         match self {
-            Motion::Circle {
-                center,
-                radius,
-                height,
-                start_angle,
-                turns,
-            } => {
-                let n = f64::from(frames.max(1));
-                circle_point(*center, *radius, *height, *start_angle, *turns, t, n)
-            }
+            Motion::Circle(circle) => circle.at(t, frames),
             Motion::Keys {
                 interpolation,
                 keys,
@@ -119,7 +104,7 @@ impl Motion {
     /// segment (or the end key held), or `track` for a circle.
     pub fn loc_at<'a>(&'a self, t: f64, track: &'a FileLoc) -> &'a FileLoc {
         match self {
-            Motion::Circle { .. } => track,
+            Motion::Circle(_) => track,
             Motion::Keys { keys, .. } => match segment_at(keys, t) {
                 Some(segment) => &keys[segment].loc,
                 None if t <= f64::from(keys[0].frame) => &keys[0].loc,
@@ -245,13 +230,13 @@ mod tests {
 
     #[test]
     fn circles_follow_the_camera_formula() {
-        let m = Motion::Circle {
+        let m = Motion::Circle(Circle {
             center: DVec3::new(1.0, 0.0, 2.0),
             radius: 8.0,
             height: 10.0,
             start_angle: 0.0,
             turns: 1.0,
-        };
+        });
         // Frame 0: +z side; a quarter of 100 frames: +x side.
         assert!(m.value_at(0.0, 100).distance(DVec3::new(1.0, 10.0, 10.0)) < 1e-12);
         assert!(m.value_at(25.0, 100).distance(DVec3::new(9.0, 10.0, 2.0)) < 1e-12);
