@@ -29,8 +29,6 @@ pub enum AnimError {
     #[error(transparent)]
     Select(#[from] SelectError),
     #[error("{0}")]
-    Usage(String),
-    #[error("{0}")]
     Reference(String),
     #[error("{}: {width}×{height} frames are past the limit of 16384 a side and 2^26 pixels", .manifest.display())]
     Size {
@@ -72,7 +70,6 @@ impl AnimError {
             | AnimError::Scene(_)
             | AnimError::SceneFile { .. }
             | AnimError::Select(_)
-            | AnimError::Usage(_)
             | AnimError::Reference(_)
             | AnimError::Size { .. }
             | AnimError::Camera { .. }
@@ -98,7 +95,7 @@ mod tests {
 
     #[test]
     fn exit_codes() {
-        assert_eq!(AnimError::Usage("x".into()).exit_code(), 2);
+        assert_eq!(AnimError::Reference("x".into()).exit_code(), 2);
         assert_eq!(AnimError::Camera { frame: 3 }.exit_code(), 2);
         assert_eq!(AnimError::FfmpegMissing.exit_code(), 2);
         let folder = AnimError::Folder {

@@ -20,10 +20,45 @@ use std::str::FromStr;
 /// A bad frame list or shard.
 #[derive(Debug, thiserror::Error, PartialEq, Eq)]
 pub enum SelectError {
-    #[error("{0}")]
-    Frames(String),
+    /// The frame list `list` (as the user wrote it) cannot be read or names a frame the
+    /// sequence does not have.
+    #[error("frame list {list:?}: {problem}")]
+    Frames {
+        /// The list as given, e.g. `"0-3,9"`.
+        list: String,
+        /// What is wrong with it.
+        problem: ListProblem,
+    },
+    /// The shard cannot be parsed or resolved.
     #[error(transparent)]
     Shard(#[from] ShardError),
+}
+
+/// What is wrong with a frame list.
+#[derive(Debug, thiserror::Error, PartialEq, Eq)]
+pub enum ListProblem {
+    /// Two commas in a row, or a comma at either end (or an empty list).
+    #[error("an empty item (two commas, or a comma at an end)")]
+    EmptyItem,
+    /// An item or range end that is not a whole number ≥ 0 (the text found).
+    #[error("'{0}' is not a frame number")]
+    NotANumber(String),
+    /// A range `lo-hi` with `lo > hi`.
+    #[error("the range {lo}-{hi} runs backwards")]
+    Backwards {
+        /// The range's first frame.
+        lo: u32,
+        /// The range's last frame, below `lo`.
+        hi: u32,
+    },
+    /// A frame at or past the sequence's frame count.
+    #[error("frame {frame} is past the last frame, {last}")]
+    PastTheEnd {
+        /// The frame asked for.
+        frame: u32,
+        /// The sequence's last frame (count − 1).
+        last: u32,
+    },
 }
 
 /// Why a shard cannot be parsed or resolved. `count_name` is how the caller lets the user
@@ -246,30 +281,33 @@ pub fn select(
     Ok(list)
 }
 
-/// Parses a `--frames` list against a sequence of `frames` frames: sorted, without
+/// Parses a frame list (`0-3,9`) against a sequence of `frames` frames: sorted, without
 /// repeats.
 pub fn parse_frames(spec: &str, frames: u32) -> Result<Vec<u32>, SelectError> {
-    let err = |m: String| Err(SelectError::Frames(format!("--frames {spec:?}: {m}")));
+    let err = |problem| SelectError::Frames {
+        list: spec.to_string(),
+        problem,
+    };
     let mut set = BTreeSet::new();
     for part in spec.split(',').map(str::trim) {
         if part.is_empty() {
-            return err("an empty item (two commas, or a comma at an end)".into());
+            return Err(err(ListProblem::EmptyItem));
         }
         let (lo, hi) = match part.split_once('-') {
             Some((a, b)) => (a.trim(), b.trim()),
             None => (part, part),
         };
         let num = |s: &str| {
-            s.parse::<u32>().map_err(|_| {
-                SelectError::Frames(format!("--frames {spec:?}: '{s}' is not a frame number"))
-            })
+            s.parse::<u32>()
+                .map_err(|_| err(ListProblem::NotANumber(s.to_string())))
         };
         let (lo, hi) = (num(lo)?, num(hi)?);
         if lo > hi {
-            return err(format!("the range {lo}-{hi} runs backwards"));
+            return Err(err(ListProblem::Backwards { lo, hi }));
         }
         if hi >= frames {
-            return err(format!("frame {hi} is past the last frame, {}", frames - 1));
+            let last = frames.saturating_sub(1);
+            return Err(err(ListProblem::PastTheEnd { frame: hi, last }));
         }
         set.extend(lo..=hi);
     }
@@ -300,12 +338,23 @@ mod tests {
 
     #[test]
     fn bad_lists() {
-        assert!(parse_frames("6", 6).is_err());
-        assert!(parse_frames("4-2", 6).is_err());
-        assert!(parse_frames("1,,2", 6).is_err());
-        assert!(parse_frames("a-2", 6).is_err());
-        assert!(parse_frames("-1", 6).is_err());
-        assert!(parse_frames("", 6).is_err());
+        let problem = |spec: &str| match parse_frames(spec, 6) {
+            Err(SelectError::Frames { list, problem }) if list == spec => problem,
+            other => panic!("{spec}: {other:?}"),
+        };
+        use ListProblem::*;
+        assert_eq!(problem("6"), PastTheEnd { frame: 6, last: 5 });
+        assert_eq!(problem("4-2"), Backwards { lo: 4, hi: 2 });
+        assert_eq!(problem("1,,2"), EmptyItem);
+        assert_eq!(problem("a-2"), NotANumber("a".into()));
+        assert_eq!(problem("-1"), NotANumber("".into()));
+        assert_eq!(problem(""), EmptyItem);
+        // The message names the list, not the option it came from.
+        let e = parse_frames("4-2", 6).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "frame list \"4-2\": the range 4-2 runs backwards"
+        );
     }
 
     #[test]

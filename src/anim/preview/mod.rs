@@ -74,8 +74,31 @@ pub struct PreviewSummary {
 pub enum PreviewError {
     #[error(transparent)]
     Anim(#[from] AnimError),
-    #[error("{0}")]
-    Usage(String),
+    /// A scale of 0: frames are drawn at 1/K of their size, so K must be 1 or more.
+    #[error("a scale of 0: frames are drawn at 1/K of their size, K must be 1 or more")]
+    ZeroScale,
+    /// A contact-sheet step of 0: one tile every N frames needs N of 1 or more.
+    #[error("a contact-sheet step of 0: one tile every N frames, N must be 1 or more")]
+    ZeroEvery,
+    /// The contact sheet, one tile every `every` frames, would be past `MAX_PIXELS`.
+    #[error(
+        "a contact sheet of {tiles} tiles of {width}×{height} would be {sheet_width}×{sheet_height} \
+         pixels, past the limit of {MAX_PIXELS}"
+    )]
+    SheetTooLarge {
+        /// One tile every `every` frames.
+        every: u32,
+        /// The number of tiles.
+        tiles: u32,
+        /// A tile's size in pixels (the frame at 1/K).
+        width: u32,
+        /// A tile's height in pixels.
+        height: u32,
+        /// The sheet's size in pixels.
+        sheet_width: u64,
+        /// The sheet's height in pixels.
+        sheet_height: u64,
+    },
     #[error("cannot use the preview folder {dir}: {source}")]
     Folder {
         dir: PathBuf,
@@ -95,7 +118,9 @@ impl PreviewError {
     pub fn outcome(&self) -> crate::exit::Outcome {
         match self {
             PreviewError::Anim(e) => e.outcome(),
-            PreviewError::Usage(_) => crate::exit::Outcome::BadInput,
+            PreviewError::ZeroScale
+            | PreviewError::ZeroEvery
+            | PreviewError::SheetTooLarge { .. } => crate::exit::Outcome::BadInput,
             _ => crate::exit::Outcome::Failed,
         }
     }
@@ -122,13 +147,13 @@ pub fn default_dir(frame_dir: &Path) -> PathBuf {
     frame_dir.with_file_name(name)
 }
 
-/// Refuses options no preview can be made with, naming the option.
+/// Refuses options no preview can be made with.
 fn check(opts: &PreviewOptions) -> Result<(), PreviewError> {
     if opts.scale == 0 {
-        return Err(PreviewError::Usage("--scale 0: K must be 1 or more".into()));
+        return Err(PreviewError::ZeroScale);
     }
     if opts.every == Some(0) {
-        return Err(PreviewError::Usage("--every 0: N must be 1 or more".into()));
+        return Err(PreviewError::ZeroEvery);
     }
     Ok(())
 }
@@ -139,11 +164,14 @@ fn layout(frames: u32, every: Option<u32>, w: u32, h: u32) -> Result<Layout, Pre
     let l = Layout::new(frames, every, w, h);
     let (sw, sh) = l.size();
     if sw * sh > MAX_PIXELS {
-        return Err(PreviewError::Usage(format!(
-            "--every {every}: a contact sheet of {} tiles of {w}×{h} would be {sw}×{sh} \
-             pixels, past the limit of {MAX_PIXELS}; take a larger --every or --scale",
-            l.tiles
-        )));
+        return Err(PreviewError::SheetTooLarge {
+            every,
+            tiles: l.tiles,
+            width: w,
+            height: h,
+            sheet_width: sw,
+            sheet_height: sh,
+        });
     }
     Ok(l)
 }
@@ -241,7 +269,7 @@ mod tests {
     }
 
     #[test]
-    fn zero_scale_and_every_are_refused_by_name() {
+    fn zero_scale_and_every_are_refused() {
         let opts = |scale, every| PreviewOptions {
             manifest: "m.toml".into(),
             out: None,
@@ -249,10 +277,15 @@ mod tests {
             every,
         };
         let e = check(&opts(0, None)).unwrap_err();
-        assert!(e.to_string().starts_with("--scale 0"), "{e}");
+        assert!(matches!(e, PreviewError::ZeroScale), "{e}");
+        assert!(e.to_string().starts_with("a scale of 0"), "{e}");
         assert_eq!(e.exit_code(), 2);
         let e = check(&opts(4, Some(0))).unwrap_err();
-        assert!(e.to_string().starts_with("--every 0"), "{e}");
+        assert!(matches!(e, PreviewError::ZeroEvery), "{e}");
+        assert!(
+            e.to_string().starts_with("a contact-sheet step of 0"),
+            "{e}"
+        );
         assert!(check(&opts(1, Some(1))).is_ok());
     }
 
@@ -260,9 +293,14 @@ mod tests {
     fn a_sheet_past_the_pixel_limit_is_refused_before_rendering() {
         // 1,000,000 tiles of 160×120 at --every 1: far past 2^26 pixels.
         let e = layout(1_000_000, Some(1), 160, 120).unwrap_err();
+        assert!(
+            matches!(e, PreviewError::SheetTooLarge { every: 1, .. }),
+            "{e}"
+        );
         assert!(e
             .to_string()
-            .starts_with("--every 1: a contact sheet of 1000000 tiles"));
+            .starts_with("a contact sheet of 1000000 tiles of 160×120"));
+        assert_eq!(e.exit_code(), 2);
         // The default step keeps about 24 tiles: fine.
         assert_eq!(layout(1_000_000, None, 160, 120).unwrap().tiles, 24);
     }

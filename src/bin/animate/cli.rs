@@ -12,6 +12,8 @@ use whitted::anim::select::{process_env, SelectError, Shard};
 use whitted::anim::{AnimError, Manifest, Project};
 use whitted::output::ImageFormat;
 
+use crate::report::Usage;
+
 const AFTER_HELP: &str = "\
 Exit status: 0 success; 1 the run started and failed (a frame could not be rendered or
 written, ffmpeg failed; `check`: a frame failed; `status`: frames are stale or missing);
@@ -162,10 +164,10 @@ impl RenderArgs {
 
     /// Where the frames go: a stream, a video, or a folder (`-o`, else the manifest's).
     /// Binary frames are refused on a terminal unless forced.
-    pub fn destination(&self, m: &Manifest) -> Result<Destination, AnimError> {
+    pub fn destination(&self, m: &Manifest) -> Result<Destination, Usage> {
         if self.stdout.is_some() && std::io::stdout().is_terminal() && !self.force {
             let why = "refusing to write binary frames to a terminal: redirect standard output, or add --force";
-            return Err(AnimError::Usage(why.into()));
+            return Err(Usage(why.into()));
         }
         Ok(match (self.stdout, &self.video) {
             (Some(format), _) => Destination::Stream(format),

@@ -88,7 +88,7 @@ fn check_command(args: CheckArgs) -> anyhow::Result<Outcome> {
     for exporter in args.exporters() {
         exporter
             .export(&report)
-            .map_err(|e| AnimError::Usage(e.to_string()))?;
+            .map_err(|e| report::Usage(e.to_string()))?;
     }
     Ok(if report.pass {
         Outcome::Success
@@ -138,7 +138,7 @@ fn main() -> ExitCode {
     match result {
         Ok(outcome) => ExitCode::from(outcome.code()),
         Err(e) => {
-            eprintln!("animate: {e}");
+            eprintln!("animate: {}", report::message(&e));
             if let Some(hint) = e.downcast_ref::<AnimError>().and_then(report::hint) {
                 eprintln!("animate: hint: {hint}");
             }

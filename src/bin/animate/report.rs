@@ -10,6 +10,7 @@ use whitted::anim::check::{CheckError, Missing};
 use whitted::anim::frames::pipeline::Summary;
 use whitted::anim::frames::run::ffmpeg_raw_input;
 use whitted::anim::preview::{PreviewError, PreviewSummary};
+use whitted::anim::select::SelectError;
 use whitted::anim::{AnimError, Animation, Event, Reporter};
 use whitted::exit::Outcome;
 
@@ -114,9 +115,17 @@ pub fn summary(s: &Summary, start: Instant, place: &str) {
     );
 }
 
-/// The exit-status row of an error from any part of the library.
+/// A request on the command line that cannot be carried out, in words that name the flag
+/// (exit status 2).
+#[derive(Debug, thiserror::Error)]
+#[error("{0}")]
+pub struct Usage(pub String);
+
+/// The exit-status row of an error from any part of the library or the command line.
 pub fn outcome(e: &anyhow::Error) -> Outcome {
-    if let Some(e) = e.downcast_ref::<AnimError>() {
+    if e.downcast_ref::<Usage>().is_some() {
+        Outcome::BadInput
+    } else if let Some(e) = e.downcast_ref::<AnimError>() {
         e.outcome()
     } else if let Some(e) = e.downcast_ref::<PreviewError>() {
         e.outcome()
@@ -132,8 +141,44 @@ pub fn previewed(s: &PreviewSummary, start: Instant) {
     eprintln!("animate: preview of {n} frames at {w}×{h} in {secs:.2} s -> {dir}");
 }
 
+/// The text of an error as the user sees it: the library's words, prefixed with the
+/// option a value came from where the library only names the value.
+pub fn message(e: &anyhow::Error) -> String {
+    if let Some(e) = e.downcast_ref::<AnimError>() {
+        anim_message(e)
+    } else if let Some(e) = e.downcast_ref::<PreviewError>() {
+        match e {
+            PreviewError::ZeroScale => "--scale 0: K must be 1 or more".into(),
+            PreviewError::ZeroEvery => "--every 0: N must be 1 or more".into(),
+            PreviewError::SheetTooLarge { every, .. } => {
+                format!("--every {every}: {e}; take a larger --every or --scale")
+            }
+            PreviewError::Anim(e) => anim_message(e),
+            _ => e.to_string(),
+        }
+    } else {
+        e.to_string()
+    }
+}
+
+fn anim_message(e: &AnimError) -> String {
+    match e {
+        AnimError::Select(e) => select_message(e),
+        _ => e.to_string(),
+    }
+}
+
+/// A frame list's error names `--frames`, the only place a list comes from on the
+/// command line.
+fn select_message(e: &SelectError) -> String {
+    match e {
+        SelectError::Frames { list, problem } => format!("--frames {list:?}: {problem}"),
+        SelectError::Shard(_) => e.to_string(),
+    }
+}
+
 /// A check error, with the flag that settles it.
-pub fn with_flags(e: CheckError) -> AnimError {
+pub fn with_flags(e: CheckError) -> Usage {
     let hint = match &e {
         CheckError::NoCheckSection { what, .. } => match what {
             Missing::Frames => "; name them with --frames",
@@ -141,9 +186,9 @@ pub fn with_flags(e: CheckError) -> AnimError {
         },
         CheckError::FailPercent(_) => " (--fail-percent or [check] fail_percent)",
         CheckError::Flip(_) => " (--flip or [check] flip)",
-        CheckError::Frames(_) => "",
+        CheckError::Frames(e) => return Usage(select_message(e)),
     };
-    AnimError::Usage(format!("{e}{hint}"))
+    Usage(format!("{e}{hint}"))
 }
 
 /// A hint naming the flag that helps, for errors where one does.
@@ -153,5 +198,36 @@ pub fn hint(e: &AnimError) -> Option<&'static str> {
         AnimError::Reference(_) => Some("`animate bless` writes the references"),
         AnimError::FfmpegMissing => Some("or pipe `--stdout raw` into an encoder"),
         _ => None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use whitted::anim::select::parse_frames;
+
+    #[test]
+    fn usage_errors_are_bad_input() {
+        let e = anyhow::Error::from(Usage("refusing".into()));
+        assert_eq!(outcome(&e), Outcome::BadInput);
+        assert_eq!(message(&e), "refusing");
+    }
+
+    #[test]
+    fn library_errors_get_the_flag_they_came_from() {
+        let e = anyhow::Error::from(PreviewError::ZeroScale);
+        assert!(message(&e).starts_with("--scale 0"), "{}", message(&e));
+        assert_eq!(outcome(&e), Outcome::BadInput);
+        let e = anyhow::Error::from(PreviewError::ZeroEvery);
+        assert!(message(&e).starts_with("--every 0"), "{}", message(&e));
+        let list = || parse_frames("3-1", 12).unwrap_err();
+        let e = anyhow::Error::from(AnimError::from(list()));
+        assert_eq!(
+            message(&e),
+            "--frames \"3-1\": the range 3-1 runs backwards"
+        );
+        assert_eq!(outcome(&e), Outcome::BadInput);
+        let e = with_flags(CheckError::Frames(list()));
+        assert_eq!(e.0, "--frames \"3-1\": the range 3-1 runs backwards");
     }
 }
