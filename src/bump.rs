@@ -15,6 +15,7 @@ use glam::DVec3;
 /// How a material perturbs its normal.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Bump {
+    /// Type 0: the geometric normal, unchanged.
     None,
     /// Type 1 with its ε.
     Uniform(f64),

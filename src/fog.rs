@@ -13,9 +13,13 @@ use crate::texture::Color;
 /// The scene's fog: type and distance D.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Fog {
+    /// Type 0: no fog.
     None,
+    /// Type 1, linear: f = d/D, full fog from distance D on.
     Linear(f64),
+    /// Type 2, exponential: f = 1 − e^(−d/D).
     Exponential(f64),
+    /// Type 3, exponential squared: f = 1 − e^(−(d/D)²).
     ExponentialSquared(f64),
 }
 

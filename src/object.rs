@@ -18,21 +18,28 @@ pub struct Material {
     pub kt: f64,
     /// Refraction index of the object (the outside is always air, 1.0).
     pub ior: f64,
+    /// How the normal is perturbed (bump type and amplitude).
     pub bump: Bump,
 }
 
 /// One renderable object.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Object {
+    /// The surface.
     pub shape: Shape,
+    /// Its colour pattern.
     pub texture: Texture,
+    /// Its lighting coefficients, index and bump.
     pub material: Material,
 }
 
 /// An omnidirectional point light.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Light {
+    /// Where the light is.
     pub position: DVec3,
+    /// Its colour, each component in 0..1.
     pub color: Color,
+    /// Its intensity, a factor on the colour (0..1000).
     pub intensity: f64,
 }

@@ -13,7 +13,9 @@ pub const T_MIN: f64 = 0.01;
 /// A half-line `origin + t·dir`, t > 0, with `dir` of unit length.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray {
+    /// Where the ray starts.
     pub origin: DVec3,
+    /// Its direction, of unit length.
     pub dir: DVec3,
 }
 

@@ -14,7 +14,9 @@ use rayon::prelude::*;
 /// An 8-bit RGB image, rows top to bottom.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Frame {
+    /// Width in pixels.
     pub width: u32,
+    /// Height in pixels.
     pub height: u32,
     /// width·height·3 bytes.
     pub pixels: Vec<u8>,

@@ -31,10 +31,15 @@ fn is_even(s: f64) -> bool {
 /// The colour pattern of an object.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Texture {
+    /// `1 R G B`: one colour everywhere.
     Uniform(Color),
+    /// `2 1 …`: a checker of the two colours.
     Checker(Color, Color),
+    /// `2 2 …`: Perlin noise blending the three colours.
     Perlin(Color, Color, Color),
+    /// `2 3 …`: wood rings between the two colours.
     Wood(Color, Color),
+    /// `2 4 …`: marble veins between the two colours.
     Marble(Color, Color),
 }
 

@@ -36,6 +36,7 @@ pub struct RayCount {
 }
 
 impl RayCount {
+    /// All rays: primary, secondary and shadow.
     pub fn total(&self) -> u64 {
         self.primary + self.secondary + self.shadow
     }

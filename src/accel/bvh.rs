@@ -30,7 +30,9 @@ const PAD: f64 = 1e-5;
 /// One sphere of the tree with the index of its object in the scene.
 #[derive(Clone, Copy, Debug)]
 pub struct Prim {
+    /// The sphere itself (a copy, so a leaf test needs no indirection).
     pub sphere: Sphere,
+    /// Its index in the scene's object list (file order), which breaks ties.
     pub index: u32,
     /// Kt > 0: shadow rays cross it.
     pub glass: bool,
@@ -202,10 +204,12 @@ impl Bvh {
         bvh
     }
 
+    /// True when the tree holds no sphere.
     pub fn is_empty(&self) -> bool {
         self.prims.is_empty()
     }
 
+    /// How many spheres the tree holds.
     pub fn len(&self) -> usize {
         self.prims.len()
     }

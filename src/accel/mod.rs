@@ -80,6 +80,8 @@ impl Crossings {
 }
 
 impl Accel {
+    /// Builds the accelerator over `objects` (a BVH over the spheres from 13 spheres up, the
+    /// unbounded shapes in a flat list).
     pub fn new(objects: &[Object]) -> Accel {
         let prims: Vec<Prim> = objects
             .iter()

@@ -28,8 +28,10 @@ pub struct Roots {
 }
 
 impl Roots {
+    /// No root.
     pub const NONE: Roots = Roots { t: [0.0; 2], n: 0 };
 
+    /// A single (double) root `t`.
     pub fn one(t: f64) -> Roots {
         Roots { t: [t, t], n: 1 }
     }
@@ -68,8 +70,11 @@ impl Roots {
 /// A surface of the scene.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Shape {
+    /// A sphere (centre, radius).
     Sphere(Sphere),
+    /// An infinite plane (point, normal).
     Plane(Plane),
+    /// A general quadric; the parser's cylinders are quadrics.
     Quadric(Quadric),
 }
 

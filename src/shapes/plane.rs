@@ -10,6 +10,7 @@ use glam::DVec3;
 /// A plane through `point` with unit `normal`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Plane {
+    /// A point of the plane.
     pub point: DVec3,
     normal: DVec3,
 }
@@ -23,6 +24,7 @@ impl Plane {
         }
     }
 
+    /// The roots of the ray with the plane: one, or none for a ray parallel to it.
     #[inline]
     pub fn roots(&self, ray: &Ray) -> Roots {
         let denom = self.normal.dot(ray.dir);
@@ -44,6 +46,7 @@ impl Plane {
         (t > T_MIN && t < t_max).then_some(t)
     }
 
+    /// The plane's unit normal, as given (not turned towards any ray).
     #[inline]
     pub fn normal(&self) -> DVec3 {
         self.normal

@@ -21,6 +21,7 @@ const LINEAR_EPS: f64 = 1e-12;
 /// A quadric surface F = 0, F in coordinates relative to `origin`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Quadric {
+    /// The point the coefficients' coordinates are measured from.
     pub origin: DVec3,
     /// The ten coefficients A, B, C, D, E, F, G, H, I, J of the report.
     pub coef: [f64; 10],
@@ -64,6 +65,7 @@ impl Quadric {
             + j
     }
 
+    /// The roots of the ray with the surface, in increasing order.
     #[inline(always)]
     pub fn roots(&self, ray: &Ray) -> Roots {
         let [a, b, c, d, e, f, g, h, i, j] = self.coef;

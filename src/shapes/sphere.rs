@@ -13,13 +13,16 @@ use glam::DVec3;
 /// A sphere given by centre and radius (> 0).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Sphere {
+    /// The centre.
     pub center: DVec3,
+    /// The radius (> 0).
     pub radius: f64,
     radius2: f64,
     inv_radius: f64,
 }
 
 impl Sphere {
+    /// The sphere of that centre and radius; the radius must be > 0 (the parser refuses others).
     pub fn new(center: DVec3, radius: f64) -> Sphere {
         Sphere {
             center,
@@ -29,6 +32,7 @@ impl Sphere {
         }
     }
 
+    /// The roots of the ray with the sphere, in increasing order.
     #[inline]
     pub fn roots(&self, ray: &Ray) -> Roots {
         let oc = self.center - ray.origin;
