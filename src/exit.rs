@@ -13,6 +13,7 @@
 /// How a command ended, as far as the exit status is concerned.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Outcome {
+    /// Everything asked for was done (status 0).
     Success,
     /// The run started and something failed (status 1).
     Failed,

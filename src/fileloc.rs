@@ -6,8 +6,11 @@ use std::fmt;
 /// A position in a text file: 1-based line and column (in characters).
 #[derive(Clone, Debug, PartialEq, Eq, Default)]
 pub struct FileLoc {
+    /// The file's name as the user gave it (printed as is).
     pub file: String,
+    /// The line, from 1.
     pub line: usize,
+    /// The column in characters (not bytes), from 1.
     pub column: usize,
 }
 

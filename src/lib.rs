@@ -29,6 +29,8 @@
 //! assert!(rays.primary == 12);
 //! ```
 
+#![warn(missing_docs)]
+
 pub mod accel;
 pub mod anim;
 pub mod bump;

@@ -22,27 +22,50 @@ pub const DEFAULT_JPEG_QUALITY: u8 = 90;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum ImageFormat {
+    /// The report's `.raw`: width·height·3 RGB bytes, rows top to bottom, no header.
     Raw,
+    /// `.png`: 8-bit RGB, lossless.
     Png,
-    Jpeg { quality: u8 },
+    /// `.jpg`/`.jpeg`: baseline JPEG.
+    Jpeg {
+        /// Encoder quality, 1 (smallest) to 100 (best); `DEFAULT_JPEG_QUALITY` unless set.
+        quality: u8,
+    },
+    /// `.ppm`: binary P6, maxval 255.
     Ppm,
 }
 
 /// Why an image could not be written.
 #[derive(Debug, thiserror::Error)]
 pub enum OutputError {
+    /// The path's extension names no format this module writes (bad input).
     #[error("{path}: unknown image extension (use .png, .jpg, .jpeg, .ppm or .raw)")]
-    UnknownExtension { path: PathBuf },
+    UnknownExtension {
+        /// The image path as given.
+        path: PathBuf,
+    },
+    /// The path cannot take an image: its folder is missing, or it is a folder (bad
+    /// input, found before rendering).
     #[error("cannot write {path}: {reason}")]
-    Target { path: PathBuf, reason: String },
+    Target {
+        /// The image path as given.
+        path: PathBuf,
+        /// Why, e.g. "the folder out does not exist".
+        reason: String,
+    },
+    /// Creating, writing or renaming the file failed while writing (a failed run).
     #[error("{path}: {source}")]
     Io {
+        /// The file's final name (never the hidden temporary one).
         path: PathBuf,
+        /// The system's reason.
         #[source]
         source: std::io::Error,
     },
+    /// The encoder refused the pixels (e.g. a size PNG or JPEG cannot hold).
     #[error("cannot encode the image: {0}")]
     Encode(#[from] image::ImageError),
+    /// Writing to a stream (standard output, a pipe) failed.
     #[error("cannot write the image: {0}")]
     Stream(#[from] std::io::Error),
 }

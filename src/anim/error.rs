@@ -15,49 +15,89 @@ use std::path::PathBuf;
 /// Why an animation run stopped.
 #[derive(Debug, thiserror::Error)]
 pub enum AnimError {
+    /// The manifest cannot be read or is invalid (bad input).
     #[error(transparent)]
     Manifest(#[from] ManifestError),
+    /// The scene the manifest names is invalid (bad input).
     #[error(transparent)]
     Scene(#[from] SceneError),
+    /// The scene file the manifest names cannot be read; located at the manifest's
+    /// `scene =` line (bad input).
     #[error("{loc}: scene: cannot read {path}: {source}")]
     SceneFile {
+        /// The manifest's `scene =` value.
         loc: FileLoc,
+        /// The scene's path, resolved beside the manifest.
         path: String,
+        /// The system's reason.
         #[source]
         source: std::io::Error,
     },
+    /// The frame list or shard is bad (bad input).
     #[error(transparent)]
     Select(#[from] SelectError),
+    /// A check's reference image is missing, unreadable or of another size than the
+    /// frames (bad input: the check cannot run).
     #[error("{0}")]
     Reference(String),
+    /// The frames would be larger than `MAX_SIDE` a side or `MAX_PIXELS` in all, e.g. after
+    /// a `[render]` size override (bad input).
     #[error("{}: {width}×{height} frames are past the limit of 16384 a side and 2^26 pixels", .manifest.display())]
     Size {
+        /// The manifest that asks for this size.
         manifest: PathBuf,
+        /// The asked width in pixels.
         width: u32,
+        /// The asked height in pixels.
         height: u32,
     },
+    /// At this frame the camera's eye coincides with its look-at point, so it has no
+    /// direction (bad input, found before rendering).
     #[error("frame {frame}: the camera is placed on the point it looks at")]
-    Camera { frame: u32 },
+    Camera {
+        /// The first frame where this happens.
+        frame: u32,
+    },
+    /// The output (or report) folder cannot be created or used (bad input).
     #[error("cannot use the output folder {dir}: {source}")]
     Folder {
+        /// The folder.
         dir: PathBuf,
+        /// The system's reason.
         #[source]
         source: std::io::Error,
     },
+    /// A frame was rendered but could not be written (a failed run).
     #[error("frame {frame}: {source}")]
     Write {
+        /// The frame's number.
         frame: u32,
+        /// Why its file could not be written.
         #[source]
         source: OutputError,
     },
+    /// Writing frames to standard output failed, e.g. the reader closed the pipe (a
+    /// failed run).
     #[error("cannot write the frames to the output stream: {0}")]
     Stream(#[source] std::io::Error),
+    /// A video was asked for and no `ffmpeg` is on PATH (bad input, found before rendering).
     #[error("ffmpeg was not found on PATH (install it, e.g. apt-get install ffmpeg, or stream raw frames into an encoder of your choice)")]
     FfmpegMissing,
+    /// The video file cannot be made: its folder is missing, it is a folder, or ffmpeg
+    /// knows no container for its extension (bad input, found before rendering).
     #[error("cannot make the video {path}: {reason}")]
-    VideoTarget { path: PathBuf, reason: String },
+    VideoTarget {
+        /// The video path as given.
+        path: PathBuf,
+        /// Why, in words (ffmpeg's own where it gave one).
+        reason: String,
+    },
+    /// ffmpeg could not be started, stopped reading, or exited with an error; the text is
+    /// its own last words (a failed run).
     #[error("ffmpeg failed: {0}")]
     Ffmpeg(String),
+    /// The run was stopped by this signal number (2 SIGINT, 15 SIGTERM) after the frames
+    /// in flight were finished.
     #[error("interrupted by signal {0}; finished frames are kept")]
     Interrupted(i32),
 }

@@ -107,20 +107,28 @@ impl OutputSpec {
 /// `[render]`: optional overrides of the scene file, and motion blur.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct RenderSpec {
+    /// The frames' width in pixels instead of the scene's, 1 to `MAX_SIDE`.
     pub width: Option<u32>,
+    /// The frames' height in pixels instead of the scene's, 1 to `MAX_SIDE`.
     pub height: Option<u32>,
     /// n for an n×n grid per pixel; 1 when not given.
     pub samples: u32,
+    /// Sub-frames averaged over the shutter, when `[render] motion_blur` is set.
     pub motion_blur: Option<MotionBlur>,
 }
 
 /// `[check]`, paths resolved.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CheckSpec {
+    /// The frames `animate check` compares, ascending, without repeats.
     pub frames: Vec<u32>,
+    /// The folder of reference PNGs, resolved against the manifest's folder.
     pub references: PathBuf,
+    /// A pixel fails when a channel differs by more than this, 0..255.
     pub fail: u8,
+    /// A frame fails when more than this percentage of pixels fail, 0..100.
     pub fail_percent: f64,
+    /// A frame fails when any channel differs by more than this, 0..255.
     pub hard_fail: u8,
     /// The FLIP limit, when the manifest sets one.
     pub flip: Option<f64>,
@@ -135,30 +143,46 @@ pub struct Manifest {
     pub scene: PathBuf,
     /// Where `scene = ...` is written, for errors about the scene file.
     pub scene_loc: FileLoc,
+    /// The number of frames of the sequence, 1 to `MAX_FRAMES`; frames are numbered from 0.
     pub frames: u32,
+    /// Frames per second, > 0: the time base of the camera and the video.
     pub fps: f64,
     /// The camera path; `None` keeps the scene file's eye.
     pub camera: Option<CameraPath>,
     /// An object the camera follows (`look_at = "sphere 2"`), or, without a path, a
     /// fixed point.
     pub look_at: Option<LookAt>,
+    /// The `[[track]]` tables, in file order.
     pub tracks: Vec<TrackSpec>,
+    /// `[output]`: where and how frames are written.
     pub output: OutputSpec,
+    /// `[render]`: size overrides, supersampling, motion blur.
     pub render: RenderSpec,
+    /// `[check]`, when the manifest has one.
     pub check: Option<CheckSpec>,
 }
 
 /// Why a manifest could not be loaded.
 #[derive(Debug, thiserror::Error)]
 pub enum ManifestError {
+    /// The file cannot be opened or read.
     #[error("{path}: cannot read the manifest: {source}")]
     Io {
+        /// The manifest's path as given.
         path: String,
+        /// The system's reason.
         #[source]
         source: std::io::Error,
     },
+    /// The manifest is not TOML, not UTF-8, or a value has the wrong type or is out of
+    /// its bounds.
     #[error("{loc}: {message}")]
-    Invalid { loc: FileLoc, message: String },
+    Invalid {
+        /// Where the offending value (or table) is.
+        loc: FileLoc,
+        /// What is wrong and what was expected.
+        message: String,
+    },
     /// Every unknown key or table of the manifest, in file order (at least one): one
     /// `path:line:column: message` line each.
     #[error("{}", lines(.0))]
@@ -186,6 +210,8 @@ impl ManifestError {
 }
 
 impl Manifest {
+    /// Reads and validates the manifest at `path`; relative paths inside it are resolved
+    /// against its folder.
     pub fn load(path: &Path) -> Result<Manifest, ManifestError> {
         let bytes = std::fs::read(path).map_err(|source| ManifestError::Io {
             path: path.display().to_string(),

@@ -28,7 +28,9 @@ pub const PIXEL_VERSION: u32 = 1;
 
 /// A manifest with its scene and timeline.
 pub struct Project {
+    /// The validated manifest.
     pub manifest: Manifest,
+    /// The base scene and everything that changes over time.
     pub timeline: Timeline,
 }
 
@@ -53,20 +55,31 @@ impl Project {
 /// Everything besides the scene and camera that decides a frame's bytes.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Settings {
+    /// The frame's width in pixels.
     pub width: u32,
+    /// The frame's height in pixels.
     pub height: u32,
+    /// n of the n×n supersampling grid.
     pub samples: u32,
+    /// The motion blur, if any.
     pub motion_blur: Option<MotionBlur>,
+    /// The file format the frame is written in.
     pub format: ImageFormat,
+    /// `PIXEL_VERSION` of the library that drew it.
     pub pixel_version: u32,
 }
 
 /// A project ready to draw any of its frames at a size.
 pub struct Animation<'p> {
+    /// The project's manifest.
     pub manifest: &'p Manifest,
+    /// The project's timeline.
     pub timeline: &'p Timeline,
+    /// The frames' width in pixels (the manifest's, the scene's, or a preview's).
     pub width: u32,
+    /// The frames' height in pixels.
     pub height: u32,
+    /// n of the n×n supersampling grid.
     pub samples: u32,
     /// The acceleration structure every frame shares, when no track moves geometry.
     shared: Option<Arc<Accel>>,

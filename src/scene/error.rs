@@ -7,15 +7,21 @@ pub use crate::fileloc::FileLoc;
 /// Why a scene could not be loaded.
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
+    /// The file cannot be opened or read (missing, unreadable, not UTF-8).
     #[error("{path}: cannot read the scene file: {source}")]
     Io {
+        /// The scene's path as given.
         path: String,
+        /// The system's reason.
         #[source]
         source: std::io::Error,
     },
+    /// A token is missing, is not a number, or is out of its range.
     #[error("{loc}: {message} ({context})")]
     Syntax {
+        /// Where the offending token is (or the end of the file, when one is missing).
         loc: FileLoc,
+        /// What was expected and found, e.g. "expected a number, found `x`".
         message: String,
         /// Where in the structure: "sphere 3 of 4, field Radius".
         context: String,

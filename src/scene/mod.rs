@@ -34,16 +34,22 @@ pub use spec::{direction, ShapeSpec};
 /// Everything one Scene.txt holds.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
+    /// The image's width in pixels, 1 to `MAX_SIDE`.
     pub width: u32,
+    /// The image's height in pixels, 1 to `MAX_SIDE`.
     pub height: u32,
+    /// The camera's position (the eye).
     pub eye: DVec3,
+    /// The point the camera looks at; never equal to `eye`.
     pub look_at: DVec3,
+    /// The fog on primary rays (none when its distance is 0).
     pub fog: Fog,
     /// Spheres, then planes, then cylinders, in file order.
     pub objects: Vec<Object>,
     /// Each object's shape as the file gives it (`objects[i].shape` is `specs[i].build()`):
     /// what an animation track changes before rebuilding the shape.
     pub specs: Vec<ShapeSpec>,
+    /// The point lights, in file order.
     pub lights: Vec<Light>,
 }
 

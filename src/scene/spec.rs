@@ -9,17 +9,27 @@ use glam::DVec3;
 /// The values one shape record of Scene.txt gives.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ShapeSpec {
+    /// A sphere record.
     Sphere {
+        /// The centre.
         center: DVec3,
+        /// The radius, > 0.
         radius: f64,
     },
+    /// A plane record.
     Plane {
+        /// A point on the plane.
         point: DVec3,
+        /// The normal as written (non-zero; normalised when the shape is built).
         normal: DVec3,
     },
+    /// An infinite cylinder record.
     Cylinder {
+        /// The axis direction as written (non-zero).
         axis: DVec3,
+        /// A point on the axis.
         point: DVec3,
+        /// The radius, > 0.
         radius: f64,
     },
 }

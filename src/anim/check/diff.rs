@@ -13,8 +13,11 @@ use serde::Serialize;
 /// The thresholds of a check.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Tolerance {
+    /// A pixel fails when a channel differs by more than this, 0..255.
     pub fail: u8,
+    /// A frame fails when more than this percentage of its pixels fail, 0..100.
     pub fail_percent: f64,
+    /// A frame fails when any channel differs by more than this, 0..255.
     pub hard_fail: u8,
     /// The largest mean FLIP error a frame may have; `None`: FLIP is not computed.
     pub flip: Option<f64>,
@@ -79,6 +82,7 @@ pub struct Comparison {
     pub max_at: Option<(u32, u32, usize)>,
     /// Pixels with a channel differing by more than `fail`.
     pub failing_pixels: u64,
+    /// `failing_pixels` as a percentage of all pixels, 0..100.
     pub failing_percent: f64,
     /// Mean absolute difference over all channels, 0..255.
     pub mean_error: f64,

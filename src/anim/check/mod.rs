@@ -36,12 +36,22 @@ use std::time::Instant;
 /// command-line flags: the binary says which flag to use.
 #[derive(Debug, thiserror::Error)]
 pub enum CheckError {
+    /// The manifest has no `[check]` and the caller did not give the frames or the
+    /// references folder either.
     #[error("{manifest}: no [check] section names the {what}")]
-    NoCheckSection { manifest: PathBuf, what: Missing },
+    NoCheckSection {
+        /// The manifest's path.
+        manifest: PathBuf,
+        /// What is left unnamed.
+        what: Missing,
+    },
+    /// The caller's frame list is bad.
     #[error(transparent)]
     Frames(#[from] SelectError),
+    /// The caller's fail percentage is outside 0..=100 (the value given).
     #[error("fail_percent must be from 0 to 100, found {0}")]
     FailPercent(f64),
+    /// The caller's FLIP limit is outside 0..=1 (the value given).
     #[error("the FLIP limit must be from 0 to 1, found {0}")]
     Flip(f64),
 }
@@ -49,7 +59,9 @@ pub enum CheckError {
 /// What a manifest without `[check]` leaves unnamed.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Missing {
+    /// Which frames to check.
     Frames,
+    /// Where the reference images are.
     References,
 }
 
@@ -65,21 +77,32 @@ impl std::fmt::Display for Missing {
 /// The caller's choices, each replacing the manifest's `[check]` value when given.
 #[derive(Clone, Debug, Default)]
 pub struct Overrides<'a> {
+    /// A frame list (`0-3,9`) instead of `[check] frames`.
     pub frames: Option<&'a str>,
+    /// The references folder instead of `[check] references`.
     pub references: Option<&'a Path>,
+    /// The folder for images of failing frames instead of the default (`default_report`).
     pub report: Option<&'a Path>,
+    /// The per-pixel channel difference limit, 0..255.
     pub fail: Option<u8>,
+    /// The percentage of failing pixels a frame may have, 0..100.
     pub fail_percent: Option<f64>,
+    /// The channel difference no pixel may exceed, 0..255.
     pub hard_fail: Option<u8>,
+    /// The mean FLIP error limit, 0..1.
     pub flip: Option<f64>,
 }
 
 /// A check's settled options.
 #[derive(Clone, Debug, PartialEq)]
 pub struct CheckOptions {
+    /// The frames to check, ascending, without repeats.
     pub frames: Vec<u32>,
+    /// The folder holding the reference PNGs.
     pub references: PathBuf,
+    /// The folder for the images of failing frames.
     pub report: PathBuf,
+    /// The limits a frame must stay within.
     pub tolerance: Tolerance,
 }
 

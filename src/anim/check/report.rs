@@ -9,37 +9,49 @@ use std::path::PathBuf;
 /// The outcome for one checked frame.
 #[derive(Clone, Debug, Serialize)]
 pub struct FrameReport {
+    /// The frame's number in the sequence.
     pub frame: u32,
     /// The frame's file name stem (the manifest's name pattern), e.g. `frame_0005`.
     pub name: String,
+    /// Its figures against the reference.
     #[serde(flatten)]
     pub comparison: Comparison,
     /// The mean FLIP error, when the tolerance has a FLIP limit.
     pub flip: Option<f64>,
     /// The limits the frame broke, in the order fail_percent, hard_fail, flip.
     pub failed: Vec<Limit>,
+    /// True when `failed` is empty.
     pub pass: bool,
     /// Seconds to render and compare the frame.
     pub seconds: f64,
+    /// The reference it was compared with.
     pub reference_image: PathBuf,
-    /// The rendered frame, the diff heat map and the FLIP map, written for failing frames.
+    /// The rendered frame as written into the report folder (failing frames only).
     pub rendered_image: Option<PathBuf>,
+    /// The diff heat map (failing frames only).
     pub diff_image: Option<PathBuf>,
+    /// The FLIP error map (failing frames with a FLIP limit only).
     pub flip_image: Option<PathBuf>,
 }
 
 /// A whole check.
 #[derive(Clone, Debug, Serialize)]
 pub struct CheckReport {
+    /// The manifest checked.
     pub manifest: PathBuf,
+    /// The folder of reference PNGs.
     pub references: PathBuf,
     /// The folder of images of failing frames.
     pub report: PathBuf,
-    /// The frames' size in pixels.
+    /// The frames' width in pixels.
     pub width: u32,
+    /// The frames' height in pixels.
     pub height: u32,
+    /// The limits every frame was held to.
     pub tolerance: Tolerance,
+    /// True when every frame passed.
     pub pass: bool,
+    /// One report per checked frame, in frame order.
     pub frames: Vec<FrameReport>,
 }
 

@@ -10,22 +10,37 @@ use crate::trace::RayCount;
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Event {
     /// The run has `total` frames, of which `skipped` are already up to date.
-    Started { total: usize, skipped: usize },
+    Started {
+        /// The frames this run covers, skipped ones included.
+        total: usize,
+        /// How many of them are up to date and will not be rendered (`--resume`).
+        skipped: usize,
+    },
     /// Frame `frame` was rendered and delivered (written, or sent to the stream) after
     /// `seconds` of work on its worker, casting `rays`.
     Finished {
+        /// The frame's number in the sequence (0-based).
         frame: u32,
+        /// Wall-clock seconds its worker spent rendering and delivering it.
         seconds: f64,
+        /// The rays cast for it, by kind.
         rays: RayCount,
     },
     /// Frame `frame` is up to date and was left as it is.
-    Skipped { frame: u32 },
+    Skipped {
+        /// The frame's number in the sequence (0-based).
+        frame: u32,
+    },
     /// Frame `frame` could not be rendered or written; the run stops after it.
-    Failed { frame: u32 },
+    Failed {
+        /// The frame's number in the sequence (0-based).
+        frame: u32,
+    },
 }
 
 /// Receives the events of a run, from any worker thread.
 pub trait Reporter: Sync {
+    /// Called once per event, possibly from several threads at once; must return quickly.
     fn event(&self, event: Event);
 }
 

@@ -32,8 +32,11 @@ pub use crate::anim::project::FRAME_MEMORY;
 /// What a run did.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Summary {
+    /// Frames rendered and delivered by this run.
     pub rendered: usize,
+    /// Frames left as they were because they were up to date (`--resume`).
     pub skipped: usize,
+    /// All rays cast by the rendered frames, by kind.
     pub rays: RayCount,
 }
 

@@ -65,44 +65,73 @@ pub enum ListProblem {
 /// give the task count (the binary passes its option's name).
 #[derive(Debug, thiserror::Error, PartialEq, Eq)]
 pub enum ShardError {
+    /// The text is neither `K/N` with 0 ≤ K < N nor `auto` (the text as given).
     #[error("shard {0:?}: expected K/N with 0 ≤ K < N, as in 3/16, or auto")]
     Syntax(String),
+    /// `auto`, and none of the known schedulers' index variables is set.
     #[error(
         "shard auto: no scheduler's task index is set: none of SLURM_ARRAY_TASK_ID (Slurm \
          array job), JOB_COMPLETION_INDEX (Kubernetes Indexed Job), AWS_BATCH_JOB_ARRAY_INDEX \
          (AWS Batch array job)"
     )]
     NoScheduler,
+    /// `auto`, and the index variables of several schedulers are set (listed as
+    /// `VAR=value, ...`).
     #[error("shard auto: more than one scheduler's task index is set ({0}); unset the others")]
     Several(String),
+    /// `auto`, and a scheduler's variable holds something other than a whole number.
     #[error("shard auto: {var}={value:?} is not a whole number")]
-    NotANumber { var: &'static str, value: String },
+    NotANumber {
+        /// The variable's name.
+        var: &'static str,
+        /// Its value.
+        value: String,
+    },
+    /// `auto` under Slurm, and a variable the index needs is not set.
     #[error("shard auto: {var} is set but {missing} is not")]
     Missing {
+        /// The variable that is set.
         var: &'static str,
+        /// The variable that is missing.
         missing: &'static str,
     },
+    /// `auto` under Kubernetes or AWS Batch (which give only the index), and the caller
+    /// gave no task count.
     #[error(
         "shard auto: {var}={index} gives this task's index but not the number of tasks; \
          give it with {count_name} N"
     )]
     NoCount {
+        /// The index variable that is set.
         var: &'static str,
+        /// Its value.
         index: u32,
+        /// How the caller lets the user give the count.
         count_name: String,
     },
+    /// The caller gave a task count that differs from the shard's own.
     #[error("shard {shard}: {from} tasks, but {count_name} {count}")]
     Disagree {
+        /// The shard as written (`3/16` or `auto`).
         shard: String,
+        /// Where the shard's own count comes from, e.g. `16` or `SLURM_ARRAY_TASK_COUNT=4`.
         from: String,
+        /// How the caller lets the user give the count.
         count_name: String,
+        /// The count the user gave.
         count: u32,
     },
+    /// `auto`, and the index from the environment is not below the count (e.g. a Slurm
+    /// array with gaps).
     #[error("shard auto: task index {index} ({from}) is not below the task count {count} ({of})")]
     OutOfRange {
+        /// The task index worked out from the environment.
         index: i64,
+        /// The variables it came from, with their values.
         from: String,
+        /// The task count.
         count: u32,
+        /// Where the count came from.
         of: String,
     },
 }
@@ -111,7 +140,12 @@ pub enum ShardError {
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Shard {
     /// Chunk `index` of `count` (`K/N`).
-    Part { index: u32, count: u32 },
+    Part {
+        /// Which chunk, 0-based, below `count`.
+        index: u32,
+        /// How many chunks, 1 or more.
+        count: u32,
+    },
     /// The index (and for Slurm the count) from the scheduler's environment.
     Auto,
 }

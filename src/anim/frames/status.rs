@@ -14,8 +14,11 @@ use std::path::Path;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum FrameState {
+    /// The file is complete and records the digest the manifest now gives the frame.
     UpToDate,
+    /// The file exists but is cut short, or its record is absent, foreign or different.
     Stale,
+    /// No file of that name in the folder.
     Missing,
 }
 
@@ -37,8 +40,11 @@ pub fn frame_state(anim: &Animation, dir: &Path, frame: u32) -> FrameState {
 /// The frames of a folder by state, with their ranges.
 #[derive(Clone, Debug, Default, PartialEq, Eq, Serialize)]
 pub struct StatusReport {
+    /// Frames whose files are up to date, ascending.
     pub up_to_date: Vec<u32>,
+    /// Frames whose files are stale (to render again), ascending.
     pub stale: Vec<u32>,
+    /// Frames with no file, ascending.
     pub missing: Vec<u32>,
 }
 

@@ -27,10 +27,13 @@ use toml::Spanned;
 /// `look_at` as the manifest gives it.
 #[derive(Clone, Debug, PartialEq)]
 pub enum LookAt {
+    /// `[x, y, z]`: a fixed point.
     Point(DVec3),
     /// `"sphere 2"`, resolved against the scene by the timeline.
     Object {
+        /// The text as written, `KIND N`.
         name: String,
+        /// Where it is written, for errors found when resolving it.
         loc: FileLoc,
     },
 }

@@ -23,7 +23,9 @@ const SPEED: i32 = 10;
 #[derive(Debug, thiserror::Error)]
 #[error("{path}: cannot write the GIF: {message}")]
 pub struct GifError {
+    /// The GIF's final name.
     pub path: PathBuf,
+    /// The encoder's or the system's reason.
     pub message: String,
 }
 

@@ -18,12 +18,11 @@ mod font;
 pub mod gif;
 mod legend;
 pub mod plot;
-pub mod sheet;
+mod sheet;
 mod source;
 mod view;
 
-pub use plot::{CameraSample, PlotData, Track};
-pub use source::scaled;
+use plot::PlotData;
 
 use self::gif::{GifError, GifFrame, GifWriter};
 use crate::anim::AnimError;
@@ -37,9 +36,11 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// K when `--scale` is not given.
 pub const DEFAULT_SCALE: u32 = 4;
-/// The names of the three pictures inside the preview folder.
+/// The file name of the looping GIF inside the preview folder.
 pub const GIF_NAME: &str = "animation.gif";
+/// The file name of the contact sheet inside the preview folder.
 pub const SHEET_NAME: &str = "contact-sheet.png";
+/// The file name of the camera-path plot inside the preview folder.
 pub const PLOT_NAME: &str = "camera-path.png";
 /// The memory the frames in flight may take (pixels and their GIF copy).
 const WINDOW_MEMORY: usize = 256 << 20;
@@ -47,6 +48,7 @@ const WINDOW_MEMORY: usize = 256 << 20;
 /// What `animate preview` was asked for.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PreviewOptions {
+    /// The animation manifest.
     pub manifest: PathBuf,
     /// The folder for the pictures; default `default_dir` of the frame folder.
     pub out: Option<PathBuf>,
@@ -59,19 +61,28 @@ pub struct PreviewOptions {
 /// What a preview wrote.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PreviewSummary {
+    /// The preview folder.
     pub dir: PathBuf,
+    /// The looping GIF of every frame.
     pub gif: PathBuf,
+    /// The contact sheet.
     pub sheet: PathBuf,
+    /// The camera-path plot.
     pub plot: PathBuf,
+    /// The frames drawn (all of the manifest's).
     pub frames: u32,
+    /// The preview frames' width in pixels (1/K of the manifest's, at least 1).
     pub width: u32,
+    /// The preview frames' height in pixels.
     pub height: u32,
+    /// The contact sheet's tile count.
     pub tiles: u32,
 }
 
 /// Why a preview stopped.
 #[derive(Debug, thiserror::Error)]
 pub enum PreviewError {
+    /// Loading the project or drawing a frame failed (its own exit-status row).
     #[error(transparent)]
     Anim(#[from] AnimError),
     /// A scale of 0: frames are drawn at 1/K of their size, so K must be 1 or more.
@@ -99,16 +110,22 @@ pub enum PreviewError {
         /// The sheet's height in pixels.
         sheet_height: u64,
     },
+    /// The preview folder cannot be created (e.g. it is a file).
     #[error("cannot use the preview folder {dir}: {source}")]
     Folder {
+        /// The folder.
         dir: PathBuf,
+        /// The system's reason.
         #[source]
         source: std::io::Error,
     },
+    /// The GIF could not be encoded or written.
     #[error(transparent)]
     Gif(#[from] GifError),
+    /// The contact sheet or the plot could not be written.
     #[error(transparent)]
     Write(#[from] OutputError),
+    /// The plot could not be drawn.
     #[error(transparent)]
     Plot(#[from] plot::PlotError),
 }

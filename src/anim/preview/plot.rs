@@ -46,31 +46,42 @@ const TRACKS: [RGBColor; 4] = [
 /// The camera on one frame.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct CameraSample {
+    /// The frame's number.
     pub frame: u32,
+    /// The camera's position on that frame.
     pub eye: DVec3,
+    /// The point it looks at on that frame.
     pub look_at: DVec3,
 }
 
 /// The path of one tracked position (SPEC §7), frame by frame.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Track {
+    /// The legend's label, e.g. `sphere 1 center`.
     pub name: String,
+    /// (frame, position) for each sampled frame, in frame order.
     pub points: Vec<(u32, DVec3)>,
 }
 
 /// Everything the plot shows.
 pub struct PlotData<'a> {
+    /// The line above the views (manifest name, frames, fps).
     pub title: String,
+    /// The camera on each sampled frame, in frame order.
     pub camera: &'a [CameraSample],
+    /// The tracked positions' paths.
     pub tracks: &'a [Track],
+    /// The base scene, whose objects and lights are drawn.
     pub scene: &'a Scene,
 }
 
 /// Why the plot could not be drawn.
 #[derive(Debug, thiserror::Error)]
 pub enum PlotError {
+    /// The embedded font could not be read.
     #[error(transparent)]
     Font(#[from] FontError),
+    /// The drawing backend failed (its message).
     #[error("cannot draw the path plot: {0}")]
     Draw(String),
 }

@@ -29,11 +29,17 @@ pub fn default_every(frames: u32) -> u32 {
 /// Where the tiles go.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Layout {
+    /// A tile's width in pixels (a preview frame's).
     pub tile_width: u32,
+    /// A tile's height in pixels.
     pub tile_height: u32,
+    /// The number of tiles: frames 0, every, 2·every, ...
     pub tiles: u32,
+    /// The step between tiled frames, 1 or more.
     pub every: u32,
+    /// Tiles per row.
     pub columns: u32,
+    /// Rows of tiles.
     pub rows: u32,
 }
 

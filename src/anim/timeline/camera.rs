@@ -25,12 +25,15 @@ use glam::DVec3;
 /// a tracked position that follows a circle.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Circle {
+    /// The circle's centre; only its x and z are used (`height` gives y).
     pub center: DVec3,
+    /// The circle's radius, > 0.
     pub radius: f64,
     /// The absolute y of every point.
     pub height: f64,
     /// Degrees; 0 puts the point on the +z side of `center`.
     pub start_angle: f64,
+    /// Turns over the whole sequence; fractional is fine, negative goes the other way.
     pub turns: f64,
 }
 
@@ -56,9 +59,12 @@ impl Circle {
 pub enum CameraPath {
     /// The report's orbit, looking at `look_at` (defaults to the circle's centre).
     Circle {
+        /// The orbit.
         circle: Circle,
+        /// The point looked at; `None`: the circle's centre.
         look_at: Option<DVec3>,
     },
+    /// A Catmull-Rom spline through camera keys.
     Spline(Spline),
 }
 

@@ -14,10 +14,14 @@
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Ease {
+    /// e = u: even pace.
     #[default]
     None,
+    /// e = u²: starts slow, ends fast.
     In,
+    /// e = 1 − (1 − u)²: starts fast, ends slow.
     Out,
+    /// e = 3u² − 2u³: slow at both ends.
     InOut,
 }
 
@@ -52,9 +56,12 @@ impl Ease {
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum Interpolation {
+    /// a + (b − a)·e: straight from key to key.
     #[default]
     Linear,
+    /// The centripetal Catmull-Rom curve through the keys (smooth at keys).
     Smooth,
+    /// Holds each key's value until the next key's frame.
     Step,
 }
 

@@ -33,6 +33,7 @@ use std::borrow::Cow;
 pub struct MotionBlur {
     /// In frames, 0 < shutter ≤ 1.
     pub shutter: f64,
+    /// Sub-frames averaged per frame, 1 to `MAX_BLUR_SAMPLES`.
     pub samples: u32,
 }
 
@@ -66,10 +67,15 @@ enum Gaze {
 /// The scene and camera of every time of a sequence.
 #[derive(Clone, Debug)]
 pub struct Timeline {
+    /// The scene as its file gives it; tracks change copies of it.
     pub base: Scene,
+    /// The sequence's frame count (the time base of circles and closed splines).
     pub frames: u32,
+    /// The camera's path; `None` keeps the scene file's eye.
     pub camera: Option<CameraPath>,
+    /// The tracks, resolved against `base`, in manifest order.
     pub tracks: Vec<Track>,
+    /// The motion blur, if the manifest asks for it.
     pub blur: Option<MotionBlur>,
     gaze: Gaze,
 }
@@ -77,8 +83,11 @@ pub struct Timeline {
 /// Frame t: the scene with the tracks' values put in, and the camera.
 #[derive(Clone, Debug)]
 pub struct Snapshot<'a> {
+    /// The scene at that time (borrowed from the base when no track changes it).
     pub scene: Cow<'a, Scene>,
+    /// The camera's position.
     pub eye: DVec3,
+    /// The point the camera looks at.
     pub look_at: DVec3,
 }
 

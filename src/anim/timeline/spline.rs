@@ -43,8 +43,11 @@ const ARC_STEPS_TOTAL: usize = 1 << 20;
 /// A spline key: a frame, a position and an optional look-at point.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Key {
+    /// The frame at which the camera is exactly at `position`.
     pub frame: u32,
+    /// The camera's eye at that frame.
     pub position: DVec3,
+    /// The point looked at from that frame, when every key has one.
     pub look_at: Option<DVec3>,
 }
 
@@ -52,8 +55,11 @@ pub struct Key {
 /// and precomputes the arc-length table; the public fields are for reading.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Spline {
+    /// The keys, at least two, in increasing frame order.
     pub keys: Vec<Key>,
+    /// Whether the path loops from the last key back to the first.
     pub closed: bool,
+    /// Whether the camera moves at even speed along the path (re-timed by arc length).
     pub constant_speed: bool,
     /// A fixed look-at point for the whole path.
     pub look_at: Option<DVec3>,
@@ -67,22 +73,40 @@ pub struct Spline {
 /// manifest's other errors do (`camera.keys[2]`), so one key has one name everywhere.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum SplineError {
+    /// Fewer than two keys.
     #[error("a spline needs at least two keys, found {count}")]
-    TooFewKeys { count: usize },
+    TooFewKeys {
+        /// The number of keys given.
+        count: usize,
+    },
+    /// A key's frame is not after the previous key's.
     #[error("camera.keys[{index}]: frame {frame} is not after the previous key's frame {previous}; keys must be in increasing frame order")]
     FrameOrder {
+        /// The key, 0-based.
         index: usize,
+        /// Its frame.
         frame: u32,
+        /// The previous key's frame.
         previous: u32,
     },
+    /// Some keys have a look_at and this one does not, or the other way round.
     #[error("camera.keys[{index}]: either every key has a look_at or none has")]
-    MixedLookAt { index: usize },
+    MixedLookAt {
+        /// The first key that differs from key 0, 0-based.
+        index: usize,
+    },
+    /// Both a path-wide look_at and per-key ones.
     #[error("give either one look_at for the whole path or a look_at on each key, not both")]
     BothLookAts,
+    /// A key's position or look_at is not finite or past `MAX_COORD`.
     #[error(
         "camera.keys[{index}]: coordinates must be finite and at most {MAX_COORD:e} in magnitude"
     )]
-    BadCoordinate { index: usize },
+    BadCoordinate {
+        /// The key, 0-based.
+        index: usize,
+    },
+    /// The path-wide look_at is not finite or past `MAX_COORD`.
     #[error("look_at: coordinates must be finite and at most {MAX_COORD:e} in magnitude")]
     BadLookAt,
 }

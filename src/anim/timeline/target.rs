@@ -22,30 +22,50 @@ use glam::DVec3;
 /// A number or an `[x, y, z]`; numbers travel as `(x, 0, 0)` through interpolation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
+    /// One number (radius, coefficient, intensity, fog distance).
     Number,
+    /// Three numbers (position, direction, RGB colour).
     Vector,
 }
 
 /// One animatable value of a scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Field {
+    /// A sphere's centre (`sphere N center`).
     Center,
+    /// A sphere's or cylinder's radius, > 0.
     Radius,
+    /// A plane's point or a point on a cylinder's axis.
     Point,
+    /// A plane's normal, non-zero.
     Normal,
+    /// A cylinder's axis direction, non-zero.
     Axis,
+    /// The colour of a one-colour texture (type 1), RGB in 0..1.
     Color,
+    /// The first colour of a procedural texture (type 2), RGB in 0..1.
     Color1,
+    /// The second colour of a procedural texture, RGB in 0..1.
     Color2,
+    /// The third colour of a Perlin texture, RGB in 0..1.
     Color3,
+    /// The diffuse coefficient Kd, 0..1.
     Kd,
+    /// The reflection coefficient Kr, 0..1.
     Kr,
+    /// The transmission coefficient Kt, 0..1.
     Kt,
+    /// The object's refraction index, > 0.
     Ior,
+    /// The bump amplitude ε of an object with bump mapping.
     Bump,
+    /// A light's position.
     Position,
+    /// A light's colour, RGB in 0..1 (`light N color`).
     LightColor,
+    /// A light's intensity, 0 to `MAX_INTENSITY`.
     Intensity,
+    /// The fog's distance, > 0 (`fog distance`).
     FogDistance,
 }
 
@@ -53,7 +73,9 @@ pub enum Field {
 /// `Scene::objects` or `Scene::lights`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Target {
+    /// The value animated.
     pub field: Field,
+    /// The index into `Scene::objects` or `Scene::lights` (0-based); 0 for the fog.
     pub index: usize,
 }
 

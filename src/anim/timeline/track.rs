@@ -35,10 +35,15 @@ use glam::DVec3;
 /// (number or vector), the ease of the segment it starts, and where it is in the manifest.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TrackKey {
+    /// The frame at which the track has exactly `value`.
     pub frame: u32,
+    /// The value (a number as `(x, 0, 0)`).
     pub value: DVec3,
+    /// Whether a number or a vector was written, checked against the target.
     pub kind: Kind,
+    /// The ease from this key to the next.
     pub ease: Ease,
+    /// Where the key is written in the manifest.
     pub loc: FileLoc,
 }
 
@@ -47,7 +52,9 @@ pub struct TrackKey {
 pub enum Motion {
     /// Keys in strictly increasing frame order, at least one.
     Keys {
+        /// How values go from key to key.
         interpolation: Interpolation,
+        /// The keys.
         keys: Vec<TrackKey>,
     },
     /// A position on a circle, as the camera's.
@@ -61,13 +68,16 @@ pub struct TrackSpec {
     pub target: String,
     /// Where `target` is written.
     pub loc: FileLoc,
+    /// How its value moves over time.
     pub motion: Motion,
 }
 
 /// A track whose target is resolved.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Track {
+    /// The track as the manifest states it.
     pub spec: TrackSpec,
+    /// The value of the scene it drives.
     pub target: Target,
 }
 

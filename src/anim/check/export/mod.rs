@@ -22,14 +22,19 @@ use std::path::{Path, PathBuf};
 /// Why an export failed.
 #[derive(Debug, thiserror::Error)]
 pub enum ExportError {
+    /// The report file (or its temporary) cannot be written or renamed into place.
     #[error("cannot write {path}: {source}")]
     Io {
+        /// The report file's final name.
         path: PathBuf,
+        /// The system's reason.
         #[source]
         source: std::io::Error,
     },
+    /// Standard output was closed or failed.
     #[error("cannot write standard output: {0}")]
     Stdout(#[source] std::io::Error),
+    /// The XML writer refused the document (the text says why).
     #[error("cannot build the JUnit XML: {0}")]
     Junit(String),
 }
@@ -43,7 +48,9 @@ pub trait Exporter {
 /// Where a text export goes.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Sink {
+    /// Standard output.
     Stdout,
+    /// This file, written atomically.
     File(PathBuf),
 }
 
