@@ -28,18 +28,29 @@ enum Shape {
     Camera,
 }
 
-/// A table of the schema: how messages name it, and its keys.
+/// A table of the schema: how messages name it, and its keys, in groups so that a group
+/// two tables share (a circle's keys: the camera's and a track's) is written once.
 #[derive(Clone, Copy)]
 struct Place {
     name: &'static str,
-    keys: &'static [(&'static str, Shape)],
+    groups: &'static [Keys],
+}
+
+/// A group of keys, in the order messages list them.
+type Keys = &'static [(&'static str, Shape)];
+
+impl Place {
+    /// Every key of the table, group after group.
+    fn keys(self) -> impl Iterator<Item = (&'static str, Shape)> + Clone {
+        self.groups.iter().flat_map(|g| g.iter().copied())
+    }
 }
 
 use Shape::{Camera, Table, Tables, Value};
 
 const TOP: Place = Place {
     name: "the top level",
-    keys: &[
+    groups: &[&[
         ("scene", Value),
         ("frames", Value),
         ("fps", Value),
@@ -48,116 +59,103 @@ const TOP: Place = Place {
         ("render", Table(RENDER)),
         ("check", Table(CHECK)),
         ("track", Tables(TRACK)),
-    ],
+    ]],
 };
+
+const PATH: Keys = &[("path", Value)];
+const LOOK_AT: Keys = &[("look_at", Value)];
+/// A circle: the camera's orbit (`path = "circle"`) and a track that follows one.
+const CIRCLE_KEYS: Keys = &[
+    ("center", Value),
+    ("radius", Value),
+    ("height", Value),
+    ("start_angle", Value),
+    ("turns", Value),
+];
+/// A camera spline's options, then its keys.
+const SPLINE_OPTIONS: Keys = &[("closed", Value), ("constant_speed", Value)];
+const SPLINE_KEYS: Keys = &[("keys", Tables(SPLINE_KEY))];
 
 const STILL: Place = Place {
     name: "[camera] without a path",
-    keys: &[("path", Value), ("look_at", Value)],
+    groups: &[PATH, LOOK_AT],
 };
 
 const CIRCLE: Place = Place {
     name: "[camera] with path = \"circle\"",
-    keys: &[
-        ("path", Value),
-        ("center", Value),
-        ("radius", Value),
-        ("height", Value),
-        ("start_angle", Value),
-        ("turns", Value),
-        ("look_at", Value),
-    ],
+    groups: &[PATH, CIRCLE_KEYS, LOOK_AT],
 };
 
 const SPLINE: Place = Place {
     name: "[camera] with path = \"spline\"",
-    keys: &[
-        ("path", Value),
-        ("closed", Value),
-        ("constant_speed", Value),
-        ("look_at", Value),
-        ("keys", Tables(SPLINE_KEY)),
-    ],
+    groups: &[PATH, SPLINE_OPTIONS, LOOK_AT, SPLINE_KEYS],
 };
 
 /// An unknown path: every key of some path is accepted (the path itself is refused later).
 const ANY_CAMERA: Place = Place {
     name: "[camera]",
-    keys: &[
-        ("path", Value),
-        ("center", Value),
-        ("radius", Value),
-        ("height", Value),
-        ("start_angle", Value),
-        ("turns", Value),
-        ("closed", Value),
-        ("constant_speed", Value),
-        ("look_at", Value),
-        ("keys", Tables(SPLINE_KEY)),
-    ],
+    groups: &[PATH, CIRCLE_KEYS, SPLINE_OPTIONS, LOOK_AT, SPLINE_KEYS],
 };
 
 const SPLINE_KEY: Place = Place {
     name: "a spline key",
-    keys: &[("frame", Value), ("position", Value), ("look_at", Value)],
+    groups: &[&[("frame", Value), ("position", Value)], LOOK_AT],
 };
 
 const TRACK: Place = Place {
     name: "[[track]]",
-    keys: &[
-        ("target", Value),
-        ("interpolation", Value),
-        ("ease", Value),
-        ("keys", Tables(TRACK_KEY)),
-        ("path", Value),
-        ("center", Value),
-        ("radius", Value),
-        ("height", Value),
-        ("start_angle", Value),
-        ("turns", Value),
+    groups: &[
+        &[
+            ("target", Value),
+            ("interpolation", Value),
+            ("ease", Value),
+            ("keys", Tables(TRACK_KEY)),
+        ],
+        PATH,
+        CIRCLE_KEYS,
     ],
 };
 
 const TRACK_KEY: Place = Place {
     name: "a track key",
-    keys: &[("frame", Value), ("value", Value), ("ease", Value)],
+    groups: &[&[("frame", Value), ("value", Value), ("ease", Value)]],
 };
 
 const OUTPUT: Place = Place {
     name: "[output]",
-    keys: &[
+    groups: &[&[
         ("dir", Value),
         ("name", Value),
         ("format", Value),
         ("jpeg_quality", Value),
-    ],
+    ]],
 };
 
 const RENDER: Place = Place {
     name: "[render]",
-    keys: &[
+    groups: &[&[
         ("width", Value),
         ("height", Value),
         ("samples", Value),
         ("motion_blur", Table(BLUR)),
-    ],
+    ]],
 };
 
 const BLUR: Place = Place {
     name: "motion_blur",
-    keys: &[("shutter", Value), ("samples", Value)],
+    groups: &[&[("shutter", Value), ("samples", Value)]],
 };
 
 const CHECK: Place = Place {
     name: "[check]",
-    keys: &[
+    groups: &[&[
         ("frames", Value),
         ("references", Value),
         ("fail", Value),
         ("fail_percent", Value),
         ("hard_fail", Value),
         ("flip", Value),
-    ],
+    ]],
 };
 
 /// The camera tables by path, for "belongs to path = ..." hints.
@@ -179,7 +177,7 @@ pub(super) fn unknown_keys(text: &str) -> Vec<(Range<usize>, String)> {
 fn walk(table: &DeTable<'_>, place: Place, path: &str, found: &mut Vec<(Range<usize>, String)>) {
     for (key, value) in table.iter() {
         let name = key.get_ref().as_ref();
-        let Some(&(_, shape)) = place.keys.iter().find(|(k, _)| *k == name) else {
+        let Some((_, shape)) = place.keys().find(|(k, _)| *k == name) else {
             found.push((key.span(), unknown(place, path, name, value)));
             continue;
         };
@@ -245,13 +243,13 @@ fn unknown(place: Place, path: &str, name: &str, value: &Spanned<DeValue<'_>>) -
         .find(|(kind, p)| !kind.is_empty() && has(p, name));
     let hint = match other_path {
         Some((kind, _)) => format!(" (a key of path = \"{kind}\")"),
-        None => nearest(name, place.keys.iter().map(|(k, _)| *k))
-            .and_then(|near| place.keys.iter().find(|(k, _)| *k == near))
-            .map_or(String::new(), |&(near, shape)| {
+        None => nearest(name, place.keys().map(|(k, _)| k))
+            .and_then(|near| place.keys().find(|(k, _)| *k == near))
+            .map_or(String::new(), |(near, shape)| {
                 format!(" (did you mean {}?)", shown(near, shape))
             }),
     };
-    let names: Vec<String> = place.keys.iter().map(|&(k, s)| shown(k, s)).collect();
+    let names: Vec<String> = place.keys().map(|(k, s)| shown(k, s)).collect();
     format!(
         "{prefix}unknown {what} {this}{hint}; {} takes {}",
         place.name,
@@ -260,7 +258,7 @@ fn unknown(place: Place, path: &str, name: &str, value: &Spanned<DeValue<'_>>) -
 }
 
 fn has(place: &Place, name: &str) -> bool {
-    place.keys.iter().any(|(k, _)| *k == name)
+    place.keys().any(|(k, _)| k == name)
 }
 
 /// The known name nearest to `name` by edit distance (a transposition counting one), if
@@ -288,7 +286,7 @@ mod tests {
 
     #[test]
     fn typos_find_the_nearest_name() {
-        let tops = TOP.keys.iter().map(|(k, _)| *k);
+        let tops = TOP.keys().map(|(k, _)| k);
         assert_eq!(nearest("camra", tops.clone()), Some("camera"));
         assert_eq!(nearest("outptu", tops.clone()), Some("output"));
         assert_eq!(nearest("Frames", tops.clone()), Some("frames"));
@@ -296,7 +294,7 @@ mod tests {
         // "zzz" is 3 edits from "fps": no suggestion.
         assert_eq!(nearest("zzz", tops.clone()), None);
         assert_eq!(nearest(&"x".repeat(41), tops.clone()), None);
-        let check = CHECK.keys.iter().map(|(k, _)| *k);
+        let check = CHECK.keys().map(|(k, _)| k);
         // fail_percentage: 3 deletions, within 15 / 3 = 5.
         assert_eq!(nearest("fail_percentage", check), Some("fail_percent"));
     }
@@ -328,7 +326,7 @@ mod tests {
             BLUR, CHECK,
         ];
         for place in places {
-            for (key, _) in place.keys {
+            for (key, _) in place.keys() {
                 assert!(
                     page.contains(&format!("`{key}`")) || page.contains(&format!("[{key}]")),
                     "docs/manifest.md does not name `{key}` of {}",
