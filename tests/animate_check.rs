@@ -2,40 +2,14 @@
 
 mod support;
 
-use std::path::{Path, PathBuf};
 use support::*;
 
 const CHECK: &str = "\n[check]\nframes = [0, 5, 9]\nreferences = \"refs\"\nfail = 2\n\
                      fail_percent = 0.5\nhard_fail = 64\n";
 
-fn blessed() -> (tempfile::TempDir, PathBuf) {
-    let (dir, manifest) = project(&circle_manifest(CHECK));
-    animate().arg("bless").arg(&manifest).assert().success();
-    (dir, manifest)
-}
-
-/// Rewrites one reference PNG after `edit` changes its pixels.
-fn edit_reference(dir: &Path, frame: u32, edit: impl FnOnce(&mut image::RgbImage)) {
-    let path = dir.join(format!("refs/frame_{frame:04}.png"));
-    let mut img = image::open(&path).unwrap().to_rgb8();
-    edit(&mut img);
-    img.save(&path).unwrap();
-}
-
-fn check(manifest: &Path, args: &[&str]) -> (Option<i32>, String, String) {
-    let out = animate()
-        .arg("check")
-        .arg(manifest)
-        .args(args)
-        .output()
-        .unwrap();
-    let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
-    (out.status.code(), text(&out.stdout), text(&out.stderr))
-}
-
 #[test]
 fn bless_then_check_passes() {
-    let (dir, manifest) = blessed();
+    let (dir, manifest) = blessed(CHECK);
     let refs: Vec<String> = files(&dir.path().join("refs"))
         .into_iter()
         .map(|f| f.0)
@@ -49,25 +23,13 @@ fn bless_then_check_passes() {
 
 #[test]
 fn a_changed_block_fails_and_names_the_frame() {
-    let (dir, manifest) = blessed();
-    edit_reference(dir.path(), 5, |img| {
-        for y in 10..20 {
-            for x in 10..20 {
-                img.put_pixel(x, y, image::Rgb([255, 0, 255]));
-            }
-        }
-    });
+    let (dir, manifest) = blessed(CHECK);
+    edit_reference(dir.path(), 5, magenta_block);
     let (code, out, _) = check(&manifest, &[]);
     assert_eq!(code, Some(1), "{out}");
-    let row5 = out
-        .lines()
-        .find(|l| l.trim_start().starts_with("5 "))
-        .unwrap();
+    let row5 = row(&out, 5);
     assert!(row5.ends_with("FAIL"), "{out}");
-    let row0 = out
-        .lines()
-        .find(|l| l.trim_start().starts_with("0 "))
-        .unwrap();
+    let row0 = row(&out, 0);
     assert!(row0.ends_with("PASS"), "{out}");
     // Images for the failing frame only.
     let report = files(&dir.path().join("frames-check"));
@@ -77,7 +39,7 @@ fn a_changed_block_fails_and_names_the_frame() {
 
 #[test]
 fn missing_reference_exits_2() {
-    let (dir, manifest) = blessed();
+    let (dir, manifest) = blessed(CHECK);
     std::fs::remove_file(dir.path().join("refs/frame_0009.png")).unwrap();
     let (code, _, err) = check(&manifest, &[]);
     assert_eq!(code, Some(2));
@@ -86,7 +48,7 @@ fn missing_reference_exits_2() {
 
 #[test]
 fn reference_of_another_size_exits_2() {
-    let (dir, manifest) = blessed();
+    let (dir, manifest) = blessed(CHECK);
     let path = dir.path().join("refs/frame_0000.png");
     image::RgbImage::new(32, 24).save(&path).unwrap();
     let (code, _, err) = check(&manifest, &[]);
@@ -97,7 +59,7 @@ fn reference_of_another_size_exits_2() {
 #[test]
 fn one_channel_off_by_fail_passes_and_by_fail_plus_one_fails() {
     // With fail_percent 0 a single failing pixel fails the frame.
-    let (dir, manifest) = blessed();
+    let (dir, manifest) = blessed(CHECK);
     let original = image::open(dir.path().join("refs/frame_0000.png"))
         .unwrap()
         .to_rgb8();
@@ -121,7 +83,7 @@ fn one_channel_off_by_fail_passes_and_by_fail_plus_one_fails() {
 
 #[test]
 fn hard_fail_trips_on_a_single_pixel() {
-    let (dir, manifest) = blessed();
+    let (dir, manifest) = blessed(CHECK);
     edit_reference(dir.path(), 9, |img| {
         let p = img.get_pixel_mut(3, 4);
         p[0] = if p[0] >= 128 { p[0] - 65 } else { p[0] + 65 };
@@ -135,7 +97,7 @@ fn hard_fail_trips_on_a_single_pixel() {
 
 #[test]
 fn json_output_for_ci() {
-    let (dir, manifest) = blessed();
+    let (dir, manifest) = blessed(CHECK);
     edit_reference(dir.path(), 5, |img| {
         img.put_pixel(1, 1, image::Rgb([0, 0, 0]))
     });

@@ -5,42 +5,10 @@
 mod support;
 
 use quick_junit::{NonSuccessKind, Report, TestCaseStatus};
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use support::*;
 
 const CHECK: &str = "\n[check]\nframes = [0, 5, 9]\nreferences = \"refs\"\n";
-
-fn blessed(check: &str) -> (tempfile::TempDir, PathBuf) {
-    let (dir, manifest) = project(&circle_manifest(check));
-    animate().arg("bless").arg(&manifest).assert().success();
-    (dir, manifest)
-}
-
-fn edit_reference(dir: &Path, frame: u32, edit: impl FnOnce(&mut image::RgbImage)) {
-    let path = dir.join(format!("refs/frame_{frame:04}.png"));
-    let mut img = image::open(&path).unwrap().to_rgb8();
-    edit(&mut img);
-    img.save(&path).unwrap();
-}
-
-fn magenta_block(img: &mut image::RgbImage) {
-    for y in 10..20 {
-        for x in 10..20 {
-            img.put_pixel(x, y, image::Rgb([255, 0, 255]));
-        }
-    }
-}
-
-fn check(manifest: &Path, args: &[&str]) -> (Option<i32>, String, String) {
-    let out = animate()
-        .arg("check")
-        .arg(manifest)
-        .args(args)
-        .output()
-        .unwrap();
-    let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
-    (out.status.code(), text(&out.stdout), text(&out.stderr))
-}
 
 #[test]
 fn junit_parsed_back_marks_the_failing_frame_with_its_figures() {
@@ -194,10 +162,7 @@ fn flip_scores_zero_for_identical_more_for_a_visible_change_and_the_limit_decide
     std::fs::write(&manifest, circle_manifest(&with_flip)).unwrap();
     let (code, out, _) = check(&manifest, &[]);
     assert_eq!(code, Some(1), "{out}");
-    let row5 = out
-        .lines()
-        .find(|l| l.trim_start().starts_with("5 "))
-        .unwrap();
+    let row5 = row(&out, 5);
     assert!(row5.contains("flip") && row5.ends_with("FAIL"), "{out}");
 }
 

@@ -88,3 +88,46 @@ pub fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
 pub fn pixels(path: &Path) -> Vec<u8> {
     image::open(path).unwrap().to_rgb8().into_raw()
 }
+
+/// A `circle_manifest(check)` project whose `[check]` references are blessed.
+pub fn blessed(check: &str) -> (tempfile::TempDir, PathBuf) {
+    let (dir, manifest) = project(&circle_manifest(check));
+    animate().arg("bless").arg(&manifest).assert().success();
+    (dir, manifest)
+}
+
+/// Rewrites the reference PNG `refs/frame_NNNN.png` of `dir` after `edit` changes it.
+pub fn edit_reference(dir: &Path, frame: u32, edit: impl FnOnce(&mut image::RgbImage)) {
+    let path = dir.join(format!("refs/frame_{frame:04}.png"));
+    let mut img = image::open(&path).unwrap().to_rgb8();
+    edit(&mut img);
+    img.save(&path).unwrap();
+}
+
+/// Paints the 10×10 block at (10, 10) magenta: a change every check notices.
+pub fn magenta_block(img: &mut image::RgbImage) {
+    for y in 10..20 {
+        for x in 10..20 {
+            img.put_pixel(x, y, image::Rgb([255, 0, 255]));
+        }
+    }
+}
+
+/// Runs `animate check MANIFEST ARGS`: its exit status, standard output and error.
+pub fn check(manifest: &Path, args: &[&str]) -> (Option<i32>, String, String) {
+    let out = animate()
+        .arg("check")
+        .arg(manifest)
+        .args(args)
+        .output()
+        .unwrap();
+    let text = |b: &[u8]| String::from_utf8_lossy(b).into_owned();
+    (out.status.code(), text(&out.stdout), text(&out.stderr))
+}
+
+/// The row of frame `frame` in `animate check`'s table (`out`, its standard output).
+pub fn row(out: &str, frame: u32) -> &str {
+    let start = format!("{frame} ");
+    let found = out.lines().find(|l| l.trim_start().starts_with(&start));
+    found.unwrap_or_else(|| panic!("no row for frame {frame} in:\n{out}"))
+}

@@ -182,28 +182,20 @@ mod tests {
 
     #[test]
     fn fit_gives_both_axes_the_same_units_per_pixel() {
+        let fitted = |u, v, width, height| {
+            let r = fit(Rect { u, v }, width, height);
+            (r.u, r.v)
+        };
         // 20 × 10 units into 400 × 400 pixels: 0.05 units a pixel, v widened to 20.
-        let r = fit(
-            Rect {
-                u: (0.0, 20.0),
-                v: (0.0, 10.0),
-            },
-            400,
-            400,
+        assert_eq!(
+            fitted((0.0, 20.0), (0.0, 10.0), 400, 400),
+            ((0.0, 20.0), (-5.0, 15.0))
         );
-        assert_eq!(r.u, (0.0, 20.0));
-        assert_eq!(r.v, (-5.0, 15.0));
         // 10 × 10 into 400 × 200: 0.05 a pixel, u widened to 20 around 5.
-        let r = fit(
-            Rect {
-                u: (0.0, 10.0),
-                v: (0.0, 10.0),
-            },
-            400,
-            200,
+        assert_eq!(
+            fitted((0.0, 10.0), (0.0, 10.0), 400, 200),
+            ((-5.0, 15.0), (0.0, 10.0))
         );
-        assert_eq!(r.u, (-5.0, 15.0));
-        assert_eq!(r.v, (0.0, 10.0));
     }
 
     #[test]
