@@ -1,8 +1,9 @@
 //! What both binaries set up for a run: the pool of worker threads (`--threads`, default
-//! all cores) and the stop flag that SIGINT and SIGTERM raise, which the animation
-//! pipeline reads between frames.
+//! all cores), and what SIGINT and SIGTERM do: raise the stop flag that the animation
+//! pipeline reads between frames (`animate`), or end a run that has no such point at once
+//! (`raytrace`'s one image), in both cases with the exit-status table's 128 + N.
 
-use std::sync::atomic::AtomicUsize;
+use std::sync::atomic::{AtomicBool, AtomicUsize};
 use std::sync::Arc;
 
 /// The worker pool: `threads` workers, or one per core when `None`.
@@ -20,6 +21,18 @@ pub fn watch_signals() -> Arc<AtomicUsize> {
         let _ = signal_hook::flag::register_usize(sig, Arc::clone(&stop), sig as usize);
     }
     stop
+}
+
+/// Makes SIGINT and SIGTERM end the process at once with status 128 + N (130, 143), for
+/// a run that cannot stop between pieces of work. The status is the same whatever signal
+/// handling the process inherited (a job started with SIGINT ignored still stops).
+/// Nothing is left under a final name: images are written under a temporary name and
+/// renamed.
+pub fn exit_on_signals() {
+    for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
+        let always = Arc::new(AtomicBool::new(true));
+        let _ = signal_hook::flag::register_conditional_shutdown(sig, 128 + sig, always);
+    }
 }
 
 #[cfg(test)]

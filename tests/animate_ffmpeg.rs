@@ -87,21 +87,6 @@ fn stdout_raw_piped_into_ffmpeg() {
 }
 
 #[test]
-fn missing_ffmpeg_is_a_clear_error() {
-    let (dir, manifest) = project(&circle_manifest(""));
-    let out = animate()
-        .arg(&manifest)
-        .arg("--video")
-        .arg(dir.path().join("x.mp4"))
-        .env("PATH", dir.path())
-        .output()
-        .unwrap();
-    assert_ne!(out.status.code(), Some(0));
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("ffmpeg was not found on PATH"), "{err}");
-}
-
-#[test]
 fn a_video_target_ffmpeg_cannot_write_is_refused_before_any_frame() {
     if !have_ffmpeg() {
         return;

@@ -275,7 +275,7 @@ fn bad_input_gets_a_located_error() {
     fails_with(
         &["-o", file.to_str().unwrap()],
         &manifest,
-        1,
+        2,
         "cannot use the preview folder",
     );
 }

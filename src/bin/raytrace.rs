@@ -1,6 +1,7 @@
 //! `raytrace [SCENE] [-o OUT] [--size WxH] [--samples N] [--threads N]`: one image from a
 //! Scene.txt, the report's main(). It parses the command line and calls the library;
-//! exit statuses follow `whitted::exit` (2 bad input, 1 a failed write).
+//! exit statuses follow `whitted::exit` (2 bad input, 1 a failed write, 130/143 stopped by
+//! SIGINT/SIGTERM).
 
 use anyhow::Context;
 use clap::Parser;
@@ -15,7 +16,8 @@ Formats, by OUT's extension: .png, .jpg/.jpeg (quality 90), .ppm (binary P6), .r
 report's headerless RGB bytes, rows top to bottom). OUT defaults to the scene's path with
 .png, beside the scene file (raytrace sub/t.txt writes sub/t.png).
 Exit status: 0 success; 2 nothing was rendered (bad arguments or scene, an output path
-that cannot be used); 1 the image could not be written. Scene.txt: docs/scene-format.md.";
+that cannot be used); 1 the image could not be written; 130/143 stopped by SIGINT/SIGTERM
+(no image is written). Scene.txt: docs/scene-format.md.";
 
 /// Render one Scene.txt to an image.
 #[derive(Parser, Debug)]
@@ -52,6 +54,7 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
 }
 
 fn run(args: Args) -> anyhow::Result<()> {
+    whitted::process::exit_on_signals();
     let out = args.out.unwrap_or_else(|| args.scene.with_extension("png"));
     let format = ImageFormat::from_path(&out)?;
     let mut scene = Scene::load(&args.scene)?;

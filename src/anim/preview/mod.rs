@@ -110,7 +110,8 @@ pub enum PreviewError {
         /// The sheet's height in pixels.
         sheet_height: u64,
     },
-    /// The preview folder cannot be created (e.g. it is a file).
+    /// The preview folder cannot be created (e.g. it is a file); bad input, as for the
+    /// frame folder.
     #[error("cannot use the preview folder {dir}: {source}")]
     Folder {
         /// The folder.
@@ -131,13 +132,16 @@ pub enum PreviewError {
 }
 
 impl PreviewError {
-    /// The row of the exit-status table: bad input, or what could not be written or drawn.
+    /// The row of the exit-status table: bad input (options, or a preview folder that
+    /// cannot be used, found before any frame is drawn), or what could not be written or
+    /// drawn.
     pub fn outcome(&self) -> crate::exit::Outcome {
         match self {
             PreviewError::Anim(e) => e.outcome(),
             PreviewError::ZeroScale
             | PreviewError::ZeroEvery
-            | PreviewError::SheetTooLarge { .. } => crate::exit::Outcome::BadInput,
+            | PreviewError::SheetTooLarge { .. }
+            | PreviewError::Folder { .. } => crate::exit::Outcome::BadInput,
             _ => crate::exit::Outcome::Failed,
         }
     }
