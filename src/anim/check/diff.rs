@@ -134,7 +134,7 @@ pub fn compare(reference: &Frame, rendered: &Frame, tol: Tolerance) -> Compariso
 /// logarithmic scale: t = log2(1 + d) / 8, so 1 level is t = 1/8, 3 levels 1/4, 15 levels
 /// 1/2, 255 levels 1; then black -> red -> yellow -> white as t goes 0 -> 1/3 -> 2/3 -> 1.
 /// The same `d` gets the same colour in every frame, and a 1-level difference is a dim red.
-pub fn heat_colour(d: u8) -> [u8; 3] {
+pub(crate) fn heat_colour(d: u8) -> [u8; 3] {
     let t = (1.0 + d as f64).log2() / 8.0;
     let ramp = |x: f64| (x.clamp(0.0, 1.0) * 255.0).round() as u8;
     [ramp(3.0 * t), ramp(3.0 * t - 1.0), ramp(3.0 * t - 2.0)]

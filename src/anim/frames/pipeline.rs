@@ -84,7 +84,7 @@ fn write_raw_record(frame_path: &Path, stamp: &[(String, String)]) -> std::io::R
 
 /// Renders `frames` into `dir` (created if missing), in parallel. With `resume`, frames
 /// that are up to date are skipped (and reported so).
-pub fn render_to_folder(
+pub(crate) fn render_to_folder(
     anim: &Animation,
     frames: &[u32],
     dir: &Path,
@@ -166,7 +166,7 @@ pub fn render_to_folder(
 
 /// Renders `frames` and writes them, encoded in `format`, one after another in frame order
 /// into `out`. Frames render in parallel windows; memory is bounded by the window.
-pub fn render_to_stream(
+pub(crate) fn render_to_stream(
     anim: &Animation,
     frames: &[u32],
     out: &mut dyn Write,

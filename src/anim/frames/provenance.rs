@@ -21,9 +21,9 @@ use std::io::Read;
 use std::path::{Path, PathBuf};
 
 /// The keyword of the digest in every format.
-pub const DIGEST_KEY: &str = "whitted:digest";
+pub(crate) const DIGEST_KEY: &str = "whitted:digest";
 /// The hidden folder holding RAW frames' records.
-pub const RAW_RECORDS: &str = ".whitted-record";
+pub(crate) const RAW_RECORDS: &str = ".whitted-record";
 
 /// Appends the exact bits of every value of `scene` that reaches a pixel.
 fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
@@ -118,7 +118,7 @@ fn hex(bytes: &[u8]) -> String {
 }
 
 /// The metadata frame `frame` carries: the digest first, then the stamp.
-pub fn stamp(anim: &Animation, frame: u32, digest: String) -> Vec<(String, String)> {
+pub(crate) fn stamp(anim: &Animation, frame: u32, digest: String) -> Vec<(String, String)> {
     let state = anim.timeline.at(f64::from(frame));
     let p = |v: DVec3| format!("({}, {}, {})", v.x, v.y, v.z);
     let s = anim.settings();
@@ -162,7 +162,7 @@ fn file_name(path: &Path) -> String {
 }
 
 /// Where a RAW frame's record lives.
-pub fn raw_record_path(frame_path: &Path) -> PathBuf {
+pub(crate) fn raw_record_path(frame_path: &Path) -> PathBuf {
     let dir = frame_path.parent().unwrap_or(Path::new(""));
     let name = frame_path.file_name().unwrap_or_default().to_string_lossy();
     dir.join(RAW_RECORDS).join(format!("{name}.txt"))
@@ -193,7 +193,7 @@ pub fn complete(frame_path: &Path, format: ImageFormat, width: u32, height: u32)
 
 /// The digest a frame file records, if it can be read: `None` for a missing or foreign
 /// file (which is then stale, never an error).
-pub fn recorded_digest(frame_path: &Path, format: ImageFormat) -> Option<String> {
+pub(crate) fn recorded_digest(frame_path: &Path, format: ImageFormat) -> Option<String> {
     let head = |n: u64| -> Option<Vec<u8>> {
         let mut bytes = Vec::new();
         std::fs::File::open(frame_path)

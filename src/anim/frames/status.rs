@@ -23,7 +23,7 @@ pub enum FrameState {
 }
 
 /// The state of frame `frame` in `dir`.
-pub fn frame_state(anim: &Animation, dir: &Path, frame: u32) -> FrameState {
+pub(crate) fn frame_state(anim: &Animation, dir: &Path, frame: u32) -> FrameState {
     let path = anim.frame_path(dir, frame);
     if !path.exists() {
         return FrameState::Missing;

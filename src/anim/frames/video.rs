@@ -116,7 +116,7 @@ fn spawn_error(e: std::io::Error) -> AnimError {
 }
 
 /// A running ffmpeg that encodes what is written to its standard input.
-pub struct Ffmpeg {
+pub(crate) struct Ffmpeg {
     child: Child,
     stderr: Option<JoinHandle<String>>,
 }

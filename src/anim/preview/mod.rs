@@ -15,16 +15,18 @@
 
 mod clip;
 mod font;
-pub mod gif;
+mod gif;
 mod legend;
-pub mod plot;
+mod plot;
 mod sheet;
 mod source;
 mod view;
 
+pub use gif::GifError;
 use plot::PlotData;
+pub use plot::PlotError;
 
-use self::gif::{GifError, GifFrame, GifWriter};
+use self::gif::{GifFrame, GifWriter};
 use crate::anim::AnimError;
 use crate::output::{write_atomic, ImageFormat, OutputError};
 use crate::render::Frame;
@@ -128,7 +130,7 @@ pub enum PreviewError {
     Write(#[from] OutputError),
     /// The plot could not be drawn.
     #[error(transparent)]
-    Plot(#[from] plot::PlotError),
+    Plot(#[from] PlotError),
 }
 
 impl PreviewError {
