@@ -62,7 +62,7 @@ pub enum OutputError {
         #[source]
         source: std::io::Error,
     },
-    /// The encoder refused the pixels (e.g. a size PNG or JPEG cannot hold).
+    /// The encoder refused the image.
     #[error("cannot encode the image: {0}")]
     Encode(#[from] image::ImageError),
     /// Writing to a stream (standard output, a pipe) failed.

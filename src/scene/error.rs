@@ -7,7 +7,7 @@ pub use crate::fileloc::FileLoc;
 /// Why a scene could not be loaded.
 #[derive(Debug, thiserror::Error)]
 pub enum SceneError {
-    /// The file cannot be opened or read (missing, unreadable, not UTF-8).
+    /// The file cannot be opened or read (missing, a folder, no permission).
     #[error("{path}: cannot read the scene file: {source}")]
     Io {
         /// The scene's path as given.
