@@ -1,5 +1,5 @@
 //! Direction grids: for one point (a light, or the eye), the directions around it cut
-//! into the cells of a cube map, each cell listing the objects a ray from that point
+//! into the cells of a octahedral map (two hemispheres of N × N), each cell listing the objects a ray from that point
 //! along one of its directions may meet — the light buffer of Haines and Greenberg (1986)
 //! for shadow rays, and first-hit culling for camera rays (every camera ray leaves the
 //! eye). A query looks up its direction's cell and tests only that cell's objects.
@@ -30,8 +30,9 @@ use crate::shapes::{Quadric, Shape};
 use glam::DVec3;
 use std::sync::OnceLock;
 
-/// Cells per side of each cube face.
-const N: usize = 8;
+/// Cells per side of each hemisphere's octahedral square (even: no cell straddles a
+/// quadrant).
+const N: usize = 16;
 /// Relative distance margin, as in the BVH (`bvh::PAD`).
 const PAD: f64 = 1e-5;
 /// Angular margin of every cell cone, in radians.
@@ -80,33 +81,34 @@ struct Cone {
     cos: f64,
 }
 
-/// The direction through face coordinates (u, v) in −1..1 of cube face `face`.
-fn face_dir(face: usize, u: f64, v: f64) -> DVec3 {
-    let s = if face.is_multiple_of(2) { 1.0 } else { -1.0 };
-    match face / 2 {
-        0 => DVec3::new(s, u, v),
-        1 => DVec3::new(u, s, v),
-        _ => DVec3::new(u, v, s),
-    }
+/// The direction of octahedral coordinates (u, v) in −1..1 of hemisphere `h` (0: z ≥ 0,
+/// 1: z < 0): the point (u, v, ±(1 − |u| − |v|)), not normalised. Outside the diamond
+/// |u| + |v| ≤ 1 it continues the same plane (within a quadrant), below the equator.
+fn octa_dir(h: usize, u: f64, v: f64) -> DVec3 {
+    let z = 1.0 - u.abs() - v.abs();
+    DVec3::new(u, v, if h == 0 { z } else { -z })
 }
 
 /// The cones of every cell, in cell order: the same for every grid, computed once.
 fn cones() -> &'static [Cone] {
     static CONES: OnceLock<Vec<Cone>> = OnceLock::new();
     CONES.get_or_init(|| {
-        (0..6)
-            .flat_map(|f| (0..N).flat_map(move |i| (0..N).map(move |j| cell_cone(f, i, j))))
+        (0..2)
+            .flat_map(|h| (0..N).flat_map(move |i| (0..N).map(move |j| cell_cone(h, i, j))))
             .collect()
     })
 }
 
-fn cell_cone(face: usize, i: usize, j: usize) -> Cone {
+/// A cell lies within one quadrant of (u, v) (N is even), where the map is affine: its
+/// directions are the conic hull of its four corners' directions, and the widest angle
+/// from the cell's centre direction is at a corner.
+fn cell_cone(h: usize, i: usize, j: usize) -> Cone {
     let at = |k: usize| -1.0 + 2.0 * k as f64 / N as f64;
     let (u0, u1, v0, v1) = (at(i), at(i + 1), at(j), at(j + 1));
-    let axis = face_dir(face, 0.5 * (u0 + u1), 0.5 * (v0 + v1)).normalize();
+    let axis = octa_dir(h, 0.5 * (u0 + u1), 0.5 * (v0 + v1)).normalize();
     let mut half = 0.0f64;
     for (u, v) in [(u0, v0), (u0, v1), (u1, v0), (u1, v1)] {
-        let c = face_dir(face, u, v).normalize();
+        let c = octa_dir(h, u, v).normalize();
         half = half.max(axis.dot(c).clamp(-1.0, 1.0).acos());
     }
     let half = half + ANGLE_PAD;
@@ -229,11 +231,11 @@ impl DirGrid {
         group: impl Fn(&Object) -> Group,
     ) -> Option<DirGrid> {
         let (bound, delta) = Self::margins(center, objects)?;
-        let mut cells = Vec::with_capacity(6 * N * N);
-        for face in 0..6 {
+        let mut cells = Vec::with_capacity(2 * N * N);
+        for h in 0..2 {
             for i in 0..N {
                 for j in 0..N {
-                    let cone = &cones()[(face * N + i) * N + j];
+                    let cone = &cones()[(h * N + i) * N + j];
                     let mut cell = [0u64; 2];
                     for (k, o) in objects.iter().enumerate() {
                         let Some(g) = group(o) else { continue };
@@ -291,19 +293,14 @@ impl DirGrid {
         if !(sum > 0.0 && sum < f64::INFINITY) {
             return None;
         }
-        let (face, u, v, m) = if a.x >= a.y && a.x >= a.z {
-            ((d.x < 0.0) as usize, d.y, d.z, a.x)
-        } else if a.y >= a.z {
-            (2 + (d.y < 0.0) as usize, d.x, d.z, a.y)
-        } else {
-            (4 + (d.z < 0.0) as usize, d.x, d.y, a.z)
-        };
-        let k = 0.5 * N as f64 / m;
-        // ⌊(u/m + 1)·N/2⌋, clamped to 0..N−1 (u = m gives N; rounding may put a
-        // direction on a cell boundary in its neighbour, which the cones' margin covers).
-        let i = ((u * k + 0.5 * N as f64) as i32).clamp(0, N as i32 - 1) as usize;
-        let j = ((v * k + 0.5 * N as f64) as i32).clamp(0, N as i32 - 1) as usize;
-        let [first, second] = self.cells[(face * N + i) * N + j];
+        // Octahedral coordinates u = x/s, v = y/s; cell ⌊(u + 1)·N/2⌋, clamped to 0..N−1
+        // (u = 1 gives N; rounding may put a direction on a cell boundary in its
+        // neighbour, which the cones' margin covers).
+        let k = 0.5 * N as f64 / sum;
+        let i = ((d.x * k + 0.5 * N as f64) as i32).clamp(0, N as i32 - 1) as usize;
+        let j = ((d.y * k + 0.5 * N as f64) as i32).clamp(0, N as i32 - 1) as usize;
+        let h = (d.z < 0.0) as usize;
+        let [first, second] = self.cells[(h * N + i) * N + j];
         Some((Objects(first), Objects(second)))
     }
 }
