@@ -75,7 +75,7 @@ impl Iterator for Objects {
 }
 
 /// A cell's cone: unit axis, sine and cosine of its widened half-angle.
-struct Cone {
+pub(super) struct Cone {
     axis: DVec3,
     sin: f64,
     cos: f64,
@@ -87,6 +87,33 @@ struct Cone {
 fn octa_dir(h: usize, u: f64, v: f64) -> DVec3 {
     let z = 1.0 - u.abs() - v.abs();
     DVec3::new(u, v, if h == 0 { z } else { -z })
+}
+
+impl Cone {
+    /// The cone around the unit `axis` that holds every direction of the conic hull of
+    /// `corners` (directions of the corners of a planar convex region, any length),
+    /// widened by `ANGLE_PAD`.
+    pub(super) fn around(axis: DVec3, corners: &[DVec3]) -> Cone {
+        let half = corners
+            .iter()
+            .map(|c| axis.dot(c.normalize()).clamp(-1.0, 1.0).acos())
+            .fold(0.0f64, f64::max)
+            + ANGLE_PAD;
+        Cone {
+            axis,
+            sin: half.sin(),
+            cos: half.cos(),
+        }
+    }
+
+    /// The same cone reflected in a plane of unit normal `n` (angles are kept).
+    pub(super) fn mirrored(&self, n: DVec3) -> Cone {
+        Cone {
+            axis: (self.axis - 2.0 * self.axis.dot(n) * n).normalize(),
+            sin: self.sin,
+            cos: self.cos,
+        }
+    }
 }
 
 /// The cones of every cell, in cell order: the same for every grid, computed once.
@@ -106,17 +133,8 @@ fn cell_cone(h: usize, i: usize, j: usize) -> Cone {
     let at = |k: usize| -1.0 + 2.0 * k as f64 / N as f64;
     let (u0, u1, v0, v1) = (at(i), at(i + 1), at(j), at(j + 1));
     let axis = octa_dir(h, 0.5 * (u0 + u1), 0.5 * (v0 + v1)).normalize();
-    let mut half = 0.0f64;
-    for (u, v) in [(u0, v0), (u0, v1), (u1, v0), (u1, v1)] {
-        let c = octa_dir(h, u, v).normalize();
-        half = half.max(axis.dot(c).clamp(-1.0, 1.0).acos());
-    }
-    let half = half + ANGLE_PAD;
-    Cone {
-        axis,
-        sin: half.sin(),
-        cos: half.cos(),
-    }
+    let corners = [(u0, v0), (u0, v1), (u1, v0), (u1, v1)].map(|(u, v)| octa_dir(h, u, v));
+    Cone::around(axis, &corners)
 }
 
 /// The largest coordinate, in absolute value, of the point and of every shape's defining
@@ -139,7 +157,7 @@ fn bound(center: DVec3, objects: &[Object]) -> Option<f64> {
 
 /// May a ray from `from` along a direction of `cone` meet `shape`? (False only when it
 /// cannot, widened by `delta`.)
-fn may_hit(shape: &Shape, from: DVec3, cone: &Cone, delta: f64) -> bool {
+pub(super) fn may_hit(shape: &Shape, from: DVec3, cone: &Cone, delta: f64) -> bool {
     match shape {
         Shape::Sphere(s) => {
             let to = s.center - from;
