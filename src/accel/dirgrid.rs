@@ -390,13 +390,13 @@ mod tests {
         ];
         let g = DirGrid::build(DVec3::ZERO, &objects, |_| Some(true)).unwrap();
         let at = |d: DVec3| set(g.cell(d).unwrap().0);
-        // +x, level: the sphere, and the floor (the cell's lower edge is the horizon, and
-        // its margin reaches just below it).
+        // +x, level: the sphere, and the floor (the horizon runs through the cell).
         assert_eq!(at(DVec3::X), vec![0, 1]);
-        assert_eq!(at(DVec3::new(1.0, 0.3, 0.0)), Vec::<usize>::new()); // above the sphere
-        assert_eq!(at(DVec3::new(1.0, -0.01, 0.02)), vec![0, 1]); // slightly down: the floor
-                                                                  // Straight up or down, the cell holds directions parallel to the cylinder's axis:
-                                                                  // it is kept (the test is by bounding cones), as the floor is below.
+        assert_eq!(at(DVec3::new(1.0, 0.5, 0.0)), Vec::<usize>::new()); // above the sphere
+                                                                        // Slightly down: the floor.
+        assert_eq!(at(DVec3::new(1.0, -0.01, 0.02)), vec![0, 1]);
+        // Straight up or down, the cell holds directions parallel to the cylinder's axis:
+        // it is kept (the test is by bounding cones), as the floor is below.
         assert_eq!(at(DVec3::Y), vec![2]);
         assert_eq!(at(-DVec3::Y), vec![1, 2]);
         assert_eq!(at(-DVec3::Z), vec![1, 2]); // towards the cylinder, at the horizon

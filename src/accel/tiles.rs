@@ -90,7 +90,11 @@ impl TileView {
         });
         let (cols, rows) = (width.div_ceil(TILE), height.div_ceil(TILE));
         let mut direct = Vec::with_capacity((cols * rows) as usize);
-        let mut sets = Vec::with_capacity(if mirror.is_some() { direct.capacity() } else { 0 });
+        let mut sets = Vec::with_capacity(if mirror.is_some() {
+            direct.capacity()
+        } else {
+            0
+        });
         for tj in 0..rows {
             for ti in 0..cols {
                 let (x0, x1) = (ti * TILE, ((ti + 1) * TILE).min(width));
@@ -99,7 +103,8 @@ impl TileView {
                 let axis = camera
                     .ray(0.5 * f64::from(x0 + x1), 0.5 * f64::from(y0 + y1))
                     .dir;
-                let cone = Cone::around(axis, &[dir(x0, y0), dir(x1, y0), dir(x0, y1), dir(x1, y1)]);
+                let cone =
+                    Cone::around(axis, &[dir(x0, y0), dir(x1, y0), dir(x0, y1), dir(x1, y1)]);
                 direct.push(candidates(objects, eye, &cone, delta));
                 if let Some((_, n, image, _, delta)) = mirror {
                     sets.push(candidates(objects, image, &cone.mirrored(n), delta));
