@@ -295,28 +295,34 @@ impl DirGrid {
         self.delta
     }
 
-    /// Whether a query from `p` may use the grid (its coordinates within the bound).
+    /// Whether a query from `p` may use the grid (its coordinates within the bound; not
+    /// for a NaN coordinate).
     #[inline(always)]
     pub fn covers(&self, p: DVec3) -> bool {
-        p.abs().max_element() <= self.bound
+        let a = p.abs();
+        a.x <= self.bound && a.y <= self.bound && a.z <= self.bound
     }
 
-    /// The two lists of the cell of direction `d` (from the centre; any length), or
-    /// `None` for a direction that is zero or not finite.
+    /// The two lists of the cell of direction `d` (from the centre; any length from 1e-300
+    /// up), or `None` for a direction that is shorter, zero or not finite.
     #[inline(always)]
     pub fn cell(&self, d: DVec3) -> Option<(Objects, Objects)> {
         let a = d.abs();
-        // Zero, infinite or NaN components: no cell (the caller falls back).
+        // Zero, tiny (below 1e-300, where N/2s overflows), infinite or NaN: no cell (the
+        // caller falls back). The sum of absolute values is ≥ 0 or NaN, whose bits order
+        // as the values do: one comparison of the bits decides.
+        const LO: u64 = 1e-300f64.to_bits();
         let sum = a.x + a.y + a.z;
-        if !(sum > 0.0 && sum < f64::INFINITY) {
+        if sum.to_bits().wrapping_sub(LO) > f64::MAX.to_bits() - LO {
             return None;
         }
-        // Octahedral coordinates u = x/s, v = y/s; cell ⌊(u + 1)·N/2⌋, clamped to 0..N−1
-        // (u = 1 gives N; rounding may put a direction on a cell boundary in its
-        // neighbour, which the cones' margin covers).
+        // Octahedral coordinates u = x/s, v = y/s; cell ⌊(u + 1)·N/2⌋ in 0..N−1: the
+        // argument is within [0, N] up to rounding (|x| ≤ s), truncation makes a tiny
+        // negative 0 and `min` makes N (u = 1) N − 1. Rounding may put a direction on a
+        // cell boundary in its neighbour, which the cones' margin covers.
         let k = 0.5 * N as f64 / sum;
-        let i = ((d.x * k + 0.5 * N as f64) as i32).clamp(0, N as i32 - 1) as usize;
-        let j = ((d.y * k + 0.5 * N as f64) as i32).clamp(0, N as i32 - 1) as usize;
+        let i = ((d.x * k + 0.5 * N as f64) as i32 as usize).min(N - 1);
+        let j = ((d.y * k + 0.5 * N as f64) as i32 as usize).min(N - 1);
         let h = (d.z < 0.0) as usize;
         let [first, second] = self.cells[(h * N + i) * N + j];
         Some((Objects(first), Objects(second)))
@@ -404,6 +410,10 @@ mod tests {
         assert_eq!(at(DVec3::new(0.0, 0.9, -1.0)), vec![2]); // up along it, still
         assert_eq!(at(DVec3::new(1.0, 0.5, -1.0)), Vec::<usize>::new()); // beside it
         assert_eq!(g.cell(DVec3::ZERO), None);
+        assert_eq!(g.cell(DVec3::new(-1e-310, 0.0, 0.0)), None);
+        assert_eq!(g.cell(DVec3::new(f64::INFINITY, 0.0, 0.0)), None);
+        assert_eq!(g.cell(-DVec3::X * 1e-299), g.cell(-DVec3::X));
+        assert_eq!(g.cell(DVec3::Y * f64::MAX), g.cell(DVec3::Y));
         assert_eq!(g.cell(DVec3::new(f64::NAN, 1.0, 0.0)), None);
     }
 }
