@@ -65,6 +65,7 @@ impl Occluders for [Object] {
 /// The local colour at `p`: ambient plus each light's diffuse and specular, shadowed.
 /// `shadow_rays` counts the shadow rays cast.
 #[allow(clippy::too_many_arguments)]
+#[inline(never)]
 pub fn direct<O: Occluders + ?Sized>(
     occluders: &O,
     lights: &[Light],
