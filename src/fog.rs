@@ -29,8 +29,8 @@ impl Fog {
         match *self {
             Fog::None => 0.0,
             Fog::Linear(dist) => (d / dist).min(1.0),
-            Fog::Exponential(dist) => 1.0 - (-d / dist).exp(),
-            Fog::ExponentialSquared(dist) => 1.0 - (-(d / dist).powi(2)).exp(),
+            Fog::Exponential(dist) => 1.0 - libm::exp(-d / dist),
+            Fog::ExponentialSquared(dist) => 1.0 - libm::exp(-(d / dist).powi(2)),
         }
     }
 

@@ -5,7 +5,7 @@
 //! n×n stratified grid of sub-pixel centres, each sample clamped before averaging (see
 //! docs/decisions.md); n = 1 samples the pixel centre, as the report does.
 
-use crate::accel::ViewGrid;
+use crate::accel::TileView;
 use crate::camera::Camera;
 use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
@@ -47,7 +47,7 @@ pub fn render(
     let row_len = width as usize * 3;
     let mut pixels = vec![0u8; row_len * height as usize];
     let n = samples.max(1);
-    let view = ViewGrid::new(camera.eye(), &tracer.scene().objects);
+    let view = TileView::new(camera, width, height, &tracer.scene().objects);
     let view = view.as_ref();
     let count = pixels
         .par_chunks_mut(row_len)
@@ -82,7 +82,7 @@ pub fn render_add(
     sum: &mut [Color],
 ) -> RayCount {
     let n = samples.max(1);
-    let view = ViewGrid::new(camera.eye(), &tracer.scene().objects);
+    let view = TileView::new(camera, width, height, &tracer.scene().objects);
     let view = view.as_ref();
     sum.par_chunks_mut(width.max(1) as usize)
         .take(height as usize)
@@ -117,18 +117,19 @@ impl Frame {
     }
 }
 
-/// The colour of pixel (i, j) from an n×n grid of samples; `view`, the frame's first-hit
-/// grid around the eye, when there is one.
+/// The colour of pixel (i, j) from an n×n grid of samples; `view`, the frame's tile
+/// lists of candidates for camera rays, when there are some.
 #[inline]
 fn pixel(
     tracer: &Tracer,
-    view: Option<&ViewGrid>,
+    view: Option<&TileView>,
     camera: &Camera,
     i: f64,
     j: f64,
     n: u32,
     count: &mut RayCount,
 ) -> Color {
+    let view = view.map(|v| v.hint(i as u32, j as u32));
     if n == 1 {
         return tracer.primary_in(view, &camera.ray(i + 0.5, j + 0.5), count);
     }

@@ -69,11 +69,11 @@ impl Texture {
             Texture::Wood(c1, c2) => {
                 let t = 20.0 * noise(p.x, p.y, p.z);
                 let n = t - floor(t);
-                let f = (1.0 - (std::f64::consts::PI * n).cos()) / 2.0;
+                let f = (1.0 - libm::cos(std::f64::consts::PI * n)) / 2.0;
                 c1 * (1.0 - f) + c2 * f
             }
             Texture::Marble(c1, c2) => {
-                let n = (1.0 + (p.x + noise(p.x, p.y, p.z)).cos()) / 2.0;
+                let n = (1.0 + libm::cos(p.x + noise(p.x, p.y, p.z))) / 2.0;
                 c1 * (1.0 - n) + c2 * n
             }
         }
@@ -129,7 +129,7 @@ mod tests {
         let t = Texture::Wood(RED, BLUE);
         assert_eq!(t.color_at(DVec3::new(1.0, 2.0, 3.0)), RED);
         let n: f64 = 0.7383991756800024;
-        let f = (1.0 - (std::f64::consts::PI * n).cos()) / 2.0;
+        let f = (1.0 - libm::cos(std::f64::consts::PI * n)) / 2.0;
         assert!((f - 0.8397).abs() < 1e-3);
         let c = t.color_at(DVec3::new(3.14, 42.0, 7.0));
         assert!(close(c, DVec3::new(1.0 - f, 0.0, f)), "{c}");

@@ -10,7 +10,7 @@
 //!   (the product of the Kr / Kt along its path) is below 1/256;
 //! - a ray that hits nothing is black.
 
-use crate::accel::{Accel, LightBuffer, ViewGrid};
+use crate::accel::{Accel, Hint, LightBuffer};
 use crate::object::Object;
 use crate::optics::{reflect, refract, Ray};
 use crate::scene::Scene;
@@ -114,19 +114,22 @@ impl<'a> Tracer<'a> {
         self.primary_in(None, ray, count)
     }
 
-    /// `primary`, with the first hit looked up in `view` (the same answer, found
-    /// faster) when it is given and the ray leaves its eye.
+    /// `primary`, with the first hit (and that of its mirror reflection off a polished
+    /// plane) looked up in the lists of its screen tile (`accel::TileView`: the same
+    /// answers, found faster) when they are given and the ray leaves their eye.
     #[inline]
-    pub fn primary_in(&self, view: Option<&ViewGrid>, ray: &Ray, count: &mut RayCount) -> Color {
+    pub fn primary_in(&self, tile: Option<Hint>, ray: &Ray, count: &mut RayCount) -> Color {
         count.primary += 1;
         let objects = &self.scene.objects;
-        let hit = match view.and_then(|v| v.nearest(objects, ray)) {
-            Some(found) => found.map(|(t, i)| (t, &objects[i])),
-            None => self.nearest(ray),
+        let hit = match tile.and_then(|h| h.nearest(objects, ray)) {
+            Some(found) => found,
+            None => self.accel.nearest(ray),
         };
         match hit {
-            Some((t, obj)) => {
-                let c = self.shade(ray, t, obj, 0, 1.0, count);
+            Some((t, i)) => {
+                // The tile's mirror lists answer for the reflection off that plane only.
+                let mirror = tile.filter(|h| h.mirror_plane() == Some(i));
+                let c = self.shade(ray, t, &objects[i], mirror, 0, 1.0, count);
                 self.scene.fog.apply(c, t)
             }
             None => self.scene.fog.apply(Color::ZERO, f64::INFINITY),
@@ -135,18 +138,35 @@ impl<'a> Tracer<'a> {
 
     /// The colour along a secondary ray at recursion `depth` with path weight `weight`.
     fn trace(&self, ray: &Ray, depth: u32, weight: f64, count: &mut RayCount) -> Color {
+        self.trace_hit(ray, self.nearest(ray), depth, weight, count)
+    }
+
+    /// `trace`, its nearest hit already found.
+    #[inline]
+    fn trace_hit(
+        &self,
+        ray: &Ray,
+        hit: Option<(f64, &Object)>,
+        depth: u32,
+        weight: f64,
+        count: &mut RayCount,
+    ) -> Color {
         count.secondary += 1;
-        match self.nearest(ray) {
-            Some((t, obj)) => self.shade(ray, t, obj, depth, weight, count),
+        match hit {
+            Some((t, obj)) => self.shade(ray, t, obj, None, depth, weight, count),
             None => Color::ZERO,
         }
     }
 
+    /// The colour at the hit of `ray` on `obj` at `t`. `mirror`: the tile lists of a
+    /// camera ray that hit their mirror plane, for its reflection ray.
+    #[allow(clippy::too_many_arguments)]
     fn shade(
         &self,
         ray: &Ray,
         t: f64,
         obj: &Object,
+        mirror: Option<Hint>,
         depth: u32,
         weight: f64,
         count: &mut RayCount,
@@ -175,7 +195,13 @@ impl<'a> Tracer<'a> {
         }
         if m.kr > 0.0 && weight * m.kr >= MIN_WEIGHT {
             let r = Ray::new(p, reflect(v, n).normalize());
-            out += m.kr * self.trace(&r, depth + 1, weight * m.kr, count);
+            let objects = &self.scene.objects;
+            let found = mirror.and_then(|h| h.mirrored(objects, h.mirror_plane()?, &r));
+            let hit = match found {
+                Some(found) => found.map(|(t, i)| (t, &objects[i])),
+                None => self.nearest(&r),
+            };
+            out += m.kr * self.trace_hit(&r, hit, depth + 1, weight * m.kr, count);
         }
         if m.kt > 0.0 && weight * m.kt >= MIN_WEIGHT {
             let eta = if entering { 1.0 / m.ior } else { m.ior };

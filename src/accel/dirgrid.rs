@@ -1,5 +1,5 @@
 //! Direction grids: for one point (a light, or the eye), the directions around it cut
-//! into the cells of a cube map, each cell listing the objects a ray from that point
+//! into the cells of a octahedral map (two hemispheres of N × N), each cell listing the objects a ray from that point
 //! along one of its directions may meet — the light buffer of Haines and Greenberg (1986)
 //! for shadow rays, and first-hit culling for camera rays (every camera ray leaves the
 //! eye). A query looks up its direction's cell and tests only that cell's objects.
@@ -30,8 +30,9 @@ use crate::shapes::{Quadric, Shape};
 use glam::DVec3;
 use std::sync::OnceLock;
 
-/// Cells per side of each cube face.
-const N: usize = 8;
+/// Cells per side of each hemisphere's octahedral square (even: no cell straddles a
+/// quadrant).
+const N: usize = 16;
 /// Relative distance margin, as in the BVH (`bvh::PAD`).
 const PAD: f64 = 1e-5;
 /// Angular margin of every cell cone, in radians.
@@ -74,19 +75,44 @@ impl Iterator for Objects {
 }
 
 /// A cell's cone: unit axis, sine and cosine of its widened half-angle.
-struct Cone {
+pub(super) struct Cone {
     axis: DVec3,
     sin: f64,
     cos: f64,
 }
 
-/// The direction through face coordinates (u, v) in −1..1 of cube face `face`.
-fn face_dir(face: usize, u: f64, v: f64) -> DVec3 {
-    let s = if face.is_multiple_of(2) { 1.0 } else { -1.0 };
-    match face / 2 {
-        0 => DVec3::new(s, u, v),
-        1 => DVec3::new(u, s, v),
-        _ => DVec3::new(u, v, s),
+/// The direction of octahedral coordinates (u, v) in −1..1 of hemisphere `h` (0: z ≥ 0,
+/// 1: z < 0): the point (u, v, ±(1 − |u| − |v|)), not normalised. Outside the diamond
+/// |u| + |v| ≤ 1 it continues the same plane (within a quadrant), below the equator.
+fn octa_dir(h: usize, u: f64, v: f64) -> DVec3 {
+    let z = 1.0 - u.abs() - v.abs();
+    DVec3::new(u, v, if h == 0 { z } else { -z })
+}
+
+impl Cone {
+    /// The cone around the unit `axis` that holds every direction of the conic hull of
+    /// `corners` (directions of the corners of a planar convex region, any length),
+    /// widened by `ANGLE_PAD`.
+    pub(super) fn around(axis: DVec3, corners: &[DVec3]) -> Cone {
+        let half = corners
+            .iter()
+            .map(|c| axis.dot(c.normalize()).clamp(-1.0, 1.0).acos())
+            .fold(0.0f64, f64::max)
+            + ANGLE_PAD;
+        Cone {
+            axis,
+            sin: half.sin(),
+            cos: half.cos(),
+        }
+    }
+
+    /// The same cone reflected in a plane of unit normal `n` (angles are kept).
+    pub(super) fn mirrored(&self, n: DVec3) -> Cone {
+        Cone {
+            axis: (self.axis - 2.0 * self.axis.dot(n) * n).normalize(),
+            sin: self.sin,
+            cos: self.cos,
+        }
     }
 }
 
@@ -94,27 +120,21 @@ fn face_dir(face: usize, u: f64, v: f64) -> DVec3 {
 fn cones() -> &'static [Cone] {
     static CONES: OnceLock<Vec<Cone>> = OnceLock::new();
     CONES.get_or_init(|| {
-        (0..6)
-            .flat_map(|f| (0..N).flat_map(move |i| (0..N).map(move |j| cell_cone(f, i, j))))
+        (0..2)
+            .flat_map(|h| (0..N).flat_map(move |i| (0..N).map(move |j| cell_cone(h, i, j))))
             .collect()
     })
 }
 
-fn cell_cone(face: usize, i: usize, j: usize) -> Cone {
+/// A cell lies within one quadrant of (u, v) (N is even), where the map is affine: its
+/// directions are the conic hull of its four corners' directions, and the widest angle
+/// from the cell's centre direction is at a corner.
+fn cell_cone(h: usize, i: usize, j: usize) -> Cone {
     let at = |k: usize| -1.0 + 2.0 * k as f64 / N as f64;
     let (u0, u1, v0, v1) = (at(i), at(i + 1), at(j), at(j + 1));
-    let axis = face_dir(face, 0.5 * (u0 + u1), 0.5 * (v0 + v1)).normalize();
-    let mut half = 0.0f64;
-    for (u, v) in [(u0, v0), (u0, v1), (u1, v0), (u1, v1)] {
-        let c = face_dir(face, u, v).normalize();
-        half = half.max(axis.dot(c).clamp(-1.0, 1.0).acos());
-    }
-    let half = half + ANGLE_PAD;
-    Cone {
-        axis,
-        sin: half.sin(),
-        cos: half.cos(),
-    }
+    let axis = octa_dir(h, 0.5 * (u0 + u1), 0.5 * (v0 + v1)).normalize();
+    let corners = [(u0, v0), (u0, v1), (u1, v0), (u1, v1)].map(|(u, v)| octa_dir(h, u, v));
+    Cone::around(axis, &corners)
 }
 
 /// The largest coordinate, in absolute value, of the point and of every shape's defining
@@ -137,7 +157,7 @@ fn bound(center: DVec3, objects: &[Object]) -> Option<f64> {
 
 /// May a ray from `from` along a direction of `cone` meet `shape`? (False only when it
 /// cannot, widened by `delta`.)
-fn may_hit(shape: &Shape, from: DVec3, cone: &Cone, delta: f64) -> bool {
+pub(super) fn may_hit(shape: &Shape, from: DVec3, cone: &Cone, delta: f64) -> bool {
     match shape {
         Shape::Sphere(s) => {
             let to = s.center - from;
@@ -229,11 +249,11 @@ impl DirGrid {
         group: impl Fn(&Object) -> Group,
     ) -> Option<DirGrid> {
         let (bound, delta) = Self::margins(center, objects)?;
-        let mut cells = Vec::with_capacity(6 * N * N);
-        for face in 0..6 {
+        let mut cells = Vec::with_capacity(2 * N * N);
+        for h in 0..2 {
             for i in 0..N {
                 for j in 0..N {
-                    let cone = &cones()[(face * N + i) * N + j];
+                    let cone = &cones()[(h * N + i) * N + j];
                     let mut cell = [0u64; 2];
                     for (k, o) in objects.iter().enumerate() {
                         let Some(g) = group(o) else { continue };
@@ -275,35 +295,36 @@ impl DirGrid {
         self.delta
     }
 
-    /// Whether a query from `p` may use the grid (its coordinates within the bound).
+    /// Whether a query from `p` may use the grid (its coordinates within the bound; not
+    /// for a NaN coordinate).
     #[inline(always)]
     pub fn covers(&self, p: DVec3) -> bool {
-        p.abs().max_element() <= self.bound
+        let a = p.abs();
+        a.x <= self.bound && a.y <= self.bound && a.z <= self.bound
     }
 
-    /// The two lists of the cell of direction `d` (from the centre; any length), or
-    /// `None` for a direction that is zero or not finite.
+    /// The two lists of the cell of direction `d` (from the centre; any length from 1e-300
+    /// up), or `None` for a direction that is shorter, zero or not finite.
     #[inline(always)]
     pub fn cell(&self, d: DVec3) -> Option<(Objects, Objects)> {
         let a = d.abs();
-        // Zero, infinite or NaN components: no cell (the caller falls back).
+        // Zero, tiny (below 1e-300, where N/2s overflows), infinite or NaN: no cell (the
+        // caller falls back). The sum of absolute values is ≥ 0 or NaN, whose bits order
+        // as the values do: one comparison of the bits decides.
+        const LO: u64 = 1e-300f64.to_bits();
         let sum = a.x + a.y + a.z;
-        if !(sum > 0.0 && sum < f64::INFINITY) {
+        if sum.to_bits().wrapping_sub(LO) > f64::MAX.to_bits() - LO {
             return None;
         }
-        let (face, u, v, m) = if a.x >= a.y && a.x >= a.z {
-            ((d.x < 0.0) as usize, d.y, d.z, a.x)
-        } else if a.y >= a.z {
-            (2 + (d.y < 0.0) as usize, d.x, d.z, a.y)
-        } else {
-            (4 + (d.z < 0.0) as usize, d.x, d.y, a.z)
-        };
-        let k = 0.5 * N as f64 / m;
-        // ⌊(u/m + 1)·N/2⌋, clamped to 0..N−1 (u = m gives N; rounding may put a
-        // direction on a cell boundary in its neighbour, which the cones' margin covers).
-        let i = ((u * k + 0.5 * N as f64) as i32).clamp(0, N as i32 - 1) as usize;
-        let j = ((v * k + 0.5 * N as f64) as i32).clamp(0, N as i32 - 1) as usize;
-        let [first, second] = self.cells[(face * N + i) * N + j];
+        // Octahedral coordinates u = x/s, v = y/s; cell ⌊(u + 1)·N/2⌋ in 0..N−1: the
+        // argument is within [0, N] up to rounding (|x| ≤ s), truncation makes a tiny
+        // negative 0 and `min` makes N (u = 1) N − 1. Rounding may put a direction on a
+        // cell boundary in its neighbour, which the cones' margin covers.
+        let k = 0.5 * N as f64 / sum;
+        let i = ((d.x * k + 0.5 * N as f64) as i32 as usize).min(N - 1);
+        let j = ((d.y * k + 0.5 * N as f64) as i32 as usize).min(N - 1);
+        let h = (d.z < 0.0) as usize;
+        let [first, second] = self.cells[(h * N + i) * N + j];
         Some((Objects(first), Objects(second)))
     }
 }
@@ -375,13 +396,13 @@ mod tests {
         ];
         let g = DirGrid::build(DVec3::ZERO, &objects, |_| Some(true)).unwrap();
         let at = |d: DVec3| set(g.cell(d).unwrap().0);
-        // +x, level: the sphere, and the floor (the cell's lower edge is the horizon, and
-        // its margin reaches just below it).
+        // +x, level: the sphere, and the floor (the horizon runs through the cell).
         assert_eq!(at(DVec3::X), vec![0, 1]);
-        assert_eq!(at(DVec3::new(1.0, 0.3, 0.0)), Vec::<usize>::new()); // above the sphere
-        assert_eq!(at(DVec3::new(1.0, -0.01, 0.02)), vec![0, 1]); // slightly down: the floor
-                                                                  // Straight up or down, the cell holds directions parallel to the cylinder's axis:
-                                                                  // it is kept (the test is by bounding cones), as the floor is below.
+        assert_eq!(at(DVec3::new(1.0, 0.5, 0.0)), Vec::<usize>::new()); // above the sphere
+                                                                        // Slightly down: the floor.
+        assert_eq!(at(DVec3::new(1.0, -0.01, 0.02)), vec![0, 1]);
+        // Straight up or down, the cell holds directions parallel to the cylinder's axis:
+        // it is kept (the test is by bounding cones), as the floor is below.
         assert_eq!(at(DVec3::Y), vec![2]);
         assert_eq!(at(-DVec3::Y), vec![1, 2]);
         assert_eq!(at(-DVec3::Z), vec![1, 2]); // towards the cylinder, at the horizon
@@ -389,6 +410,10 @@ mod tests {
         assert_eq!(at(DVec3::new(0.0, 0.9, -1.0)), vec![2]); // up along it, still
         assert_eq!(at(DVec3::new(1.0, 0.5, -1.0)), Vec::<usize>::new()); // beside it
         assert_eq!(g.cell(DVec3::ZERO), None);
+        assert_eq!(g.cell(DVec3::new(-1e-310, 0.0, 0.0)), None);
+        assert_eq!(g.cell(DVec3::new(f64::INFINITY, 0.0, 0.0)), None);
+        assert_eq!(g.cell(-DVec3::X * 1e-299), g.cell(-DVec3::X));
+        assert_eq!(g.cell(DVec3::Y * f64::MAX), g.cell(DVec3::Y));
         assert_eq!(g.cell(DVec3::new(f64::NAN, 1.0, 0.0)), None);
     }
 }

@@ -1,13 +1,14 @@
 //! The direction grids against the linear scans, bit for bit: the light buffer's shadow
-//! queries against `shading::transmission`, the eye grid's first hits against the linear
-//! nearest-hit scan, on random scenes (spheres with duplicates, planes, axis-aligned and
+//! queries against `shading::transmission`, the screen tiles' first hits (camera rays and
+//! their reflections off a polished floor) against the linear nearest-hit scan, on random scenes (spheres with duplicates, planes, axis-aligned and
 //! slanted cylinders, transparent objects, NaN Kt, a sky dome around everything) and on
 //! rays grazing the silhouettes of the spheres and cylinders seen from the grid's centre.
 
 use super::tests::{bits, linear_nearest, object, scene, Rng};
-use super::{LightBuffer, ViewGrid};
+use super::{LightBuffer, TileView};
+use crate::camera::Camera;
 use crate::object::{Light, Object};
-use crate::optics::Ray;
+use crate::optics::{reflect, Ray};
 use crate::shading;
 use crate::shapes::{Shape, Sphere};
 use crate::texture::{Color, Texture};
@@ -113,30 +114,59 @@ fn light_buffer_answers_as_the_linear_scan() {
     assert!(answered > 60_000, "{answered}");
 }
 
+/// A camera ray's tile lists, and those of its reflection off the polished floor, give
+/// the linear scan's first hit, bit for bit, for random sub-pixel samples of every pixel.
 #[test]
-fn eye_grid_answers_as_the_linear_scan() {
-    let mut answered = 0;
+fn tile_lists_answer_as_the_linear_scan() {
+    let (mut direct, mut mirrored) = (0, 0);
     for (seed, n) in [(5u64, 6usize), (64, 25), (1000, 45), (77, 12)] {
         let mut rng = Rng(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1);
-        let objects = domed(&mut rng, n);
+        let mut objects = domed(&mut rng, n);
+        let floor = objects
+            .iter()
+            .position(|o| matches!(o.shape, Shape::Plane(_)))
+            .expect("a floor");
+        objects[floor].material.kr = 0.2;
+        let Shape::Plane(plane) = objects[floor].shape else {
+            unreachable!()
+        };
         for scale in [1.0, 10.0, 1e4] {
-            let eye = rng.vec(scale);
-            let view = ViewGrid::new(eye, &objects).expect("a grid");
-            let mut dirs: Vec<DVec3> = (0..5000).map(|_| rng.vec(1.0).normalize()).collect();
-            dirs.extend([DVec3::X, -DVec3::Y, DVec3::Z, DVec3::Y]);
-            dirs.extend(grazing(&objects, eye, &mut rng));
-            for d in dirs {
-                let ray = Ray::new(eye, d);
-                let want = linear_nearest(&objects, &ray);
-                let got = view.nearest(&objects, &ray).expect("the eye's ray");
-                assert_eq!(got.map(|(t, i)| (t.to_bits(), i)), want, "{ray:?}");
-                answered += 1;
+            // Eyes above the floor (y = −6), looking down at the scene.
+            let eye = rng.vec(scale) * DVec3::new(1.0, 0.0, 1.0) + DVec3::Y * scale.max(8.0);
+            let camera = Camera::new(eye, rng.vec(3.0), 48, 36).expect("a camera");
+            let view = TileView::new(&camera, 48, 36, &objects).expect("tiles");
+            for j in 0..36 {
+                for i in 0..48 {
+                    let hint = view.hint(i, j);
+                    for _ in 0..3 {
+                        let (x, y) = (
+                            f64::from(i) + rng.next().abs(),
+                            f64::from(j) + rng.next().abs(),
+                        );
+                        let ray = camera.ray(x, y);
+                        let want = linear_nearest(&objects, &ray);
+                        let got = hint.nearest(&objects, &ray).expect("a camera ray");
+                        assert_eq!(got.map(|(t, i)| (t.to_bits(), i)), want, "{ray:?}");
+                        direct += 1;
+                        let Some((t, k)) = got.filter(|&(_, k)| k == floor) else {
+                            continue;
+                        };
+                        // The reflection ray exactly as the tracer makes it.
+                        let r = Ray::new(ray.at(t), reflect(ray.dir, -plane.normal()).normalize());
+                        if let Some(got) = hint.mirrored(&objects, k, &r) {
+                            let want = linear_nearest(&objects, &r);
+                            assert_eq!(got.map(|(t, i)| (t.to_bits(), i)), want, "{r:?}");
+                            mirrored += 1;
+                        }
+                    }
+                }
             }
-            // Another origin: not the grid's to answer.
-            assert!(view
+            // Another origin: not the lists' to answer.
+            let hint = view.hint(0, 0);
+            assert!(hint
                 .nearest(&objects, &Ray::new(eye + DVec3::X, DVec3::Y))
                 .is_none());
         }
     }
-    assert!(answered > 45_000);
+    assert!(direct > 60_000 && mirrored > 5_000, "{direct} {mirrored}");
 }

@@ -15,12 +15,12 @@
 mod bvh;
 mod dirgrid;
 mod lightbuf;
-mod view;
+mod tiles;
 
 pub use bvh::{Bvh, Prim};
 pub use dirgrid::DirGrid;
 pub use lightbuf::LightBuffer;
-pub use view::ViewGrid;
+pub use tiles::{Hint, TileView};
 
 use crate::object::Object;
 use crate::optics::Ray;

@@ -44,7 +44,7 @@ impl Circle {
         let n = f64::from(frames.max(1));
         let fraction = (self.turns * frame / n).rem_euclid(1.0);
         let theta = (self.start_angle + 360.0 * fraction).to_radians();
-        let (sin, cos) = theta.sin_cos();
+        let (sin, cos) = libm::sincos(theta);
         let c = self.center;
         DVec3::new(
             c.x + self.radius * sin,
