@@ -1,8 +1,10 @@
-//! Direction grids: for one point (a light, or the eye), the directions around it cut
-//! into the cells of a octahedral map (two hemispheres of N × N), each cell listing the objects a ray from that point
-//! along one of its directions may meet — the light buffer of Haines and Greenberg (1986)
-//! for shadow rays, and first-hit culling for camera rays (every camera ray leaves the
-//! eye). A query looks up its direction's cell and tests only that cell's objects.
+//! Direction grids: for one point (a light), the directions around it cut into the cells
+//! of an octahedral map — direction d ↦ (u, v) = (dx, dy)/(|dx| + |dy| + |dz|), an
+//! N × N square per hemisphere (dz ≥ 0, dz < 0) — each cell listing the objects a ray
+//! from that point along one of its directions may meet: the light buffer of Haines and
+//! Greenberg (1986) for shadow rays. A query looks up its direction's cell (one division,
+//! two truncations, no branch on the face) and tests only that cell's objects. The cone
+//! tests (`may_hit`, `Cone`) also serve the screen tiles of camera rays (`tiles`).
 //!
 //! Exactness. A cell lists every object whose (widened) cone of directions seen from the
 //! point overlaps the cell's (widened) cone; an object left out cannot be hit by a ray
@@ -17,9 +19,11 @@
 //! - a cylinder (a quadric made by `Quadric::cylinder`) is left out of the cells whose
 //!   directions, seen along its axis, all pass further than its radius + δ from it; any
 //!   other quadric is in every cell;
-//! - cell cones are bounded by their corners (the widest angle from the cell's centre
-//!   direction is at a corner), widened by `ANGLE_PAD`, which covers the rounding of the
-//!   lookup and of the cone tests at build time.
+//! - cell cones are bounded by their corners: N is even, so a cell lies within one
+//!   quadrant of (u, v), where the map is affine; its directions are the conic hull of
+//!   its corners', and the widest angle from the cell's centre direction is at a corner.
+//!   They are widened by `ANGLE_PAD`, which covers the rounding of the lookup and of the
+//!   cone tests at build time.
 //!
 //! Cells list their objects in object order, in two groups chosen by the builder (shadow
 //! rays: opaque, then transparent), so that a caller looping over a cell's list meets the
