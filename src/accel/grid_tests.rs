@@ -91,6 +91,19 @@ fn light_buffer_answers_as_the_linear_scan() {
                     points.push(light.position + d * far);
                 }
             }
+            // Points in a thin shell around the dome, where the buffer skips it: on it,
+            // and just inside and outside, on both sides of where its entry reaches ε.
+            if let Some(Shape::Sphere(dome)) = objects.last().map(|o| o.shape) {
+                for e in [
+                    -1e-6, 0.0, 1e-9, 1e-4, 1e-3, 2e-3, 2.5e-3, 3e-3, 5e-3, 9e-3, 0.01, 0.011,
+                    0.02, 0.1,
+                ] {
+                    for _ in 0..40 {
+                        let u = rng.vec(1.0).normalize();
+                        points.push(dome.center + u * (dome.radius + e));
+                    }
+                }
+            }
             for p in points {
                 let to = light.position - p;
                 let dist = to.length();
