@@ -98,18 +98,9 @@ pub fn direct<O: Occluders + ?Sized>(
         // factors finite and ≥ 0: when either is zero it is ±0, which leaves the sum's
         // bytes as they are (at most the sign of a zero changes, and every pixel clamps
         // ±0 to the same byte), so it is not computed.
-        let ks = 1.0 - kd;
-        let vr = if ks == 0.0 {
-            0.0
-        } else {
-            v.dot(l - 2.0 * l.dot(n) * n)
-        };
-        if vr > 0.0 {
-            let spec = ks * light.intensity * vr.powi(SHININESS) * light.color;
-            out += through * (diffuse + spec);
-        } else {
-            out += through * diffuse;
-        }
+        let r = l - 2.0 * l.dot(n) * n;
+        let spec = (1.0 - kd) * light.intensity * v.dot(r).max(0.0).powi(SHININESS) * light.color;
+        out += through * (diffuse + spec);
     }
     out
 }
