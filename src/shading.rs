@@ -94,10 +94,8 @@ pub fn direct<O: Occluders + ?Sized>(
             continue;
         }
         let diffuse = kd * light.intensity * nl * (color * light.color);
-        // The specular term is a product with (1 − Kd) and with max(0, V·R)^20, all other
-        // factors finite and ≥ 0: when either is zero it is ±0, which leaves the sum's
-        // bytes as they are (at most the sign of a zero changes, and every pixel clamps
-        // ±0 to the same byte), so it is not computed.
+        // Computed even where it is ±0 (Kd = 1, V·R ≤ 0): a branch to skip it alternated
+        // between the sky (Kd = 1) and the floor and cost more than the arithmetic.
         let r = l - 2.0 * l.dot(n) * n;
         let spec = (1.0 - kd) * light.intensity * v.dot(r).max(0.0).powi(SHININESS) * light.color;
         out += through * (diffuse + spec);
