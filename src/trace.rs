@@ -196,7 +196,7 @@ impl<'a> Tracer<'a> {
         if m.kr > 0.0 && weight * m.kr >= MIN_WEIGHT {
             let r = Ray::new(p, reflect(v, n).normalize());
             let objects = &self.scene.objects;
-            let found = mirror.and_then(|h| h.mirrored(objects, h.mirror_plane()?, &r));
+            let found = mirror.and_then(|h| h.mirrored(objects, &r));
             let hit = match found {
                 Some(found) => found.map(|(t, i)| (t, &objects[i])),
                 None => self.nearest(&r),

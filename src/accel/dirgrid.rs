@@ -51,11 +51,8 @@ pub type Group = Option<bool>;
 /// The cells around one point.
 #[derive(Clone, Debug)]
 pub struct DirGrid {
-    center: DVec3,
     /// Queries from points with a coordinate beyond this are not answered.
     bound: f64,
-    /// The distance margin δ the cones were widened by.
-    delta: f64,
     /// Per cell: the objects of the first group and of the second, as bit sets (bit k:
     /// object k; at most 64 objects).
     cells: Vec<[u64; 2]>,
@@ -269,12 +266,7 @@ impl DirGrid {
                 }
             }
         }
-        Some(DirGrid {
-            center,
-            bound,
-            delta,
-            cells,
-        })
+        Some(DirGrid { bound, cells })
     }
 
     /// The query bound and the distance margin δ of a grid around `center` over
@@ -286,17 +278,6 @@ impl DirGrid {
         // Queries come from points within 2B + 1; δ covers every coordinate up to there.
         let bound = 2.0 * bound(center, objects)? + 1.0;
         Some((bound, PAD * (4.0 * bound + 1.0)))
-    }
-
-    /// The point the grid is around.
-    #[inline]
-    pub fn center(&self) -> DVec3 {
-        self.center
-    }
-
-    /// The distance margin its cones were widened by.
-    pub fn delta(&self) -> f64 {
-        self.delta
     }
 
     /// Whether a query from `p` may use the grid (its coordinates within the bound; not

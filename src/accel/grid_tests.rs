@@ -161,12 +161,12 @@ fn tile_lists_answer_as_the_linear_scan() {
                         let got = hint.nearest(&objects, &ray).expect("a camera ray");
                         assert_eq!(got.map(|(t, i)| (t.to_bits(), i)), want, "{ray:?}");
                         direct += 1;
-                        let Some((t, k)) = got.filter(|&(_, k)| k == floor) else {
+                        let Some((t, _)) = got.filter(|&(_, k)| k == floor) else {
                             continue;
                         };
                         // The reflection ray exactly as the tracer makes it.
                         let r = Ray::new(ray.at(t), reflect(ray.dir, -plane.normal()).normalize());
-                        if let Some(got) = hint.mirrored(&objects, k, &r) {
+                        if let Some(got) = hint.mirrored(&objects, &r) {
                             let want = linear_nearest(&objects, &r);
                             assert_eq!(got.map(|(t, i)| (t.to_bits(), i)), want, "{r:?}");
                             mirrored += 1;

@@ -33,8 +33,8 @@ use glam::DVec3;
 /// Tile side, in pixels.
 const TILE: u32 = 16;
 
-/// The mirrored lists: which plane, the eye's image in it, and the bound of points the
-/// lists may answer for.
+/// The mirrored lists: which plane, the bound of the hit points they may answer for, and
+/// one bit set per tile.
 #[derive(Clone, Debug)]
 struct Mirror {
     plane: usize,
@@ -151,20 +151,15 @@ impl Hint<'_> {
         (ray.origin == self.view.eye).then(|| scan(objects, self.view.direct[self.tile], ray))
     }
 
-    /// The nearest hit of the mirror reflection, off object `plane`, of a camera ray of
-    /// this tile (`ray` starts at the camera ray's hit point, along the reflected
-    /// direction); `None` when the lists cannot answer (another plane, none listed, or a
-    /// hit point beyond their bound).
+    /// The nearest hit of the mirror reflection of a camera ray of this tile that hit
+    /// `mirror_plane()` (`ray` starts at that hit point, along the reflected direction;
+    /// the caller checks which object was hit); `None` when the lists cannot answer (no
+    /// mirror plane, or a hit point beyond their bound).
     #[inline]
-    pub fn mirrored(
-        &self,
-        objects: &[Object],
-        plane: usize,
-        ray: &Ray,
-    ) -> Option<Option<(f64, usize)>> {
+    pub fn mirrored(&self, objects: &[Object], ray: &Ray) -> Option<Option<(f64, usize)>> {
         let m = self.view.mirror.as_ref()?;
         let a = ray.origin.abs();
-        if m.plane != plane || !(a.x <= m.bound && a.y <= m.bound && a.z <= m.bound) {
+        if !(a.x <= m.bound && a.y <= m.bound && a.z <= m.bound) {
             return None;
         }
         Some(scan(objects, m.sets[self.tile], ray))
