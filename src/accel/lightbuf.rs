@@ -16,6 +16,7 @@
 //! from further out it is tested (`outside2`).
 
 use super::dirgrid::DirGrid;
+use super::{is_glass, is_opaque};
 use crate::object::{Light, Object};
 use crate::optics::Ray;
 use crate::shapes::Shape;
@@ -48,14 +49,6 @@ struct ShadowGrid {
 #[derive(Clone, Debug, Default)]
 pub struct LightBuffer {
     lights: Vec<Option<ShadowGrid>>,
-}
-
-fn is_opaque(o: &Object) -> bool {
-    o.material.kt <= 0.0
-}
-
-fn is_glass(o: &Object) -> bool {
-    o.material.kt > 0.0
 }
 
 impl ShadowGrid {
