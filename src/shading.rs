@@ -46,11 +46,19 @@ pub trait Occluders {
     /// `dist`, as the free function `transmission` defines it.
     fn transmission(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color;
 
-    /// The same, knowing that the ray goes to light number `light` of the scene (an
-    /// implementation may keep per-light structures); by default, `transmission`.
+    /// The same, knowing that the ray goes to light number `light` of the scene along
+    /// `to` = `to_light`·`dist` before normalisation (an implementation may keep
+    /// per-light structures); by default, `transmission`.
     #[inline]
-    fn transmission_to(&self, light: usize, p: DVec3, to_light: DVec3, dist: f64) -> Color {
-        let _ = light;
+    fn transmission_to(
+        &self,
+        light: usize,
+        p: DVec3,
+        to: DVec3,
+        to_light: DVec3,
+        dist: f64,
+    ) -> Color {
+        let _ = (light, to);
         self.transmission(p, to_light, dist)
     }
 }
@@ -89,7 +97,7 @@ pub fn direct<O: Occluders + ?Sized>(
             continue;
         }
         *shadow_rays += 1;
-        let through = occluders.transmission_to(k, p, l, dist);
+        let through = occluders.transmission_to(k, p, to, l, dist);
         if through == Color::ZERO {
             continue;
         }

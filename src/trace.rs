@@ -228,9 +228,19 @@ impl Occluders for Tracer<'_> {
 
     /// Through the light buffer when it can answer, else the full query.
     #[inline]
-    fn transmission_to(&self, light: usize, p: DVec3, to_light: DVec3, dist: f64) -> Color {
+    fn transmission_to(
+        &self,
+        light: usize,
+        p: DVec3,
+        to: DVec3,
+        to_light: DVec3,
+        dist: f64,
+    ) -> Color {
         let objects = &self.scene.objects;
-        match self.lights.transmission(light, objects, p, to_light, dist) {
+        match self
+            .lights
+            .transmission(light, objects, p, to, to_light, dist)
+        {
             Some(c) => c,
             None => Tracer::transmission(self, p, to_light, dist),
         }

@@ -112,7 +112,7 @@ fn light_buffer_answers_as_the_linear_scan() {
                 }
                 let l = to / dist;
                 let want = shading::transmission(&objects, p, l, dist);
-                if let Some(got) = buffer.transmission(k, &objects, p, l, dist) {
+                if let Some(got) = buffer.transmission(k, &objects, p, to, l, dist) {
                     assert_eq!(
                         bits(got),
                         bits(want),

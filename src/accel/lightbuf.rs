@@ -102,12 +102,18 @@ impl LightBuffer {
     /// What a shadow ray from `p` along the unit `to_light`, towards light number `light`
     /// `dist` away, lets through — exactly `shading::transmission(objects, ..)` — or
     /// `None` when the buffer cannot answer (no grid, `p` beyond its bound).
+    ///
+    /// `to` is the vector from `p` to the light that `to_light` normalises: the cell is
+    /// looked up from it, so that the lookup need not wait for the square root and the
+    /// division of the normalisation (the octahedral map ignores length, and the two
+    /// directions differ by a few ulps, far inside the cells' angular margin).
     #[inline]
     pub fn transmission(
         &self,
         light: usize,
         objects: &[Object],
         p: DVec3,
+        to: DVec3,
         to_light: DVec3,
         dist: f64,
     ) -> Option<Color> {
@@ -115,7 +121,7 @@ impl LightBuffer {
         if !sg.grid.covers(p) {
             return None;
         }
-        let (opaque, glass) = sg.grid.cell(-to_light)?;
+        let (opaque, glass) = sg.grid.cell(-to)?;
         let ray = Ray::new(p, to_light);
         for &(i, c, outside2) in &sg.enclosing {
             if (p - c).length_squared() > outside2
