@@ -4,7 +4,7 @@
 //! |---|---|
 //! | 0 | success (for `animate check`: every frame passed; `animate status`: all up to date) |
 //! | 1 | the run started and failed: a frame could not be rendered or written, ffmpeg failed, a check failed, frames are stale |
-//! | 2 | nothing was rendered because the request cannot be carried out as given: bad arguments, manifest or scene, an output location that cannot be used, a missing tool (ffmpeg), a check that cannot run |
+//! | 2 | nothing was rendered because the request cannot be carried out as given: bad arguments, manifest or scene, an output location that cannot be used, a missing tool (ffmpeg) or processor feature (`process::check_cpu`), a check that cannot run |
 //! | 128 + N | stopped by signal N (130 SIGINT, 143 SIGTERM); finished frames are kept |
 //!
 //! Errors of the library say which row they belong to (`Outcome`); the binaries turn that

@@ -1,10 +1,56 @@
-//! What both binaries set up for a run: the pool of worker threads (`--threads`, default
-//! all cores), and what SIGINT and SIGTERM do: raise the stop flag that the animation
-//! pipeline reads between frames (`animate`), or end a run that has no such point at once
-//! (`raytrace`'s one image), in both cases with the exit-status table's 128 + N.
+//! What both binaries set up for a run: a check that the processor has the instruction
+//! set the build was compiled for (`.cargo/config.toml`: x86-64-v2 on x86-64), the pool
+//! of worker threads (`--threads`, default all cores), and what SIGINT and SIGTERM do:
+//! raise the stop flag that the animation pipeline reads between frames (`animate`), or
+//! end a run that has no such point at once (`raytrace`'s one image), in both cases with
+//! the exit-status table's 128 + N.
 
 use std::sync::atomic::{AtomicBool, AtomicUsize};
 use std::sync::Arc;
+
+/// The processor lacks instructions that this build was compiled to use.
+#[derive(Debug, thiserror::Error)]
+#[error(
+    "this processor lacks {0} (the build targets x86-64-v2: SSE4.2 and POPCNT, every x86-64 \
+     CPU since about 2010); rebuild with RUSTFLAGS=\"-C target-cpu=x86-64\" (same pixels, \
+     a little slower)"
+)]
+pub struct CpuError(pub String);
+
+/// The instruction-set extensions the build was compiled to use (`cfg!(target_feature)`)
+/// that the running processor does not report, joined by ", "; `Ok` when it has them
+/// all. Called first by both binaries, before any code that may use them: a missing one
+/// would otherwise kill the process with SIGILL in the middle of a render.
+pub fn check_cpu() -> Result<(), CpuError> {
+    #[allow(unused_mut)]
+    let mut missing: Vec<&str> = Vec::new();
+    #[cfg(target_arch = "x86_64")]
+    {
+        macro_rules! need {
+            ($($f:tt),*) => {$(
+                if cfg!(target_feature = $f) && !std::is_x86_feature_detected!($f) {
+                    missing.push($f);
+                }
+            )*};
+        }
+        need!(
+            "sse3",
+            "ssse3",
+            "sse4.1",
+            "sse4.2",
+            "popcnt",
+            "cmpxchg16b",
+            "avx",
+            "avx2",
+            "fma"
+        );
+    }
+    if missing.is_empty() {
+        Ok(())
+    } else {
+        Err(CpuError(missing.join(", ")))
+    }
+}
 
 /// The worker pool: `threads` workers, or one per core when `None`.
 pub fn pool(threads: Option<u32>) -> Result<rayon::ThreadPool, rayon::ThreadPoolBuildError> {
@@ -37,6 +83,31 @@ pub fn exit_on_signals() {
 
 #[cfg(test)]
 mod tests {
+    #[test]
+    fn the_build_targets_x86_64_v2_and_this_cpu_has_it() {
+        // `.cargo/config.toml` compiles for x86-64-v2 on x86-64; losing that setting
+        // would silently give up its speed (the pixels are the same either way).
+        #[cfg(target_arch = "x86_64")]
+        {
+            let built = [
+                cfg!(target_feature = "sse4.2"),
+                cfg!(target_feature = "popcnt"),
+            ];
+            assert_eq!(
+                built, [true; 2],
+                "not built for x86-64-v2: is .cargo/config.toml in force (or RUSTFLAGS set)?"
+            );
+        }
+        super::check_cpu().unwrap();
+    }
+
+    #[test]
+    fn a_missing_feature_is_named_with_the_way_out() {
+        let e = super::CpuError("sse4.2, popcnt".into()).to_string();
+        assert!(e.starts_with("this processor lacks sse4.2, popcnt"), "{e}");
+        assert!(e.contains("RUSTFLAGS=\"-C target-cpu=x86-64\""), "{e}");
+    }
+
     #[test]
     fn pools_have_the_threads_asked_for() {
         assert_eq!(super::pool(Some(3)).unwrap().current_num_threads(), 3);

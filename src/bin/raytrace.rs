@@ -81,6 +81,10 @@ fn run(args: Args) -> anyhow::Result<()> {
 }
 
 fn main() -> ExitCode {
+    if let Err(e) = whitted::process::check_cpu() {
+        eprintln!("raytrace: {e}");
+        return ExitCode::from(Outcome::BadInput.code());
+    }
     match run(Args::parse()) {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {

@@ -127,6 +127,10 @@ fn preview(args: PreviewArgs) -> anyhow::Result<Outcome> {
 }
 
 fn main() -> ExitCode {
+    if let Err(e) = whitted::process::check_cpu() {
+        eprintln!("animate: {e}");
+        return ExitCode::from(Outcome::BadInput.code());
+    }
     let cli = Cli::parse();
     let result = match cli.command {
         None => render(cli.render),
