@@ -126,7 +126,7 @@ pub fn compare(reference: &Frame, rendered: &Frame, tol: Tolerance) -> Compariso
         failing_pixels: failing,
         failing_percent,
         mean_error: abs_sum as f64 / (pixels * 3.0),
-        psnr: (mse > 0.0).then(|| 10.0 * (255.0f64 * 255.0 / mse).log10()),
+        psnr: (mse > 0.0).then(|| 10.0 * libm::log10(255.0f64 * 255.0 / mse)),
     }
 }
 
@@ -135,7 +135,7 @@ pub fn compare(reference: &Frame, rendered: &Frame, tol: Tolerance) -> Compariso
 /// 1/2, 255 levels 1; then black -> red -> yellow -> white as t goes 0 -> 1/3 -> 2/3 -> 1.
 /// The same `d` gets the same colour in every frame, and a 1-level difference is a dim red.
 pub(crate) fn heat_colour(d: u8) -> [u8; 3] {
-    let t = (1.0 + d as f64).log2() / 8.0;
+    let t = libm::log2(1.0 + d as f64) / 8.0;
     let ramp = |x: f64| (x.clamp(0.0, 1.0) * 255.0).round() as u8;
     [ramp(3.0 * t), ramp(3.0 * t - 1.0), ramp(3.0 * t - 2.0)]
 }
@@ -163,7 +163,7 @@ pub fn heat_legend(width: u32, height: u32) -> Frame {
     let row: Vec<u8> = (0..width)
         .flat_map(|x| {
             let t = x as f64 / (width.max(2) - 1) as f64;
-            heat_colour(((8.0 * t).exp2() - 1.0).round() as u8)
+            heat_colour((libm::exp2(8.0 * t) - 1.0).round() as u8)
         })
         .collect();
     Frame {

@@ -183,12 +183,14 @@ fn panel(
     Ok(())
 }
 
-/// The points of a circle, as a polygon of 96 sides.
+/// The points of a circle, as a polygon of 96 sides (`libm`'s sine and cosine: glibc's
+/// pick an FMA variant by CPU, and a plot's pixels must not depend on the machine).
 fn circle(c: P2, r: f64) -> Vec<P2> {
     (0..96)
         .map(|i| {
             let t = std::f64::consts::TAU * f64::from(i) / 96.0;
-            (c.0 + r * t.cos(), c.1 + r * t.sin())
+            let (sin, cos) = libm::sincos(t);
+            (c.0 + r * cos, c.1 + r * sin)
         })
         .collect()
 }
