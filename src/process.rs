@@ -11,9 +11,9 @@ use std::sync::Arc;
 /// The processor lacks instructions that this build was compiled to use.
 #[derive(Debug, thiserror::Error)]
 #[error(
-    "this processor lacks {0} (the build targets x86-64-v2: SSE4.2 and POPCNT, every x86-64 \
-     CPU since about 2010); rebuild with RUSTFLAGS=\"-C target-cpu=x86-64\" (same pixels, \
-     a little slower)"
+    "this processor lacks {0}, which this build was compiled to use (.cargo/config.toml \
+     targets x86-64-v2, every x86-64 CPU since about 2010); rebuild with \
+     RUSTFLAGS=\"-C target-cpu=x86-64\" (same pixels, a little slower)"
 )]
 pub struct CpuError(pub String);
 
