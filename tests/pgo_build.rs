@@ -19,7 +19,7 @@ fn script() -> PathBuf {
 fn profdata() -> Option<PathBuf> {
     let rustc = |arg: &str| {
         let out = Command::new("rustc").arg(arg).output().ok()?;
-        Some(String::from_utf8(out.stdout).ok()?)
+        String::from_utf8(out.stdout).ok()
     };
     let host = rustc("-vV")?
         .lines()
