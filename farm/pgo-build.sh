@@ -9,9 +9,10 @@
 # 3. merges the profiles with the llvm-profdata of rustc's own LLVM (rustup component
 #    llvm-tools) and builds our crate again with -Cprofile-use (the dependencies are
 #    built once, plain: the time is in our code);
-# 4. renders the training scenes with the plain release binaries (PLAIN_BIN_DIR, default
-#    target/release, built if missing) and with the new ones and compares the bytes: if
-#    one image differs it stops with status 1 and copies nothing.
+# 4. renders the training scenes with the plain release binaries (PLAIN_BIN_DIR; default
+#    the release folder of $CARGO_TARGET_DIR or target/, built first) and with the new
+#    ones, and compares the bytes: if one image differs it stops with status 1 and copies
+#    nothing.
 # The binaries end in OUTDIR/raytrace and OUTDIR/animate (`ANIMATE=OUTDIR/animate sbatch
 # ...`). The profile changes only how the code is laid out, inlined and branched, never
 # the arithmetic (Rust neither reassociates nor contracts floating point), so the pixels
@@ -78,7 +79,7 @@ cargo clean --release --quiet -p whitted --target-dir "$out/build"
 build "-Cprofile-use=$out/merged.profdata"
 
 echo "pgo-build: 4/4 same bytes as the plain release build" >&2
-plain=${PLAIN_BIN_DIR:-target/release}
+plain=${PLAIN_BIN_DIR:-${CARGO_TARGET_DIR:-target}/release}
 [ -n "${PLAIN_BIN_DIR:-}" ] || cargo build --release --locked --quiet --bins
 render "$plain" "$out/check/plain"
 render "$bin" "$out/check/pgo"
