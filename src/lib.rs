@@ -43,6 +43,7 @@ pub mod noise;
 pub mod object;
 pub mod optics;
 pub mod output;
+pub mod passes;
 pub mod process;
 pub mod render;
 pub mod scene;

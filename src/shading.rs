@@ -13,6 +13,7 @@
 use crate::object::{Light, Object};
 use crate::optics::Ray;
 use crate::texture::Color;
+use crate::trace::{NoRecord, Record};
 use glam::DVec3;
 
 /// The report's ambient light intensity.
@@ -73,7 +74,7 @@ impl Occluders for [Object] {
 /// The local colour at `p`: ambient plus each light's diffuse and specular, shadowed.
 /// `shadow_rays` counts the shadow rays cast.
 #[allow(clippy::too_many_arguments)]
-#[inline(never)]
+#[inline]
 pub fn direct<O: Occluders + ?Sized>(
     occluders: &O,
     lights: &[Light],
@@ -84,7 +85,29 @@ pub fn direct<O: Occluders + ?Sized>(
     kd: f64,
     shadow_rays: &mut u64,
 ) -> Color {
+    direct_rec(occluders, lights, p, n, v, color, kd, shadow_rays, &mut NoRecord)
+}
+
+/// `direct`, telling `rec` the ambient term and each light's diffuse and specular terms
+/// (times what the shadow ray let through: the transparent-shadow product goes into the
+/// term it filters).
+#[allow(clippy::too_many_arguments)]
+#[inline(never)]
+pub fn direct_rec<O: Occluders + ?Sized, R: Record>(
+    occluders: &O,
+    lights: &[Light],
+    p: DVec3,
+    n: DVec3,
+    v: DVec3,
+    color: Color,
+    kd: f64,
+    shadow_rays: &mut u64,
+    rec: &mut R,
+) -> Color {
     let mut out = AMBIENT * color;
+    if R::ACTIVE {
+        rec.ambient(out);
+    }
     for (k, light) in lights.iter().enumerate() {
         let to = light.position - p;
         let dist = to.length();
@@ -106,6 +129,9 @@ pub fn direct<O: Occluders + ?Sized>(
         // between the sky (Kd = 1) and the floor and cost more than the arithmetic.
         let r = l - 2.0 * l.dot(n) * n;
         let spec = (1.0 - kd) * light.intensity * v.dot(r).max(0.0).powi(SHININESS) * light.color;
+        if R::ACTIVE {
+            rec.light(through * diffuse, through * spec);
+        }
         out += through * (diffuse + spec);
     }
     out

@@ -1,5 +1,5 @@
-//! `raytrace [SCENE] [-o OUT] [--size WxH] [--samples N] [--threads N]`: one image from a
-//! Scene.txt, the report's main(). It parses the command line and calls the library;
+//! `raytrace [SCENE] [-o OUT] [--size WxH] [--samples N] [--threads N] [--passes LIST]
+//! [--pass NAME] [--exr-depth half|float]`: one image from a Scene.txt, the report's main(). It parses the command line and calls the library;
 //! exit statuses follow `whitted::exit` (2 bad input, 1 a failed write, 130/143 stopped by
 //! SIGINT/SIGTERM).
 
@@ -8,13 +8,21 @@ use clap::Parser;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use whitted::exit::Outcome;
-use whitted::output::{check_target, write_atomic, ImageFormat, OutputError};
+use whitted::output::{
+    check_target, write_atomic, write_atomic_layers, ExrDepth, ImageFormat, OutputError,
+};
+use whitted::passes::{visible::picture, Pass, PassSet};
+use whitted::render::render_layers;
 use whitted::{render, trace::Tracer, Scene, SceneError};
 
 const AFTER_HELP: &str = "\
 Formats, by OUT's extension: .png, .jpg/.jpeg (quality 90), .ppm (binary P6), .raw (the
-report's headerless RGB bytes, rows top to bottom). OUT defaults to the scene's path with
-.png, beside the scene file (raytrace sub/t.txt writes sub/t.png).
+report's headerless RGB bytes, rows top to bottom), .exr (OpenEXR: the beauty unclamped,
+half unless --exr-depth float, and the --passes asked for; docs/exr.md). OUT defaults to
+the scene's path with .png, beside the scene file (raytrace sub/t.txt writes sub/t.png).
+--pass NAME writes one pass as the picture: depth white (near) to black (far), black where
+nothing is hit; normals as (N+1)/2 in RGB; positions scaled to the frame's bounds; colours
+clamped and rounded; Cryptomatte ids as flat colours.
 Exit status: 0 success; 2 nothing was rendered (bad arguments or scene, an output path
 that cannot be used); 1 the image could not be written; 130/143 stopped by SIGINT/SIGTERM
 (no image is written). Scene.txt: docs/scene-format.md.";
@@ -39,6 +47,17 @@ struct Args {
     /// Worker threads (default: all cores).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: Option<u32>,
+    /// Passes to store beside the beauty in an .exr: comma-separated names (depth,
+    /// position, normal, albedo, ambient, diffuse, specular, reflection, transmission,
+    /// fog, crypto_object, crypto_material) or `all`.
+    #[arg(long, value_name = "LIST", value_parser = parse_passes)]
+    passes: Option<PassSet>,
+    /// Write this pass as the picture instead of the beauty (an 8-bit OUT: .png, …).
+    #[arg(long, value_name = "NAME", value_parser = parse_pass)]
+    pass: Option<Pass>,
+    /// The sample type of an .exr beauty.
+    #[arg(long, value_name = "DEPTH", value_parser = parse_depth)]
+    exr_depth: Option<ExrDepth>,
     /// Print nothing on success.
     #[arg(short, long)]
     quiet: bool,
@@ -53,20 +72,78 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
         .ok_or_else(bad)
 }
 
+fn pass_names() -> String {
+    Pass::ALL.map(|p| p.name()).join(", ")
+}
+
+fn parse_pass(s: &str) -> Result<Pass, String> {
+    Pass::from_name(s).ok_or_else(|| format!("unknown pass {s:?}, expected one of {}", pass_names()))
+}
+
+fn parse_passes(s: &str) -> Result<PassSet, String> {
+    if s == "all" {
+        return Ok(PassSet::of(&Pass::ALL));
+    }
+    let list: Result<Vec<Pass>, String> = s.split(',').map(|p| parse_pass(p.trim())).collect();
+    Ok(PassSet::of(&list?))
+}
+
+fn parse_depth(s: &str) -> Result<ExrDepth, String> {
+    ExrDepth::from_name(s).ok_or_else(|| format!("expected half or float, found {s:?}"))
+}
+
+/// The format of OUT with the EXR options, refusing options its format cannot carry.
+fn out_format(args: &Args, out: &std::path::Path) -> Result<ImageFormat, OutputError> {
+    let refuse = |reason: &str| OutputError::Target {
+        path: out.to_path_buf(),
+        reason: reason.into(),
+    };
+    match ImageFormat::from_path(out)? {
+        ImageFormat::Exr(mut o) => {
+            if args.pass.is_some() {
+                return Err(refuse("--pass writes an 8-bit picture (.png, .jpg, .ppm, .raw); an .exr takes --passes"));
+            }
+            o.passes = args.passes.unwrap_or_default();
+            o.depth = args.exr_depth.unwrap_or_default();
+            Ok(ImageFormat::Exr(o))
+        }
+        _ if args.passes.is_some() => Err(refuse("--passes needs an .exr image")),
+        _ if args.exr_depth.is_some() => Err(refuse("--exr-depth needs an .exr image")),
+        other => Ok(other),
+    }
+}
+
 fn run(args: Args) -> anyhow::Result<()> {
     whitted::process::exit_on_signals();
-    let out = args.out.unwrap_or_else(|| args.scene.with_extension("png"));
-    let format = ImageFormat::from_path(&out)?;
+    let out = args.out.clone().unwrap_or_else(|| args.scene.with_extension("png"));
+    let format = out_format(&args, &out)?;
     let mut scene = Scene::load(&args.scene)?;
     check_target(&out)?;
     (scene.width, scene.height) = args.size.unwrap_or((scene.width, scene.height));
     let pool = whitted::process::pool(args.threads).context("cannot start the worker threads")?;
     let start = std::time::Instant::now();
     let (camera, tracer) = (scene.camera(), Tracer::new(&scene));
-    let (frame, rays) =
-        pool.install(|| render(&tracer, &camera, scene.width, scene.height, args.samples));
+    let (w, h) = (scene.width, scene.height);
+    let (frame, rays) = if format.is_layered() || args.pass.is_some() {
+        let passes = args.pass.map_or(format.passes(), |p| PassSet::of(&[p]));
+        let (layers, rays) =
+            pool.install(|| render_layers(&tracer, &camera, w, h, args.samples, passes));
+        let frame = match args.pass {
+            Some(p) => picture(&layers, p).context("the pass was not drawn")?,
+            None => {
+                write_atomic_layers(&out, &layers, format, &[])?;
+                layers.to_frame()
+            }
+        };
+        (Some(frame).filter(|_| args.pass.is_some()), rays)
+    } else {
+        let (frame, rays) = pool.install(|| render(&tracer, &camera, w, h, args.samples));
+        (Some(frame), rays)
+    };
     let traced = start.elapsed().as_secs_f64();
-    write_atomic(&out, &frame, format)?;
+    if let Some(frame) = &frame {
+        write_atomic(&out, frame, format)?;
+    }
     if !args.quiet {
         let (n, mrays) = (
             args.samples * args.samples,
@@ -74,7 +151,7 @@ fn run(args: Args) -> anyhow::Result<()> {
         );
         eprintln!(
             "raytrace: wrote {} ({}×{}, {n} sample(s)/px) in {traced:.3} s: {} rays, {mrays:.2} Mrays/s",
-            out.display(), frame.width, frame.height, rays.total()
+            out.display(), w, h, rays.total()
         );
     }
     Ok(())

@@ -11,6 +11,9 @@ use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
 
+pub mod layers;
+pub use layers::{render_layers, render_layers_add};
+
 /// An 8-bit RGB image, rows top to bottom.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Frame {
