@@ -180,7 +180,11 @@ impl<'a> Tracer<'a> {
                     rec.object(i, t);
                     rec.fog(self.scene.fog.amount(t));
                 }
-                let c = self.shade(ray, t, &objects[i], mirror, 0, 1.0, count, rec);
+                let c = if R::ACTIVE {
+                    self.shade_rec(ray, t, &objects[i], mirror, 0, 1.0, count, rec)
+                } else {
+                    self.shade(ray, t, &objects[i], mirror, 0, 1.0, count)
+                };
                 self.scene.fog.apply(c, t)
             }
             None => {
@@ -209,16 +213,33 @@ impl<'a> Tracer<'a> {
     ) -> Color {
         count.secondary += 1;
         match hit {
-            Some((t, obj)) => self.shade(ray, t, obj, None, depth, weight, count, &mut NoRecord),
+            Some((t, obj)) => self.shade(ray, t, obj, None, depth, weight, count),
             None => Color::ZERO,
         }
     }
 
     /// The colour at the hit of `ray` on `obj` at `t`. `mirror`: the tile lists of a
-    /// camera ray that hit their mirror plane, for its reflection ray. `rec` hears the
-    /// parts of the colour (the camera ray's; the rays spawned here get `NoRecord`).
+    /// camera ray that hit their mirror plane, for its reflection ray. Not generic: the
+    /// beauty-only path's code stays where it was.
     #[allow(clippy::too_many_arguments)]
-    fn shade<R: Record>(
+    fn shade(
+        &self,
+        ray: &Ray,
+        t: f64,
+        obj: &Object,
+        mirror: Option<Hint>,
+        depth: u32,
+        weight: f64,
+        count: &mut RayCount,
+    ) -> Color {
+        self.shade_rec(ray, t, obj, mirror, depth, weight, count, &mut NoRecord)
+    }
+
+    /// `shade`, telling `rec` the parts of the colour (the camera ray's; the rays spawned
+    /// here are traced with `NoRecord`).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    fn shade_rec<R: Record>(
         &self,
         ray: &Ray,
         t: f64,
@@ -241,17 +262,13 @@ impl<'a> Tracer<'a> {
             rec.surface(p, n, c);
         }
 
-        let mut out = shading::direct_rec(
-            self,
-            &self.scene.lights,
-            p,
-            n,
-            v,
-            c,
-            m.kd,
-            &mut count.shadow,
-            rec,
-        );
+        let lights = &self.scene.lights;
+        // The beauty-only path calls `direct`, the function it always called.
+        let mut out = if R::ACTIVE {
+            shading::direct_rec(self, lights, p, n, v, c, m.kd, &mut count.shadow, rec)
+        } else {
+            shading::direct(self, lights, p, n, v, c, m.kd, &mut count.shadow)
+        };
         if depth >= MAX_DEPTH {
             return out;
         }
