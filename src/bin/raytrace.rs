@@ -20,9 +20,9 @@ Formats, by OUT's extension: .png, .jpg/.jpeg (quality 90), .ppm (binary P6), .r
 report's headerless RGB bytes, rows top to bottom), .exr (OpenEXR: the beauty unclamped,
 half unless --exr-depth float, and the --passes asked for; docs/exr.md). OUT defaults to
 the scene's path with .png, beside the scene file (raytrace sub/t.txt writes sub/t.png).
---pass NAME writes one pass as the picture: depth white (near) to black (far), black where
-nothing is hit; normals as (N+1)/2 in RGB; positions scaled to the frame's bounds; colours
-clamped and rounded; Cryptomatte ids as flat colours.
+--pass NAME writes one pass as the picture: depth as near/z (the nearest point white, twice
+as far half grey, no hit black); normals as (N+1)/2 in RGB; positions as 0.5+0.5·x/(1+|x|)
+per axis; colours clamped and rounded; Cryptomatte ids as flat colours.
 Exit status: 0 success; 2 nothing was rendered (bad arguments or scene, an output path
 that cannot be used); 1 the image could not be written; 130/143 stopped by SIGINT/SIGTERM
 (no image is written). Scene.txt: docs/scene-format.md.";

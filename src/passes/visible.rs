@@ -1,9 +1,10 @@
 //! One pass as an 8-bit picture, for a quick look (`raytrace --pass NAME -o x.png`):
 //!
-//! - `depth`: near white to far black, linear between the nearest and the farthest finite
-//!   depth of the frame, `1 − (z − near)/(far − near)`; no hit (+∞) is black;
-//! - `position`: each axis scaled from its smallest to its largest value in the frame
-//!   (pixels that hit nothing stay black);
+//! - `depth`: inverse depth, `near / z` with `near` the frame's nearest depth: the
+//!   nearest point white, twice as far half grey, the horizon of an infinite plane fading
+//!   to black rather than squashing everything else white; no hit (+∞) is black;
+//! - `position`: each axis through `0.5 + 0.5·x/(1 + |x|)`: the origin mid-grey, positive
+//!   coordinates brighter, bounded however far a plane goes (no hit: the origin's grey);
 //! - `normal`: `(N + 1)/2` per axis, the usual normal-map colours (+x red, +y green,
 //!   +z blue);
 //! - `albedo` and the light split: their colours through the clamp-and-round of §2;
@@ -21,35 +22,22 @@ pub fn picture(layers: &Layers, pass: Pass) -> Option<Frame> {
     match pass {
         Pass::Depth => {
             let z = get("Z")?;
-            let finite = z.iter().filter(|v| v.is_finite());
-            let near = finite.clone().fold(f32::INFINITY, |a, &b| a.min(b));
-            let far = finite.fold(f32::NEG_INFINITY, |a, &b| a.max(b));
-            let span = f64::from(far - near);
+            let near = z.iter().filter(|v| v.is_finite() && **v > 0.0).fold(f32::INFINITY, |a, &b| a.min(b));
             for (px, &d) in rgb.iter_mut().zip(z) {
-                if d.is_finite() {
-                    let v = if span > 0.0 {
-                        1.0 - f64::from(d - near) / span
-                    } else {
-                        1.0
-                    };
-                    *px = [v; 3];
+                if d.is_finite() && d > 0.0 {
+                    *px = [f64::from(near) / f64::from(d); 3];
                 }
             }
         }
         Pass::Position | Pass::Normal => {
             let names = pass.channels();
             for (axis, name) in names.iter().enumerate() {
-                let ch = get(name)?;
-                let (lo, hi) = ch.iter().fold((f32::INFINITY, f32::NEG_INFINITY), |(a, b), &v| {
-                    (a.min(v), b.max(v))
-                });
-                for (px, &v) in rgb.iter_mut().zip(ch) {
+                for (px, &v) in rgb.iter_mut().zip(get(name)?) {
+                    let v = f64::from(v);
                     px[axis] = if pass == Pass::Normal {
-                        (f64::from(v) + 1.0) / 2.0
-                    } else if hi > lo {
-                        f64::from(v - lo) / f64::from(hi - lo)
+                        (v + 1.0) / 2.0
                     } else {
-                        0.0
+                        0.5 + 0.5 * v / (1.0 + v.abs())
                     };
                 }
             }
@@ -95,13 +83,14 @@ mod tests {
     }
 
     #[test]
-    fn depth_runs_from_white_near_to_black_far_and_misses_are_black() {
+    fn depth_is_inverse_from_the_nearest_and_misses_are_black() {
         let l = layers(vec![Channel {
             name: "Z".into(),
             values: vec![2.0, 4.0, f32::INFINITY],
         }]);
         let f = picture(&l, Pass::Depth).unwrap();
-        assert_eq!(f.pixels, [255, 255, 255, 0, 0, 0, 0, 0, 0]);
+        // near/z: 2/2 = 1 → 255, 2/4 = 0.5 → 128, +inf → 0.
+        assert_eq!(f.pixels, [255, 255, 255, 128, 128, 128, 0, 0, 0]);
         assert!(picture(&l, Pass::Normal).is_none());
     }
 
