@@ -73,14 +73,28 @@ fn depth_position_and_normal_at_hand_computed_pixels_of_one_sphere() {
     let d = ray_dir(1.0, 2.0);
     let t = 5.0 * -d[2] - (25.0 * d[2] * d[2] - 24.0).sqrt();
     let p = [t * d[0], t * d[1], 5.0 + t * d[2]];
-    assert!((at("Z", 1, 2) - t * -d[2]).abs() < 1e-5, "{} vs {}", at("Z", 1, 2), t * -d[2]);
+    assert!(
+        (at("Z", 1, 2) - t * -d[2]).abs() < 1e-5,
+        "{} vs {}",
+        at("Z", 1, 2),
+        t * -d[2]
+    );
     for (k, axis) in ["X", "Y", "Z"].iter().enumerate() {
-        assert!((at(&format!("P.{axis}"), 1, 2) - p[k]).abs() < 1e-5, "P.{axis}");
-        assert!((at(&format!("N.{axis}"), 1, 2) - p[k]).abs() < 1e-5, "N.{axis}");
+        assert!(
+            (at(&format!("P.{axis}"), 1, 2) - p[k]).abs() < 1e-5,
+            "P.{axis}"
+        );
+        assert!(
+            (at(&format!("N.{axis}"), 1, 2) - p[k]).abs() < 1e-5,
+            "N.{axis}"
+        );
     }
     // Corner (0, 0) misses: 25·d_z² − 24 < 0. Depth +inf, position and normal 0.
     let d = ray_dir(0.0, 0.0);
-    assert!(25.0 * d[2] * d[2] - 24.0 < 0.0, "the corner ray misses by hand too");
+    assert!(
+        25.0 * d[2] * d[2] - 24.0 < 0.0,
+        "the corner ray misses by hand too"
+    );
     assert_eq!(at("Z", 0, 0), f64::INFINITY);
     assert_eq!((at("P.X", 0, 0), at("N.Z", 0, 0)), (0.0, 0.0));
 }
@@ -88,13 +102,29 @@ fn depth_position_and_normal_at_hand_computed_pixels_of_one_sphere() {
 #[test]
 fn the_beauty_rounds_to_the_png_at_one_sample_in_half_and_float() {
     let dir = tempfile::tempdir().unwrap();
-    std::fs::write(dir.path().join("scene.txt"), scene_with_eye([1.0, 3.0, 8.0])).unwrap();
+    std::fs::write(
+        dir.path().join("scene.txt"),
+        scene_with_eye([1.0, 3.0, 8.0]),
+    )
+    .unwrap();
     let scene = dir.path().join("scene.txt");
-    raytrace().arg(&scene).arg("-o").arg(dir.path().join("a.png")).arg("-q").assert().success();
+    raytrace()
+        .arg(&scene)
+        .arg("-o")
+        .arg(dir.path().join("a.png"))
+        .arg("-q")
+        .assert()
+        .success();
     let png = pixels(&dir.path().join("a.png"));
     for depth in ["half", "float"] {
         let out = dir.path().join(format!("a-{depth}.exr"));
-        raytrace().arg(&scene).arg("-o").arg(&out).args(["--exr-depth", depth, "-q"]).assert().success();
+        raytrace()
+            .arg(&scene)
+            .arg("-o")
+            .arg(&out)
+            .args(["--exr-depth", depth, "-q"])
+            .assert()
+            .success();
         let ch = channels(&out);
         let byte = |v: f32| (f64::from(v).clamp(0.0, 1.0) * 255.0).round() as u8;
         let bytes: Vec<u8> = (0..png.len() / 3)
@@ -102,14 +132,21 @@ fn the_beauty_rounds_to_the_png_at_one_sample_in_half_and_float() {
             .collect();
         assert_eq!(bytes, png, "{depth}");
         // The tracer's values, not the bytes over 255.
-        assert!(ch["R"].iter().any(|v| (v * 255.0).fract().abs() > 1e-3), "{depth}");
+        assert!(
+            ch["R"].iter().any(|v| (v * 255.0).fract().abs() > 1e-3),
+            "{depth}"
+        );
     }
 }
 
 #[test]
 fn the_same_bytes_on_any_thread_count_and_run() {
     let dir = tempfile::tempdir().unwrap();
-    std::fs::write(dir.path().join("scene.txt"), scene_with_eye([1.0, 3.0, 8.0])).unwrap();
+    std::fs::write(
+        dir.path().join("scene.txt"),
+        scene_with_eye([1.0, 3.0, 8.0]),
+    )
+    .unwrap();
     let scene = dir.path().join("scene.txt");
     let mut all = Vec::new();
     for (k, threads) in ["1", "2", "2", "3"].iter().enumerate() {
@@ -118,7 +155,15 @@ fn the_same_bytes_on_any_thread_count_and_run() {
             .arg(&scene)
             .arg("-o")
             .arg(&out)
-            .args(["--passes", "all", "--samples", "2", "--threads", threads, "-q"])
+            .args([
+                "--passes",
+                "all",
+                "--samples",
+                "2",
+                "--threads",
+                threads,
+                "-q",
+            ])
             .assert()
             .success();
         all.push(std::fs::read(&out).unwrap());
@@ -132,13 +177,25 @@ fn a_pass_as_a_picture_and_options_refused_where_they_cannot_go() {
     std::fs::write(dir.path().join("s.txt"), ONE_SPHERE).unwrap();
     let scene = dir.path().join("s.txt");
     let out = dir.path().join("z.png");
-    raytrace().arg(&scene).arg("-o").arg(&out).args(["--pass", "depth", "-q"]).assert().success();
+    raytrace()
+        .arg(&scene)
+        .arg("-o")
+        .arg(&out)
+        .args(["--pass", "depth", "-q"])
+        .assert()
+        .success();
     let z = pixels(&out);
     // The nearest depth (the centre) is white, a miss (the corner) black.
     assert_eq!(&z[(2 * 5 + 2) * 3..][..3], &[255, 255, 255]);
     assert_eq!(&z[..3], &[0, 0, 0]);
     let out = dir.path().join("n.png");
-    raytrace().arg(&scene).arg("-o").arg(&out).args(["--pass", "normal", "-q"]).assert().success();
+    raytrace()
+        .arg(&scene)
+        .arg("-o")
+        .arg(&out)
+        .args(["--pass", "normal", "-q"])
+        .assert()
+        .success();
     // N = +z at the centre: (0.5, 0.5, 1) → (128, 128, 255).
     assert_eq!(&pixels(&out)[(2 * 5 + 2) * 3..][..3], &[128, 128, 255]);
     for args in [
@@ -146,7 +203,12 @@ fn a_pass_as_a_picture_and_options_refused_where_they_cannot_go() {
         vec!["-o", "x.exr", "--pass", "depth"],
         vec!["-o", "x.png", "--pass", "nope"],
     ] {
-        raytrace().current_dir(dir.path()).arg(&scene).args(&args).assert().code(2);
+        raytrace()
+            .current_dir(dir.path())
+            .arg(&scene)
+            .args(&args)
+            .assert()
+            .code(2);
     }
 }
 
@@ -170,7 +232,12 @@ fn resume_and_status_treat_exr_frames_like_the_others() {
     animate().arg("status").arg(&manifest).assert().code(0);
     // Moving the key at frame 2 moves frames 1 to 4 only (linear: 0 and 5 hold).
     std::fs::write(&manifest, exr_manifest("[-1.0, 1.8, 0.0]")).unwrap();
-    let out = animate().arg("status").arg(&manifest).arg("--json").output().unwrap();
+    let out = animate()
+        .arg("status")
+        .arg(&manifest)
+        .arg("--json")
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(1));
     let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(doc["stale"], "1-4", "{doc}");
@@ -179,7 +246,10 @@ fn resume_and_status_treat_exr_frames_like_the_others() {
     let run = animate().arg(&manifest).arg("--resume").output().unwrap();
     let err = String::from_utf8_lossy(&run.stderr);
     assert!(err.contains("4 frames rendered, 2 up to date"), "{err}");
-    assert_eq!(std::fs::read(frames.join("frame_0000.exr")).unwrap(), before);
+    assert_eq!(
+        std::fs::read(frames.join("frame_0000.exr")).unwrap(),
+        before
+    );
     animate().arg("status").arg(&manifest).assert().code(0);
     // A frame cut short is stale, not up to date.
     let f = frames.join("frame_0005.exr");
@@ -191,14 +261,25 @@ fn resume_and_status_treat_exr_frames_like_the_others() {
 #[test]
 fn exr_keys_are_checked_and_refused_for_other_formats() {
     for (extra, want) in [
-        ("format = \"exr\"\npasses = [\"depht\"]", "unknown pass `depht`"),
-        ("format = \"exr\"\nexr_depth = \"double\"", "unknown exr_depth `double`"),
-        ("format = \"exr\"\npasses = [\"fog\", \"fog\"]", "pass `fog` is listed twice"),
-        ("format = \"png\"\npasses = [\"fog\"]", "`passes` needs `format = \"exr\"`"),
+        (
+            "format = \"exr\"\npasses = [\"depht\"]",
+            "unknown pass `depht`",
+        ),
+        (
+            "format = \"exr\"\nexr_depth = \"double\"",
+            "unknown exr_depth `double`",
+        ),
+        (
+            "format = \"exr\"\npasses = [\"fog\", \"fog\"]",
+            "pass `fog` is listed twice",
+        ),
+        (
+            "format = \"png\"\npasses = [\"fog\"]",
+            "`passes` needs `format = \"exr\"`",
+        ),
     ] {
-        let text = format!(
-            "scene = \"scene.txt\"\nframes = 2\n[output]\ndir = \"frames\"\n{extra}\n"
-        );
+        let text =
+            format!("scene = \"scene.txt\"\nframes = 2\n[output]\ndir = \"frames\"\n{extra}\n");
         let (_dir, manifest) = project(&text);
         let out = animate().arg(&manifest).output().unwrap();
         assert_eq!(out.status.code(), Some(2));
@@ -210,7 +291,11 @@ fn exr_keys_are_checked_and_refused_for_other_formats() {
 #[test]
 fn png_stamps_of_names_beyond_latin1_use_utf8_text_chunks() {
     let dir = tempfile::tempdir().unwrap();
-    std::fs::write(dir.path().join("сцена😀.txt"), scene_with_eye([0.0, 3.0, 8.0])).unwrap();
+    std::fs::write(
+        dir.path().join("сцена😀.txt"),
+        scene_with_eye([0.0, 3.0, 8.0]),
+    )
+    .unwrap();
     let manifest = dir.path().join("日本.toml");
     std::fs::write(
         &manifest,
@@ -220,7 +305,9 @@ fn png_stamps_of_names_beyond_latin1_use_utf8_text_chunks() {
     animate().arg(&manifest).assert().success();
     animate().arg("status").arg(&manifest).assert().code(0);
     let file = std::fs::File::open(dir.path().join("frames/frame_0000.png")).unwrap();
-    let reader = png::Decoder::new(std::io::BufReader::new(file)).read_info().unwrap();
+    let reader = png::Decoder::new(std::io::BufReader::new(file))
+        .read_info()
+        .unwrap();
     let texts: Vec<String> = reader
         .info()
         .utf8_text

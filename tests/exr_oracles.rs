@@ -17,7 +17,10 @@ fn have(program: &str, args: &[&str]) -> bool {
         .map(|o| o.status.success())
         .unwrap_or(false);
     if !ok {
-        assert!(std::env::var_os("CI").is_none(), "CI must install {program} {args:?}");
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI must install {program} {args:?}"
+        );
         eprintln!("SKIPPED: {program} {args:?} is not available");
     }
     ok
@@ -27,7 +30,10 @@ fn have(program: &str, args: &[&str]) -> bool {
 fn render_all(dir: &Path, samples: &str) -> (PathBuf, PathBuf) {
     std::fs::write(dir.join("scene.txt"), scene_with_eye([1.0, 3.0, 8.0])).unwrap();
     let (exr, png) = (dir.join("f.exr"), dir.join("f.png"));
-    for (out, extra) in [(&exr, vec!["--passes", "all", "--exr-depth", "float"]), (&png, vec![])] {
+    for (out, extra) in [
+        (&exr, vec!["--passes", "all", "--exr-depth", "float"]),
+        (&png, vec![]),
+    ] {
         raytrace()
             .arg(dir.join("scene.txt"))
             .arg("-o")
@@ -43,7 +49,11 @@ fn render_all(dir: &Path, samples: &str) -> (PathBuf, PathBuf) {
 fn run(program: &str, args: &[&str]) -> String {
     let out = Command::new(program).args(args).output().unwrap();
     let text = String::from_utf8_lossy(&out.stdout).into_owned();
-    assert!(out.status.success(), "{program}: {}{text}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{program}: {}{text}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     text
 }
 
@@ -62,9 +72,22 @@ fn exrheader_and_oiiotool_list_the_layers_and_attributes() {
     let info = run("oiiotool", &["--info", "-v", path]);
     for text in [&header, &info] {
         for name in [
-            "Z", "P.X", "N.Z", "albedo.R", "diffuse.G", "fog.B", "crypto_object00.R",
-            "crypto_material02.A", "chromaticities", "worldToCamera", "worldToNDC",
-            "/name", "/manifest", "MurmurHash3_32", "uint32_to_float32", "crypto_object",
+            "Z",
+            "P.X",
+            "N.Z",
+            "albedo.R",
+            "diffuse.G",
+            "fog.B",
+            "crypto_object00.R",
+            "crypto_material02.A",
+            "chromaticities",
+            "worldToCamera",
+            "worldToNDC",
+            "/name",
+            "/manifest",
+            "MurmurHash3_32",
+            "uint32_to_float32",
+            "crypto_object",
         ] {
             assert!(text.contains(name), "{name} missing from:\n{text}");
         }
@@ -153,7 +176,15 @@ fn python_openexr_reads_the_beauty_split_and_cryptomatte() {
             .success();
         let out = run(
             "python3",
-            &["-c", PYTHON, exr.to_str().unwrap(), raw.to_str().unwrap(), "48", "36", samples],
+            &[
+                "-c",
+                PYTHON,
+                exr.to_str().unwrap(),
+                raw.to_str().unwrap(),
+                "48",
+                "36",
+                samples,
+            ],
         );
         assert!(out.starts_with("ok 5"), "{out}");
     }
@@ -170,13 +201,29 @@ fn idiff_passes_the_beauty_against_its_oiiotool_round_trip() {
     let (a, b) = (exr.to_str().unwrap(), copy.to_str().unwrap());
     run("oiiotool", &[a, "--ch", "R,G,B", "-o", b]);
     let beauty = dir.path().join("beauty.exr");
-    run("oiiotool", &[a, "--ch", "R,G,B", "-o", beauty.to_str().unwrap()]);
-    let out = Command::new("idiff").args([beauty.to_str().unwrap(), b]).output().unwrap();
+    run(
+        "oiiotool",
+        &[a, "--ch", "R,G,B", "-o", beauty.to_str().unwrap()],
+    );
+    let out = Command::new("idiff")
+        .args([beauty.to_str().unwrap(), b])
+        .output()
+        .unwrap();
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success() && text.contains("PASS"), "{text}");
     // And it can fail: a brightened copy does not pass.
     let bright = dir.path().join("bright.exr");
-    run("oiiotool", &[b, "--mulc", "1.5", "-o", bright.to_str().unwrap()]);
-    let out = Command::new("idiff").args([beauty.to_str().unwrap(), bright.to_str().unwrap()]).output().unwrap();
-    assert!(!out.status.success(), "{}", String::from_utf8_lossy(&out.stdout));
+    run(
+        "oiiotool",
+        &[b, "--mulc", "1.5", "-o", bright.to_str().unwrap()],
+    );
+    let out = Command::new("idiff")
+        .args([beauty.to_str().unwrap(), bright.to_str().unwrap()])
+        .output()
+        .unwrap();
+    assert!(
+        !out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stdout)
+    );
 }

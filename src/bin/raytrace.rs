@@ -77,7 +77,8 @@ fn pass_names() -> String {
 }
 
 fn parse_pass(s: &str) -> Result<Pass, String> {
-    Pass::from_name(s).ok_or_else(|| format!("unknown pass {s:?}, expected one of {}", pass_names()))
+    Pass::from_name(s)
+        .ok_or_else(|| format!("unknown pass {s:?}, expected one of {}", pass_names()))
 }
 
 fn parse_passes(s: &str) -> Result<PassSet, String> {
@@ -115,7 +116,10 @@ fn out_format(args: &Args, out: &std::path::Path) -> Result<ImageFormat, OutputE
 
 fn run(args: Args) -> anyhow::Result<()> {
     whitted::process::exit_on_signals();
-    let out = args.out.clone().unwrap_or_else(|| args.scene.with_extension("png"));
+    let out = args
+        .out
+        .clone()
+        .unwrap_or_else(|| args.scene.with_extension("png"));
     let format = out_format(&args, &out)?;
     let mut scene = Scene::load(&args.scene)?;
     check_target(&out)?;

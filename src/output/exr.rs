@@ -21,9 +21,9 @@ use crate::passes::{crypto, Layers};
 use crate::render::to_byte;
 use exr::meta::attribute::Chromaticities;
 use exr::prelude::*;
-use std::result::Result;
 use std::io::Write;
 use std::path::Path;
+use std::result::Result;
 
 /// Encodes `layers` with `meta` as string attributes.
 pub(super) fn encode(
@@ -67,7 +67,10 @@ pub(super) fn encode(
         put(&format!("{key}/name"), &c.name);
         put(&format!("{key}/hash"), "MurmurHash3_32");
         put(&format!("{key}/conversion"), "uint32_to_float32");
-        put(&format!("{key}/manifest"), &crypto::manifest_json(&c.manifest));
+        put(
+            &format!("{key}/manifest"),
+            &crypto::manifest_json(&c.manifest),
+        );
     }
     let compression = match options.compression {
         ExrCompression::None => Compression::Uncompressed,
@@ -147,7 +150,11 @@ pub(crate) fn float_keeping_byte(c: f64) -> f32 {
         if to_byte(f64::from(v)) == want {
             break;
         }
-        v = if f64::from(v) < c { v.next_up() } else { v.next_down() };
+        v = if f64::from(v) < c {
+            v.next_up()
+        } else {
+            v.next_down()
+        };
     }
     v
 }
@@ -222,7 +229,8 @@ pub fn complete(path: &Path, width: u32, height: u32) -> bool {
     let Ok(file) = std::fs::File::open(path) else {
         return false;
     };
-    let Ok(reader) = exr::block::reader::Reader::read_from_buffered(std::io::BufReader::new(file), false)
+    let Ok(reader) =
+        exr::block::reader::Reader::read_from_buffered(std::io::BufReader::new(file), false)
     else {
         return false;
     };
@@ -245,11 +253,18 @@ mod tests {
         // 0.5/255 + a hair rounds to 1 in f64; plain half rounding may give 0.
         for k in 0..=2550 {
             let c = (k as f64 + 0.5) / 2550.0 * 1.1 - 0.05;
-            for c in [c, (k as f64 / 10.0 + 0.5) / 255.0, ((k as f64 / 10.0 + 0.5) / 255.0).next_down()] {
+            for c in [
+                c,
+                (k as f64 / 10.0 + 0.5) / 255.0,
+                ((k as f64 / 10.0 + 0.5) / 255.0).next_down(),
+            ] {
                 let want = to_byte(c);
                 let h = half_keeping_byte(c);
                 assert_eq!(to_byte(h.to_f64()), want, "{c:e} → half {h}");
-                assert!((h.to_f64() - c).abs() <= 2.0 * (c.abs() * 2f64.powi(-11) + 6e-8), "{c} {h}");
+                assert!(
+                    (h.to_f64() - c).abs() <= 2.0 * (c.abs() * 2f64.powi(-11) + 6e-8),
+                    "{c} {h}"
+                );
                 let f = float_keeping_byte(c);
                 assert_eq!(to_byte(f64::from(f)), want, "{c:e} → float {f}");
                 assert!((f64::from(f) - c).abs() <= 2.0 * c.abs() * 2f64.powi(-24) + 1e-40);

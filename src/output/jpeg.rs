@@ -16,7 +16,12 @@ pub(super) fn encode(
 ) -> Result<(), OutputError> {
     let mut bytes = Vec::new();
     let enc = JpegEncoder::new_with_quality(&mut bytes, quality.clamp(1, 100));
-    enc.write_image(&frame.pixels, frame.width, frame.height, ExtendedColorType::Rgb8)?;
+    enc.write_image(
+        &frame.pixels,
+        frame.width,
+        frame.height,
+        ExtendedColorType::Rgb8,
+    )?;
     // The image crate writes no comments: the COM segment (FF FE, a big-endian
     // length that counts itself, the text) goes right after SOI (FF D8).
     let text: String = meta.iter().map(|(k, v)| format!("{k}: {v}\n")).collect();

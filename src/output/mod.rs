@@ -269,7 +269,9 @@ pub fn encode_with(
                 beauty: frame
                     .pixels
                     .chunks_exact(3)
-                    .map(|p| crate::texture::Color::new(p[0].into(), p[1].into(), p[2].into()) / 255.0)
+                    .map(|p| {
+                        crate::texture::Color::new(p[0].into(), p[1].into(), p[2].into()) / 255.0
+                    })
                     .collect(),
                 channels: Vec::new(),
                 crypto: Vec::new(),

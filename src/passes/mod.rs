@@ -251,7 +251,10 @@ mod tests {
         assert!(set.has(Pass::Depth) && set.has(Pass::Normal) && !set.has(Pass::Fog));
         assert_eq!(set.iter().collect::<Vec<_>>(), [Pass::Depth, Pass::Normal]);
         assert!(!set.any_light() && PassSet::of(&[Pass::Fog]).any_light());
-        assert_eq!(serde_json::to_string(&set).unwrap(), r#"["depth","normal"]"#);
+        assert_eq!(
+            serde_json::to_string(&set).unwrap(),
+            r#"["depth","normal"]"#
+        );
         assert_eq!(Pass::Position.channels(), ["P.X", "P.Y", "P.Z"]);
         assert_eq!(Pass::Diffuse.channels()[2], "diffuse.B");
     }

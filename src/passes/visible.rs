@@ -22,7 +22,10 @@ pub fn picture(layers: &Layers, pass: Pass) -> Option<Frame> {
     match pass {
         Pass::Depth => {
             let z = get("Z")?;
-            let near = z.iter().filter(|v| v.is_finite() && **v > 0.0).fold(f32::INFINITY, |a, &b| a.min(b));
+            let near = z
+                .iter()
+                .filter(|v| v.is_finite() && **v > 0.0)
+                .fold(f32::INFINITY, |a, &b| a.min(b));
             for (px, &d) in rgb.iter_mut().zip(z) {
                 if d.is_finite() && d > 0.0 {
                     *px = [f64::from(near) / f64::from(d); 3];

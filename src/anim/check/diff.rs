@@ -245,7 +245,10 @@ mod tests {
         let a = [[0.5f32, 0.5, 0.5], [2.0, 0.0, 0.0]];
         let b = [[0.5f32 + 3.0 / 255.0 + 1e-4, 0.5, 0.5], [2.0, 0.0, 0.0]];
         let c = compare_float(&a, &b, 2, TOL);
-        assert_eq!((c.max_diff, c.max_at, c.failing_pixels), (4, Some((0, 0, 0)), 1));
+        assert_eq!(
+            (c.max_diff, c.max_at, c.failing_pixels),
+            (4, Some((0, 0, 0)), 1)
+        );
         assert_eq!(c.failing_percent, 50.0);
         assert!(compare_float(&a, &a, 2, TOL).psnr.is_none());
         let hdr = [[0.5f32, 0.5, 0.5], [12.0, 0.0, 0.0]];

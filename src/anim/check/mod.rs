@@ -188,7 +188,11 @@ fn stem(anim: &Animation, frame: u32) -> String {
 
 /// Where the reference of `frame` lives.
 pub fn reference_path(anim: &Animation, refs: &Path, frame: u32) -> PathBuf {
-    let ext = if anim.format().is_layered() { "exr" } else { "png" };
+    let ext = if anim.format().is_layered() {
+        "exr"
+    } else {
+        "png"
+    };
     refs.join(format!("{}.{ext}", stem(anim, frame)))
 }
 
@@ -218,8 +222,9 @@ fn load_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<Reference
                 path.display()
             )));
         }
-        let (w, h, beauty) = crate::output::exr::read_beauty(&path)
-            .map_err(|e| AnimError::Reference(format!("{}: cannot read it: {e}", path.display())))?;
+        let (w, h, beauty) = crate::output::exr::read_beauty(&path).map_err(|e| {
+            AnimError::Reference(format!("{}: cannot read it: {e}", path.display()))
+        })?;
         if (w, h) != (anim.width, anim.height) {
             return Err(AnimError::Reference(format!(
                 "frame {frame}: the reference {} is {w}×{h}, the frame is {}×{}",

@@ -121,7 +121,9 @@ impl Source<'_> {
             _ => {
                 let given = [
                     raw.exr_depth.as_ref().map(|v| ("exr_depth", v.span())),
-                    raw.exr_compression.as_ref().map(|v| ("exr_compression", v.span())),
+                    raw.exr_compression
+                        .as_ref()
+                        .map(|v| ("exr_compression", v.span())),
                     raw.passes.as_ref().map(|v| ("passes", v.span())),
                 ];
                 match given.into_iter().flatten().next() {
