@@ -48,8 +48,10 @@ pub(super) fn encode(
             FlatSamples::F32(ch.values.clone()),
         ));
     }
-    let mut attributes = LayerAttributes::default();
-    attributes.software_name = Some(text(&format!("whitted {}", env!("CARGO_PKG_VERSION"))));
+    let mut attributes = LayerAttributes {
+        software_name: Some(text(&format!("whitted {}", env!("CARGO_PKG_VERSION")))),
+        ..Default::default()
+    };
     if let Some(cam) = layers.camera {
         attributes.world_to_camera = Some(cam.world_to_camera);
         attributes.world_to_normalized_device = Some(cam.world_to_ndc);

@@ -179,10 +179,12 @@ mod tests {
     #[test]
     fn fogged_terms_and_fog_sum_to_the_fogged_colour() {
         // Terms 0.1..0.5 (sum 1.5) at fog f = 0.25: beauty 1.5·0.75 + 0.25 = 1.375.
-        let mut s = Sample::default();
-        s.hit = Some((0, 2.0));
-        s.terms = [0.1, 0.2, 0.3, 0.4, 0.5].map(Color::splat);
-        s.fog = 0.25;
+        let s = Sample {
+            hit: Some((0, 2.0)),
+            terms: [0.1, 0.2, 0.3, 0.4, 0.5].map(Color::splat),
+            fog: 0.25,
+            ..Default::default()
+        };
         let mut sum = PixelSum::default();
         let beauty = Color::splat(1.375);
         let dir = DVec3::new(0.6, 0.0, 0.8);
