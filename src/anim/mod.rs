@@ -1,6 +1,7 @@
 //! The animation pipeline of SPEC §5-§11, one home per idea:
 //!
-//! - `manifest`: the TOML manifest, read and checked, every refusal located;
+//! - `manifest`: the TOML manifest, read and checked, every refusal located (`refusal`:
+//!   the error both `manifest` and `timeline` raise, so that neither imports the other);
 //! - `timeline`: values over time — camera paths (circle, spline), tracks, easing, motion
 //!   blur — answering "what is frame t?" with a scene and a camera;
 //! - `project`: a manifest with its scene and timeline, loaded once (`Project::load`), and
@@ -18,6 +19,7 @@ pub mod frames;
 pub mod manifest;
 pub mod preview;
 pub mod project;
+pub mod refusal;
 pub mod timeline;
 
 pub use error::AnimError;
