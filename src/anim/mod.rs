@@ -11,6 +11,8 @@
 //! - checking frames: `check` (`animate check` and `bless`: idiff metrics, FLIP, one
 //!   report value and its exporters: table, JSON, JUnit, HTML);
 //! - `preview`: quick pictures for people (a GIF, a contact sheet, a plot of the paths);
+//! - `view`: `animate view`, a page that shows the animation while it is made (live
+//!   reload, picking, the folder's state);
 //! - `error`: why a run stopped, and its exit status.
 
 pub mod check;
@@ -21,6 +23,7 @@ pub mod preview;
 pub mod project;
 pub mod refusal;
 pub mod timeline;
+pub mod view;
 
 pub use error::AnimError;
 pub use frames::events::{Event, Reporter};
