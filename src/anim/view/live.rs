@@ -147,9 +147,20 @@ pub fn watch(live: Arc<Live>) -> notify::Result<()> {
     Ok(())
 }
 
+/// Whether `event` changes one of `files`: a creation, a write, a rename or a removal
+/// (not a read, nor a change of times or permissions: the reload's own reading of the
+/// files must not trigger another).
 fn touches(event: &notify::Result<notify::Event>, files: &BTreeSet<PathBuf>) -> bool {
+    use notify::event::{EventKind, ModifyKind};
     match event {
-        Ok(e) => e.paths.iter().any(|p| files.contains(&absolute(p))),
+        Ok(e) => {
+            let changes = match e.kind {
+                EventKind::Access(_) | EventKind::Modify(ModifyKind::Metadata(_)) => false,
+                EventKind::Other => false,
+                _ => true,
+            };
+            changes && e.paths.iter().any(|p| files.contains(&absolute(p)))
+        }
         // A lost event (an overflowing queue): reload to be sure.
         Err(_) => true,
     }
