@@ -3,6 +3,8 @@
 
 #![allow(dead_code)]
 
+pub mod cdp;
+
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::TcpStream;
 use std::path::Path;
@@ -116,12 +118,35 @@ pub fn raw(port: u16, request: &str) -> Reply {
     let mut s = TcpStream::connect(("127.0.0.1", port)).unwrap();
     s.set_read_timeout(Some(Duration::from_secs(60))).unwrap();
     s.write_all(request.as_bytes()).unwrap();
+    // Read the head, then the body by its length when it has one (a keep-alive server
+    // such as Chromium's does not close), else to the end.
     let mut all = Vec::new();
-    s.read_to_end(&mut all).unwrap();
-    let split = all
-        .windows(4)
-        .position(|w| w == b"\r\n\r\n")
-        .unwrap_or_else(|| panic!("no header end: {:?}", String::from_utf8_lossy(&all)));
+    let mut buf = [0u8; 65536];
+    let split = loop {
+        if let Some(p) = all.windows(4).position(|w| w == b"\r\n\r\n") {
+            break p;
+        }
+        let n = s.read(&mut buf).unwrap();
+        assert!(n > 0, "no header end: {:?}", String::from_utf8_lossy(&all));
+        all.extend_from_slice(&buf[..n]);
+    };
+    let length = String::from_utf8_lossy(&all[..split])
+        .lines()
+        .filter_map(|l| l.split_once(':'))
+        .find(|(k, _)| k.trim().eq_ignore_ascii_case("content-length"))
+        .and_then(|(_, v)| v.trim().parse::<usize>().ok());
+    match length {
+        Some(n) => {
+            while all.len() < split + 4 + n {
+                let k = s.read(&mut buf).unwrap();
+                assert!(k > 0, "the body ended early");
+                all.extend_from_slice(&buf[..k]);
+            }
+        }
+        None => {
+            s.read_to_end(&mut all).unwrap();
+        }
+    }
     let head = String::from_utf8_lossy(&all[..split]).into_owned();
     let mut lines = head.lines();
     let status = lines.next().unwrap().split(' ').nth(1).unwrap().parse().unwrap();
