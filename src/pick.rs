@@ -154,13 +154,17 @@ mod tests {
         let scene = setup();
         let tracer = Tracer::new(&scene);
         let camera = scene.camera();
-        // Pixel (20, 15)'s centre is 0.5 px right and below the image centre: the ray
-        // is nearly −z; it meets the unit sphere at z ≈ 1, t ≈ 10 − 1 = 9.
+        // Pixel (20, 15)'s centre: dir ∝ (−0.25 + 0.5·20.5/40, 0.175 − 0.35·15.5/30, −1)
+        // = (0.00625, −0.0058333, −1). From the eye 10 away, the ray passes the centre at
+        // b = 10·sin θ = 0.085494 (sin θ = |(0.00625, −0.0058333)| / |dir|), so it meets
+        // the unit sphere at t = 10·cos θ − √(1 − b²) = 9.999635 − 0.996339 = 9.003296.
         let p = pick(&tracer, &camera, 20, 15).unwrap();
         assert_eq!(p.object, "sphere 1");
         assert_eq!(p.index, 0);
-        assert!((p.distance - 9.0).abs() < 1e-3, "{}", p.distance);
-        assert!(p.normal[2] > 0.999, "{:?}", p.normal);
+        assert!((p.distance - 9.003296).abs() < 2e-6, "{}", p.distance);
+        // The normal of the unit sphere is the hit point: z = 10 − t·cos θ = 0.997033.
+        assert!((p.normal[2] - 0.997033).abs() < 2e-6, "{:?}", p.normal);
+        assert_eq!(p.normal, p.point);
         assert_eq!(p.texture.kind, "uniform");
         assert_eq!(p.texture.colors, vec![[0.9, 0.1, 0.1]]);
         assert_eq!((p.material.kd, p.material.kr), (0.7, 0.3));
