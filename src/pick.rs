@@ -183,7 +183,10 @@ mod tests {
         let n = DVec3::from_array(p.normal);
         assert!((n.length() - 1.0).abs() < 1e-9);
         let outward = (DVec3::from_array(p.point) - DVec3::new(1.5, 0.0, 0.0)).normalize();
-        assert!(n.dot(outward) < 0.9999, "bump changed nothing: {n} vs {outward}");
+        assert!(
+            n.dot(outward) < 0.9999,
+            "bump changed nothing: {n} vs {outward}"
+        );
         // The bottom row looks down past the spheres onto the floor: plane 1.
         let p = pick(&tracer, &camera, 5, 29).unwrap();
         assert_eq!(p.object, "plane 1");

@@ -102,7 +102,15 @@ fn decode(mut stream: &[u8]) -> Seen {
                 let n = p.i32() as usize;
                 let channels: Vec<String> = (0..n).map(|_| p.string()).collect();
                 let data = vec![vec![0.0; w * h]; n];
-                seen.images.insert(name.clone(), Image { width: w, height: h, channels, data });
+                seen.images.insert(
+                    name.clone(),
+                    Image {
+                        width: w,
+                        height: h,
+                        channels,
+                        data,
+                    },
+                );
                 seen.packets.push((kind, name));
             }
             // UpdateImage (v1 one channel, v2 several, v3 with offsets and strides).
@@ -111,7 +119,12 @@ fn decode(mut stream: &[u8]) -> Seen {
                 let name = p.string();
                 let n = if kind >= 5 { p.i32() as usize } else { 1 };
                 let names: Vec<String> = (0..n).map(|_| p.string()).collect();
-                let (x, y, w, h) = (p.i32() as usize, p.i32() as usize, p.i32() as usize, p.i32() as usize);
+                let (x, y, w, h) = (
+                    p.i32() as usize,
+                    p.i32() as usize,
+                    p.i32() as usize,
+                    p.i32() as usize,
+                );
                 let pixels = w * h;
                 let (offsets, strides): (Vec<usize>, Vec<usize>) = if kind == 6 {
                     let o = (0..n).map(|_| p.i64() as usize).collect();
@@ -120,14 +133,20 @@ fn decode(mut stream: &[u8]) -> Seen {
                 } else {
                     ((0..n).map(|c| c * pixels).collect(), vec![1; n])
                 };
-                let floats: Vec<f32> = p
-                    .0
-                    .chunks_exact(4)
-                    .map(|b| f32::from_le_bytes(b.try_into().unwrap()))
-                    .collect();
-                let img = seen.images.get_mut(&name).expect("UpdateImage of an image never created");
+                let floats: Vec<f32> =
+                    p.0.chunks_exact(4)
+                        .map(|b| f32::from_le_bytes(b.try_into().unwrap()))
+                        .collect();
+                let img = seen
+                    .images
+                    .get_mut(&name)
+                    .expect("UpdateImage of an image never created");
                 for (c, cname) in names.iter().enumerate() {
-                    let ci = img.channels.iter().position(|k| k == cname).expect("a known channel");
+                    let ci = img
+                        .channels
+                        .iter()
+                        .position(|k| k == cname)
+                        .expect("a known channel");
                     for k in 0..pixels {
                         let (i, j) = (x + k % w, y + k / w);
                         img.data[ci][j * img.width + i] = floats[offsets[c] + k * strides[c]];
@@ -175,16 +194,26 @@ fn raytrace_streams_rows_that_reassemble_to_the_raw_file() {
         .current_dir(dir.path())
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let raw = std::fs::read(dir.path().join("x.raw")).unwrap();
     let seen = decode(&got.join().unwrap());
     let img = seen.images.values().next().expect("an image");
     assert_eq!((img.width, img.height, seen.images.len()), (97, 61, 1));
-    assert!(img.rgb() == raw, "the reassembled frame differs from the .raw");
+    assert!(
+        img.rgb() == raw,
+        "the reassembled frame differs from the .raw"
+    );
     // Streamed as it renders: several bands of rows, after one CreateImage.
     let kinds: Vec<u8> = seen.packets.iter().map(|p| p.0).collect();
     assert_eq!(&kinds[..2], &[2, 4]);
-    assert!(kinds[2..].iter().all(|&k| k == 6) && kinds.len() - 2 == 4, "{kinds:?}");
+    assert!(
+        kinds[2..].iter().all(|&k| k == 6) && kinds.len() - 2 == 4,
+        "{kinds:?}"
+    );
 }
 
 #[test]
@@ -197,7 +226,11 @@ fn animate_sends_every_frame() {
         .args(["--display", &format!("tev=127.0.0.1:{port}")])
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     let seen = decode(&got.join().unwrap());
     let frames: Vec<&[u8]> = out.stdout.chunks(64 * 48 * 3).collect();
     assert_eq!(frames.len(), 4);
@@ -206,7 +239,10 @@ fn animate_sends_every_frame() {
     sent.sort();
     let mut want: Vec<Vec<u8>> = frames.iter().map(|f| f.to_vec()).collect();
     want.sort();
-    assert!(sent == want, "the frames tev received are not animate's frames");
+    assert!(
+        sent == want,
+        "the frames tev received are not animate's frames"
+    );
 }
 
 #[test]
@@ -217,7 +253,10 @@ fn tevclient_packets_decode_the_same() {
         .map(|o| o.status.success())
         .unwrap_or(false);
     if !python {
-        assert!(std::env::var_os("CI").is_none(), "CI must install tevclient and numpy");
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI must install tevclient and numpy"
+        );
         eprintln!("skipped: python3 with tevclient and numpy not found");
         return;
     }
@@ -243,21 +282,41 @@ fn tevclient_packets_decode_the_same() {
         .current_dir(dir.path())
         .output()
         .unwrap();
-    assert!(ran.status.success(), "{}", String::from_utf8_lossy(&ran.stderr));
+    assert!(
+        ran.status.success(),
+        "{}",
+        String::from_utf8_lossy(&ran.stderr)
+    );
     let seen = decode(&got.join().unwrap());
-    assert!(seen.images["x"].rgb() == raw, "tevclient's image decodes to other bytes");
+    assert!(
+        seen.images["x"].rgb() == raw,
+        "tevclient's image decodes to other bytes"
+    );
     // tevclient tiles by 128×128: this 97×61 image is one UpdateImage v3, as ours are.
-    assert_eq!(seen.packets.iter().map(|p| p.0).collect::<Vec<_>>(), vec![4, 6]);
+    assert_eq!(
+        seen.packets.iter().map(|p| p.0).collect::<Vec<_>>(),
+        vec![4, 6]
+    );
 }
 
 #[test]
 fn a_missing_viewer_is_one_warning() {
     let dir = tempfile::tempdir().unwrap();
     let scene = scene_file(dir.path());
-    let port = TcpListener::bind("127.0.0.1:0").unwrap().local_addr().unwrap().port();
+    let port = TcpListener::bind("127.0.0.1:0")
+        .unwrap()
+        .local_addr()
+        .unwrap()
+        .port();
     let out = raytrace()
         .arg(&scene)
-        .args(["-o", "x.png", "-q", "--display", &format!("tev=127.0.0.1:{port}")])
+        .args([
+            "-o",
+            "x.png",
+            "-q",
+            "--display",
+            &format!("tev=127.0.0.1:{port}"),
+        ])
         .current_dir(dir.path())
         .output()
         .unwrap();
@@ -265,7 +324,16 @@ fn a_missing_viewer_is_one_warning() {
     assert!(dir.path().join("x.png").exists());
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(err.lines().count(), 1, "{err}");
-    assert!(err.starts_with(&format!("raytrace: warning: no tev viewer at 127.0.0.1:{port}")), "{err}");
-    let bad = raytrace().arg(&scene).args(["--display", "x11"]).output().unwrap();
+    assert!(
+        err.starts_with(&format!(
+            "raytrace: warning: no tev viewer at 127.0.0.1:{port}"
+        )),
+        "{err}"
+    );
+    let bad = raytrace()
+        .arg(&scene)
+        .args(["--display", "x11"])
+        .output()
+        .unwrap();
     assert_eq!(bad.status.code(), Some(2));
 }

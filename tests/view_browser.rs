@@ -33,10 +33,6 @@ fn shot(b: &mut Browser, name: &str) {
     std::fs::write(dir.join(name), b.screenshot()).unwrap();
 }
 
-fn shown(b: &mut Browser) -> String {
-    b.eval("document.body.dataset.shown || ''").as_str().unwrap().to_string()
-}
-
 fn picture(b: &mut Browser) -> String {
     b.eval(PICTURE).as_str().unwrap_or("").to_string()
 }
@@ -46,7 +42,11 @@ fn the_page_in_chromium() {
     let Some(binary) = chromium() else { return };
     let (dir, manifest) = project(&circle_manifest("\n[render]\nwidth = 320\nheight = 240\n"));
     // Frames 0-3 rendered: the strip shows them up to date, then stale after the edit.
-    render_into(&manifest, &dir.path().join("frames"), &["--frames", "0-3", "-q"]);
+    render_into(
+        &manifest,
+        &dir.path().join("frames"),
+        &["--frames", "0-3", "-q"],
+    );
     let v = Viewer::start(&manifest, &[]);
     let mut b = Browser::start(&binary, 900, 720);
     b.navigate(&v.url);
@@ -56,9 +56,18 @@ fn the_page_in_chromium() {
     let log = b.eval("JSON.stringify(view.log.filter(e => e.kind === 'shown').map(e => e.scale))");
     assert_eq!(log, "[4,1]", "the quarter size comes first");
     assert_eq!(picture(&mut b).split(':').next(), Some("320x240"));
-    b.wait_for("document.querySelectorAll('#strip .cell').length === 12", 5 * SECOND);
+    b.wait_for(
+        "document.querySelectorAll('#strip .cell').length === 12",
+        5 * SECOND,
+    );
     let strip = b.eval("[...document.querySelectorAll('#strip .cell')].map(c => c.className.split(' ')[1]).join(',')");
-    assert!(strip.as_str().unwrap().starts_with("s-up-to-date,s-up-to-date,s-up-to-date,s-up-to-date,s-missing"), "{strip}");
+    assert!(
+        strip
+            .as_str()
+            .unwrap()
+            .starts_with("s-up-to-date,s-up-to-date,s-up-to-date,s-up-to-date,s-missing"),
+        "{strip}"
+    );
     shot(&mut b, "loaded.png");
 
     // The slider: frame 7, its number and another picture.
@@ -66,7 +75,10 @@ fn the_page_in_chromium() {
     b.eval("(() => { const s = document.getElementById('slider'); s.value = 7; s.dispatchEvent(new Event('input')); })()");
     b.wait_for("document.body.dataset.shown === '1:7:1'", 5 * SECOND);
     assert_eq!(b.eval("document.getElementById('frameNo').value"), "7");
-    assert_eq!(b.eval("document.getElementById('count').textContent"), "7 / 11");
+    assert_eq!(
+        b.eval("document.getElementById('count').textContent"),
+        "7 / 11"
+    );
     let p7 = picture(&mut b);
     assert_ne!(p0, p7, "the slider moved but the picture did not change");
 
@@ -76,11 +88,20 @@ fn the_page_in_chromium() {
     b.key("ArrowLeft", "ArrowLeft", 37);
     b.wait_for("document.body.dataset.shown === '1:7:1'", 5 * SECOND);
     b.key(" ", "Space", 32);
-    b.wait_for("view.playing && Number(document.body.dataset.frame) >= 10", 5 * SECOND);
+    b.wait_for(
+        "view.playing && Number(document.body.dataset.frame) >= 10",
+        5 * SECOND,
+    );
     b.key(" ", "Space", 32);
     b.wait_for("!view.playing", SECOND);
-    let f = b.eval("Number(document.body.dataset.frame)").as_u64().unwrap();
-    b.wait_for(&format!("document.body.dataset.shown === '1:{f}:1'"), 5 * SECOND);
+    let f = b
+        .eval("Number(document.body.dataset.frame)")
+        .as_u64()
+        .unwrap();
+    b.wait_for(
+        &format!("document.body.dataset.shown === '1:{f}:1'"),
+        5 * SECOND,
+    );
     // Back to 7 with the number field.
     b.eval("(() => { const n = document.getElementById('frameNo'); n.value = 7; n.dispatchEvent(new Event('change')); })()");
     b.wait_for("document.body.dataset.shown === '1:7:1'", 5 * SECOND);
@@ -93,24 +114,40 @@ fn the_page_in_chromium() {
     println!("edit → whole frame on the page: {:?}", written.elapsed());
     assert_ne!(picture(&mut b), p7, "the edit did not change the picture");
     // The strip learns that frames 0-3 are stale now.
-    b.wait_for("document.querySelector('#strip .cell').classList.contains('s-stale')", 5 * SECOND);
+    b.wait_for(
+        "document.querySelector('#strip .cell').classList.contains('s-stale')",
+        5 * SECOND,
+    );
     shot(&mut b, "edited.png");
 
     // A broken manifest: its file:line:column over the last good frame.
     let p_good = picture(&mut b);
     std::fs::write(&manifest, good.replace("radius = 8.0", "radius = \"wide\"")).unwrap();
-    let text = b.wait_for("!document.getElementById('error').hidden && document.getElementById('error').textContent", 2 * SECOND);
+    let text = b.wait_for(
+        "!document.getElementById('error').hidden && document.getElementById('error').textContent",
+        2 * SECOND,
+    );
     let text = text.as_str().unwrap();
-    assert!(text.starts_with("animate: ") && text.contains("anim.toml:8:10: "), "{text}");
+    assert!(
+        text.starts_with("animate: ") && text.contains("anim.toml:8:10: "),
+        "{text}"
+    );
     let cli = animate().arg("status").arg(&manifest).output().unwrap();
-    assert_eq!(text, String::from_utf8_lossy(&cli.stderr).lines().next().unwrap());
+    assert_eq!(
+        text,
+        String::from_utf8_lossy(&cli.stderr).lines().next().unwrap()
+    );
     assert_eq!(picture(&mut b), p_good, "the last good frame must stay");
     shot(&mut b, "error.png");
     // Fixed: the error goes.
     std::fs::write(&manifest, &good).unwrap();
     b.wait_for("document.getElementById('error').hidden", 2 * SECOND);
     b.wait_for("document.body.dataset.shown === '4:7:1'", 2 * SECOND);
-    assert_eq!(picture(&mut b), p7, "the fixed manifest draws the first picture again");
+    assert_eq!(
+        picture(&mut b),
+        p7,
+        "the fixed manifest draws the first picture again"
+    );
 
     // A click on a strip cell shows that frame.
     b.eval("document.querySelectorAll('#strip .cell')[2].dispatchEvent(new MouseEvent('click'))");
@@ -122,7 +159,10 @@ fn the_page_in_chromium() {
     'scan: for y in (0..h).step_by(12) {
         for x in (0..w).step_by(12) {
             let (_, p) = v.json(&format!("/api/pick?n=2&x={x}&y={y}"));
-            if let Some(name) = p["hit"]["object"].as_str().filter(|n| n.starts_with("sphere")) {
+            if let Some(name) = p["hit"]["object"]
+                .as_str()
+                .filter(|n| n.starts_with("sphere"))
+            {
                 target = Some((x, y, name.to_string()));
                 break 'scan;
             }
@@ -130,16 +170,28 @@ fn the_page_in_chromium() {
     }
     let (x, y, name) = target.expect("a sphere in frame 2");
     let rect: Value = serde_json::from_str(
-        b.eval("JSON.stringify(document.getElementById('frame').getBoundingClientRect())").as_str().unwrap(),
+        b.eval("JSON.stringify(document.getElementById('frame').getBoundingClientRect())")
+            .as_str()
+            .unwrap(),
     )
     .unwrap();
-    let (left, top, width) = (rect["left"].as_f64().unwrap(), rect["top"].as_f64().unwrap(), rect["width"].as_f64().unwrap());
+    let (left, top, width) = (
+        rect["left"].as_f64().unwrap(),
+        rect["top"].as_f64().unwrap(),
+        rect["width"].as_f64().unwrap(),
+    );
     let k = width / f64::from(w);
-    b.click(left + (f64::from(x) + 0.5) * k, top + (f64::from(y) + 0.5) * k);
+    b.click(
+        left + (f64::from(x) + 0.5) * k,
+        top + (f64::from(y) + 0.5) * k,
+    );
     let said = b.wait_for("document.getElementById('pickName').textContent.startsWith('sphere') && document.getElementById('pickName').textContent", 5 * SECOND);
     assert_eq!(said, name.as_str());
     let info = b.eval("document.getElementById('pickInfo').textContent");
-    assert!(info.as_str().unwrap().contains("distance") && info.as_str().unwrap().contains("Kd"), "{info}");
+    assert!(
+        info.as_str().unwrap().contains("distance") && info.as_str().unwrap().contains("Kd"),
+        "{info}"
+    );
     shot(&mut b, "pick.png");
 }
 
@@ -164,14 +216,26 @@ fn measure_the_orbit() {
     let mut b = Browser::start(&binary, 900, 800);
     b.navigate(&v.url);
     b.wait_for("document.body.dataset.shown === '1:0:1'", 20 * SECOND);
-    let now_ms = || std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).unwrap().as_millis() as f64;
+    let now_ms = || {
+        std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .unwrap()
+            .as_millis() as f64
+    };
     let (mut quarter, mut whole) = (Vec::new(), Vec::new());
     for k in 0..20u32 {
         let gen = 2 + k;
         let radius = if k % 2 == 0 { "12.5" } else { "12.0" };
         let t0 = now_ms();
-        std::fs::write(&manifest, text.replace("radius = 12.0", &format!("radius = {radius}"))).unwrap();
-        b.wait_for(&format!("document.body.dataset.shown === '{gen}:0:1'"), 10 * SECOND);
+        std::fs::write(
+            &manifest,
+            text.replace("radius = 12.0", &format!("radius = {radius}")),
+        )
+        .unwrap();
+        b.wait_for(
+            &format!("document.body.dataset.shown === '{gen}:0:1'"),
+            10 * SECOND,
+        );
         let times: Value = b.eval(&format!(
             "view.log.filter(e => e.kind === 'shown' && e.gen === {gen}).map(e => [e.scale, e.t])"
         ));
@@ -188,8 +252,16 @@ fn measure_the_orbit() {
         v[v.len() / 2]
     };
     assert_eq!((quarter.len(), whole.len()), (20, 20));
-    println!("save → quarter frame: median {:.0} ms of 20 {:?}", median(&mut quarter), quarter);
-    println!("save → whole frame:   median {:.0} ms of 20 {:?}", median(&mut whole), whole);
+    println!(
+        "save → quarter frame: median {:.0} ms of 20 {:?}",
+        median(&mut quarter),
+        quarter
+    );
+    println!(
+        "save → whole frame:   median {:.0} ms of 20 {:?}",
+        median(&mut whole),
+        whole
+    );
     b.key(" ", "Space", 32);
     std::thread::sleep(Duration::from_secs(8));
     let fps = b.eval("view.fps").as_f64().unwrap();

@@ -67,7 +67,10 @@ fn no_file_of_the_disk_is_served() {
     }
     // The page's assets come from the binary.
     let js = v.get("/app.js");
-    assert_eq!((js.status, js.header("content-type")), (200, Some("text/javascript; charset=utf-8")));
+    assert_eq!(
+        (js.status, js.header("content-type")),
+        (200, Some("text/javascript; charset=utf-8"))
+    );
     assert!(js.text().contains("/api/wait"));
     assert_eq!(v.get("/app.css").status, 200);
     let post = raw(
@@ -81,18 +84,45 @@ fn no_file_of_the_disk_is_served() {
 fn bad_parameters_get_400_and_a_reason() {
     let (_dir, _m, v) = viewer("");
     for (target, reason) in [
-        ("/api/frame?n=12", "`n` = 12 is out of range: expected 0 to 11"),
+        (
+            "/api/frame?n=12",
+            "`n` = 12 is out of range: expected 0 to 11",
+        ),
         ("/api/frame?n=-1", "`n` = \"-1\" is not a whole number"),
-        ("/api/frame?n=three", "`n` = \"three\" is not a whole number"),
+        (
+            "/api/frame?n=three",
+            "`n` = \"three\" is not a whole number",
+        ),
         ("/api/frame", "missing parameter `n`"),
-        ("/api/frame?n=1&scale=0", "`scale` = 0 is out of range: expected 1 to 64"),
-        ("/api/frame?n=1&scale=65", "`scale` = 65 is out of range: expected 1 to 64"),
-        ("/api/frame?n=1&scale=2.5", "`scale` = \"2.5\" is not a whole number"),
-        ("/api/frame?n=1&format=gif", "`format` = \"gif\": expected png or raw"),
-        ("/api/frame?n=1&client=%3Cx%3E", "`client` must be 1 to 64 letters, digits or -"),
-        ("/api/pick?n=0&x=64&y=0", "`x` = 64 is out of range: expected 0 to 63"),
+        (
+            "/api/frame?n=1&scale=0",
+            "`scale` = 0 is out of range: expected 1 to 64",
+        ),
+        (
+            "/api/frame?n=1&scale=65",
+            "`scale` = 65 is out of range: expected 1 to 64",
+        ),
+        (
+            "/api/frame?n=1&scale=2.5",
+            "`scale` = \"2.5\" is not a whole number",
+        ),
+        (
+            "/api/frame?n=1&format=gif",
+            "`format` = \"gif\": expected png or raw",
+        ),
+        (
+            "/api/frame?n=1&client=%3Cx%3E",
+            "`client` must be 1 to 64 letters, digits or -",
+        ),
+        (
+            "/api/pick?n=0&x=64&y=0",
+            "`x` = 64 is out of range: expected 0 to 63",
+        ),
         ("/api/pick?n=0&x=1", "missing parameter `y`"),
-        ("/api/wait?since=soon", "`since` = \"soon\" is not a whole number"),
+        (
+            "/api/wait?since=soon",
+            "`since` = \"soon\" is not a whole number",
+        ),
     ] {
         let (status, body) = v.json(target);
         assert_eq!(status, 400, "{target}: {body}");
@@ -113,10 +143,15 @@ fn the_whole_frame_is_the_frame_animate_writes() {
     let r = v.get("/api/frame?n=5&scale=1&format=raw&client=t");
     assert_eq!(r.status, 200, "{}", r.text());
     assert_eq!(r.header("x-size"), Some("64x48"));
-    assert!(r.body == out.stdout, "the served frame 5 differs from animate's");
+    assert!(
+        r.body == out.stdout,
+        "the served frame 5 differs from animate's"
+    );
     // The PNG the page shows holds the pixels of the PNG file animate writes.
     render_into(&manifest, &dir.path().join("frames"), &["--frames", "5"]);
-    let written = image::open(dir.path().join("frames/frame_0005.png")).unwrap().to_rgb8();
+    let written = image::open(dir.path().join("frames/frame_0005.png"))
+        .unwrap()
+        .to_rgb8();
     let r = v.get("/api/frame?n=5&client=t");
     assert_eq!(r.header("content-type"), Some("image/png"));
     let shown = image::load_from_memory(&r.body).unwrap().to_rgb8();
@@ -154,15 +189,27 @@ fn a_hundred_requests_at_once() {
                 })
             })
             .collect();
-        threads.into_iter().map(|t| t.join().unwrap()).collect::<Vec<u16>>()
+        threads
+            .into_iter()
+            .map(|t| t.join().unwrap())
+            .collect::<Vec<u16>>()
     };
     let first = wave(0);
-    assert!(first.iter().all(|s| [200, 409, 503].contains(s)), "{first:?}");
-    assert!(first.iter().filter(|&&s| s == 200).count() >= 50, "{first:?}");
+    assert!(
+        first.iter().all(|s| [200, 409, 503].contains(s)),
+        "{first:?}"
+    );
+    assert!(
+        first.iter().filter(|&&s| s == 200).count() >= 50,
+        "{first:?}"
+    );
     let after_one = v.rss_kib();
     for salt in 1..4 {
         let statuses = wave(salt);
-        assert!(statuses.iter().all(|s| [200, 409, 503].contains(s)), "{statuses:?}");
+        assert!(
+            statuses.iter().all(|s| [200, 409, 503].contains(s)),
+            "{statuses:?}"
+        );
     }
     let after_four = v.rss_kib();
     assert!(
@@ -192,7 +239,11 @@ fn a_newer_request_supersedes_an_older_one() {
     // Another client is not held up by this one's queue.
     let other = send("/api/frame?n=3&scale=8&client=other".into());
     assert_eq!(slow.join().unwrap(), 200);
-    assert_eq!(older.join().unwrap(), 409, "the older request was rendered anyway");
+    assert_eq!(
+        older.join().unwrap(),
+        409,
+        "the older request was rendered anyway"
+    );
     assert_eq!(newer.join().unwrap(), 200);
     assert_eq!(other.join().unwrap(), 200);
 }
@@ -237,9 +288,16 @@ fn the_scene_file_is_watched_and_may_vanish() {
     std::fs::remove_file(&scene).unwrap();
     let s = v.wait_state(Duration::from_secs(2), |s| !s["error"].is_null());
     let e = s["error"].as_str().unwrap();
-    assert!(e.starts_with("animate: ") && e.contains("anim.toml:1:9: scene: cannot read"), "{e}");
+    assert!(
+        e.starts_with("animate: ") && e.contains("anim.toml:1:9: scene: cannot read"),
+        "{e}"
+    );
     let r = v.get("/api/frame?n=0&format=raw&client=d");
-    assert_eq!((r.status, &r.body), (200, &before), "the last good frame stays");
+    assert_eq!(
+        (r.status, &r.body),
+        (200, &before),
+        "the last good frame stays"
+    );
     // Back, with a brighter light: the error clears and the frame follows the file.
     std::fs::write(&scene, text.replace("0.9\n-6", "0.3\n-6")).unwrap();
     v.wait_state(Duration::from_secs(2), |s| s["error"].is_null());
@@ -247,7 +305,10 @@ fn the_scene_file_is_watched_and_may_vanish() {
     // A scene edit that breaks it: located in the scene file.
     std::fs::write(&scene, text.replacen("1.0  -1.3", "-1.0  -1.3", 1)).unwrap();
     let s = v.wait_state(Duration::from_secs(2), |s| !s["error"].is_null());
-    assert!(s["error"].as_str().unwrap().contains("scene.txt:6:1"), "{s}");
+    assert!(
+        s["error"].as_str().unwrap().contains("scene.txt:6:1"),
+        "{s}"
+    );
 }
 
 #[test]
@@ -255,7 +316,11 @@ fn ctrl_c_ends_it_with_130() {
     let (_dir, _m, mut v) = viewer("");
     assert_eq!(v.get("/api/state").status, 200);
     let pid = v.child.id().to_string();
-    assert!(std::process::Command::new("kill").args(["-INT", &pid]).status().unwrap().success());
+    assert!(std::process::Command::new("kill")
+        .args(["-INT", &pid])
+        .status()
+        .unwrap()
+        .success());
     let status = v.child.wait().unwrap();
     assert_eq!(status.code(), Some(130));
 }
@@ -277,6 +342,11 @@ fn a_missing_manifest_or_a_busy_port_is_bad_input() {
         .args(["--port", &v.port.to_string()])
         .output()
         .unwrap();
-    assert_eq!(out.status.code(), Some(2), "{}", String::from_utf8_lossy(&out.stderr));
+    assert_eq!(
+        out.status.code(),
+        Some(2),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     assert!(String::from_utf8_lossy(&out.stderr).contains("cannot listen on 127.0.0.1:"));
 }

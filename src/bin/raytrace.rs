@@ -7,9 +7,9 @@ use anyhow::Context;
 use clap::Parser;
 use std::path::PathBuf;
 use std::process::ExitCode;
+use whitted::display::{Display, Tev};
 use whitted::exit::Outcome;
 use whitted::output::{check_target, write_atomic, ImageFormat, OutputError};
-use whitted::display::{Display, Tev};
 use whitted::render::render_observed;
 use whitted::{render, trace::Tracer, Scene, SceneError};
 

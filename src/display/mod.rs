@@ -34,9 +34,10 @@ impl std::str::FromStr for Display {
     fn from_str(s: &str) -> Result<Display, String> {
         match s.split_once('=') {
             None if s == "tev" => Ok(Display::Tev(TEV_DEFAULT.into())),
-            Some(("tev", addr)) if addr.rsplit_once(':').is_some_and(|(h, p)| {
-                !h.is_empty() && p.parse::<u16>().is_ok()
-            }) =>
+            Some(("tev", addr))
+                if addr
+                    .rsplit_once(':')
+                    .is_some_and(|(h, p)| !h.is_empty() && p.parse::<u16>().is_ok()) =>
             {
                 Ok(Display::Tev(addr.into()))
             }
@@ -83,7 +84,10 @@ impl Tev {
 
     /// A `Tev` that warns on standard error, prefixed with the program's name.
     pub fn connect_stderr(addr: &str, program: &'static str) -> Tev {
-        Tev::connect(addr, Box::new(move |m| eprintln!("{program}: warning: {m}")))
+        Tev::connect(
+            addr,
+            Box::new(move |m| eprintln!("{program}: warning: {m}")),
+        )
     }
 
     /// Whether packets still go somewhere.
@@ -110,7 +114,13 @@ impl Tev {
     /// Opens (or replaces) image `name` of `width`×`height`, channels R G B.
     pub fn create(&self, name: &str, width: u32, height: u32) {
         self.send(&packet::close_image(name));
-        self.send(&packet::create_image(name, true, width, height, &["R", "G", "B"]));
+        self.send(&packet::create_image(
+            name,
+            true,
+            width,
+            height,
+            &["R", "G", "B"],
+        ));
     }
 
     /// Sends the rows `y0..` of image `name` (`rgb`: whole rows of `width` pixels), in
@@ -172,6 +182,10 @@ mod tests {
         tev.rows("x", 2, 0, &[0; 12]);
         let said = said.lock().unwrap();
         assert_eq!(said.len(), 1, "{said:?}");
-        assert!(said[0].starts_with("no tev viewer at 127.0.0.1:"), "{}", said[0]);
+        assert!(
+            said[0].starts_with("no tev viewer at 127.0.0.1:"),
+            "{}",
+            said[0]
+        );
     }
 }

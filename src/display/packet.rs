@@ -77,7 +77,13 @@ impl Out {
 }
 
 /// CreateImage: an image `name` of `width`×`height` with the given channels.
-pub fn create_image(name: &str, grab_focus: bool, width: u32, height: u32, channels: &[&str]) -> Vec<u8> {
+pub fn create_image(
+    name: &str,
+    grab_focus: bool,
+    width: u32,
+    height: u32,
+    channels: &[&str],
+) -> Vec<u8> {
     let mut p = Out::new(kind::CREATE_IMAGE)
         .bool(grab_focus)
         .str(name)
@@ -93,14 +99,15 @@ pub fn create_image(name: &str, grab_focus: bool, width: u32, height: u32, chann
 /// UpdateImage (v3): the `width`×`height` rectangle at (x, y) of image `name`, from
 /// interleaved RGB bytes (`rgb.len()` = width·height·3), as floats `byte_to_float`.
 pub fn update_rgb(name: &str, x: u32, y: u32, width: u32, height: u32, rgb: &[u8]) -> Vec<u8> {
-    let mut p = Out::new(kind::UPDATE_IMAGE_V3)
-        .bool(false)
-        .str(name)
-        .i32(3);
+    let mut p = Out::new(kind::UPDATE_IMAGE_V3).bool(false).str(name).i32(3);
     for c in ["R", "G", "B"] {
         p = p.str(c);
     }
-    p = p.i32(x as i32).i32(y as i32).i32(width as i32).i32(height as i32);
+    p = p
+        .i32(x as i32)
+        .i32(y as i32)
+        .i32(width as i32)
+        .i32(height as i32);
     for offset in 0..3 {
         p = p.i64(offset);
     }

@@ -33,7 +33,14 @@ pub fn render_observed(
     let band = band.max(1) as usize;
     let mut count = RayCount::default();
     if row_len == 0 {
-        return (Frame { width, height, pixels }, count);
+        return (
+            Frame {
+                width,
+                height,
+                pixels,
+            },
+            count,
+        );
     }
     for (b, rows) in pixels.chunks_mut(row_len * band).enumerate() {
         let j0 = b * band;
@@ -53,7 +60,14 @@ pub fn render_observed(
                 .reduce(RayCount::default, |a, b| a + b);
         observe(j0 as u32, rows);
     }
-    (Frame { width, height, pixels }, count)
+    (
+        Frame {
+            width,
+            height,
+            pixels,
+        },
+        count,
+    )
 }
 
 #[cfg(test)]

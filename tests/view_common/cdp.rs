@@ -71,8 +71,14 @@ impl Browser {
         let mut line = String::new();
         let port = loop {
             line.clear();
-            assert!(err.read_line(&mut line).unwrap() > 0, "chromium ended before DevTools");
-            if let Some(rest) = line.trim().strip_prefix("DevTools listening on ws://127.0.0.1:") {
+            assert!(
+                err.read_line(&mut line).unwrap() > 0,
+                "chromium ended before DevTools"
+            );
+            if let Some(rest) = line
+                .trim()
+                .strip_prefix("DevTools listening on ws://127.0.0.1:")
+            {
                 break rest.split('/').next().unwrap().parse::<u16>().unwrap();
             }
         };
@@ -136,7 +142,11 @@ impl Browser {
             "Runtime.evaluate",
             json!({"expression": expr, "returnByValue": true, "awaitPromise": true}),
         );
-        assert!(r["exceptionDetails"].is_null(), "{expr}: {}", r["exceptionDetails"]);
+        assert!(
+            r["exceptionDetails"].is_null(),
+            "{expr}: {}",
+            r["exceptionDetails"]
+        );
         r["result"]["value"].clone()
     }
 
@@ -148,7 +158,10 @@ impl Browser {
             if !(v.is_null() || v == json!(false) || v == json!("") || v == json!(0)) {
                 return v;
             }
-            assert!(start.elapsed() < limit, "still false after {limit:?}: {expr}");
+            assert!(
+                start.elapsed() < limit,
+                "still false after {limit:?}: {expr}"
+            );
             std::thread::sleep(Duration::from_millis(10));
         }
     }
@@ -196,7 +209,10 @@ fn base64(s: &str) -> Vec<u8> {
         b'/' => 63,
         _ => panic!("not base64: {c}"),
     };
-    let bytes: Vec<u8> = s.bytes().filter(|&c| c != b'=' && !c.is_ascii_whitespace()).collect();
+    let bytes: Vec<u8> = s
+        .bytes()
+        .filter(|&c| c != b'=' && !c.is_ascii_whitespace())
+        .collect();
     let mut out = Vec::with_capacity(bytes.len() * 3 / 4);
     for chunk in bytes.chunks(4) {
         let mut acc = 0u32;

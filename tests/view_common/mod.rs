@@ -35,7 +35,10 @@ impl Viewer {
             .read_line(&mut line)
             .unwrap();
         let url = line.trim().to_string();
-        assert!(url.starts_with("http://127.0.0.1:"), "no URL printed: {url:?}");
+        assert!(
+            url.starts_with("http://127.0.0.1:"),
+            "no URL printed: {url:?}"
+        );
         let port = url
             .trim_end_matches('/')
             .rsplit(':')
@@ -149,7 +152,14 @@ pub fn raw(port: u16, request: &str) -> Reply {
     }
     let head = String::from_utf8_lossy(&all[..split]).into_owned();
     let mut lines = head.lines();
-    let status = lines.next().unwrap().split(' ').nth(1).unwrap().parse().unwrap();
+    let status = lines
+        .next()
+        .unwrap()
+        .split(' ')
+        .nth(1)
+        .unwrap()
+        .parse()
+        .unwrap();
     let headers: Vec<(String, String)> = lines
         .filter_map(|l| l.split_once(':'))
         .map(|(k, v)| (k.trim().to_string(), v.trim().to_string()))

@@ -47,12 +47,14 @@ struct Slot {
 }
 
 type Key = (u64, u32, u32, Encoding);
+/// A cached frame: its key, bytes and size.
+type Entry = (Key, Arc<Vec<u8>>, u32, u32);
 
 /// The frame service: client slots and the cache.
 #[derive(Default)]
 pub struct Frames {
     clients: Mutex<HashMap<String, Arc<Slot>>>,
-    cache: Mutex<VecDeque<(Key, Arc<Vec<u8>>, u32, u32)>>,
+    cache: Mutex<VecDeque<Entry>>,
 }
 
 /// The size of a project's frames at 1/scale (at least one pixel a side).
@@ -82,10 +84,8 @@ pub fn draw(
         Encoding::Raw => image.pixels,
         Encoding::Png => {
             let mut out = Vec::new();
-            encode(&image, ImageFormat::Png, &mut out).map_err(|e| AnimError::Write {
-                frame,
-                source: e,
-            })?;
+            encode(&image, ImageFormat::Png, &mut out)
+                .map_err(|e| AnimError::Write { frame, source: e })?;
             out
         }
     };

@@ -113,9 +113,7 @@ fn absolute(path: &Path) -> PathBuf {
         Some(p) if !p.as_os_str().is_empty() => p.to_path_buf(),
         _ => PathBuf::from("."),
     };
-    std::fs::canonicalize(&parent)
-        .unwrap_or(parent)
-        .join(name)
+    std::fs::canonicalize(&parent).unwrap_or(parent).join(name)
 }
 
 /// Watches the folders of the live project's files and reloads it on every change, on a
@@ -154,11 +152,12 @@ fn touches(event: &notify::Result<notify::Event>, files: &BTreeSet<PathBuf>) -> 
     use notify::event::{EventKind, ModifyKind};
     match event {
         Ok(e) => {
-            let changes = match e.kind {
-                EventKind::Access(_) | EventKind::Modify(ModifyKind::Metadata(_)) => false,
-                EventKind::Other => false,
-                _ => true,
-            };
+            let changes = !matches!(
+                e.kind,
+                EventKind::Access(_)
+                    | EventKind::Modify(ModifyKind::Metadata(_))
+                    | EventKind::Other
+            );
             changes && e.paths.iter().any(|p| files.contains(&absolute(p)))
         }
         // A lost event (an overflowing queue): reload to be sure.

@@ -80,8 +80,8 @@ impl ViewError {
 }
 
 fn respond(request: tiny_http::Request, reply: Reply) {
-    let mut response = tiny_http::Response::from_data(reply.body.as_slice())
-        .with_status_code(reply.status);
+    let mut response =
+        tiny_http::Response::from_data(reply.body.as_slice()).with_status_code(reply.status);
     let mut headers = vec![
         ("Content-Type", reply.content_type.to_string()),
         ("Cache-Control", "no-store".to_string()),
@@ -189,7 +189,10 @@ pub fn serve(
             continue;
         }
         if let Err(mpsc::TrySendError::Full(request)) = tx.try_send(request) {
-            respond(request, Reply::error(503, "busy: too many requests at once, retry"));
+            respond(
+                request,
+                Reply::error(503, "busy: too many requests at once, retry"),
+            );
         }
     }
 }

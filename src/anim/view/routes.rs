@@ -104,7 +104,7 @@ fn param<'q>(query: &'q str, key: &str) -> Option<&'q str> {
         .filter_map(|kv| kv.split_once('=').or(Some((kv, ""))))
         .filter(|(k, _)| *k == key)
         .map(|(_, v)| v)
-        .last()
+        .next_back()
 }
 
 /// An integer parameter in `lo..=hi`, or the 400 reason.
@@ -163,7 +163,10 @@ pub fn answer(ctx: &Context, method: &str, target: &str, host: Option<&str>) -> 
         "/app.css" => Reply::bytes(200, "text/css; charset=utf-8", STYLE.into()),
         "/api/state" => Reply::json(200, state(&ctx.live.current(), &ctx.live)),
         "/api/wait" => match number(query, "since", 0, u32::MAX, Some(0)) {
-            Ok(since) => Reply::json(200, state(&ctx.live.wait(u64::from(since), WAIT), &ctx.live)),
+            Ok(since) => Reply::json(
+                200,
+                state(&ctx.live.wait(u64::from(since), WAIT), &ctx.live),
+            ),
             Err(r) => r,
         },
         "/api/frame" => frame(ctx, query).unwrap_or_else(|r| r),
@@ -193,14 +196,24 @@ fn frame(ctx: &Context, query: &str) -> Result<Reply, Reply> {
     let client = param(query, "client").unwrap_or("anonymous");
     if client.is_empty()
         || client.len() > 64
-        || !client.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'-')
+        || !client
+            .bytes()
+            .all(|b| b.is_ascii_alphanumeric() || b == b'-')
     {
-        return Err(Reply::error(400, "`client` must be 1 to 64 letters, digits or -"));
+        return Err(Reply::error(
+            400,
+            "`client` must be 1 to 64 letters, digits or -",
+        ));
     }
     let encoding = match param(query, "format").unwrap_or("png") {
         "png" => Encoding::Png,
         "raw" => Encoding::Raw,
-        other => return Err(Reply::error(400, format!("`format` = {other:?}: expected png or raw"))),
+        other => {
+            return Err(Reply::error(
+                400,
+                format!("`format` = {other:?}: expected png or raw"),
+            ))
+        }
     };
     let drawn = ctx.frames.get(&loaded, &p, client, n, scale, encoding);
     match drawn {
@@ -217,7 +230,10 @@ fn frame(ctx: &Context, query: &str) -> Result<Reply, Reply> {
                 ("X-Generation", loaded.generation.to_string()),
             ],
         }),
-        Ok(Drawn::Superseded) => Err(Reply::error(409, "superseded by a newer request of this client")),
+        Ok(Drawn::Superseded) => Err(Reply::error(
+            409,
+            "superseded by a newer request of this client",
+        )),
         Err(e) => Err(Reply::error(422, format!("animate: {e}"))),
     }
 }
@@ -231,11 +247,17 @@ fn pick(ctx: &Context, query: &str) -> Result<Reply, Reply> {
     // The frame's own time (motion blur's sub-frames are around it).
     let snap = p.timeline.at(f64::from(n));
     let Some(camera) = Camera::new(snap.eye, snap.look_at, w, h) else {
-        return Err(Reply::error(422, format!("frame {n}: the camera is on the point it looks at")));
+        return Err(Reply::error(
+            422,
+            format!("frame {n}: the camera is on the point it looks at"),
+        ));
     };
     let tracer = Tracer::new(&snap.scene);
     let hit = crate::pick::pick(&tracer, &camera, x, y);
-    Ok(Reply::json(200, json!({ "frame": n, "x": x, "y": y, "hit": hit })))
+    Ok(Reply::json(
+        200,
+        json!({ "frame": n, "x": x, "y": y, "hit": hit }),
+    ))
 }
 
 fn strip(ctx: &Context) -> Reply {
