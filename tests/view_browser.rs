@@ -3,8 +3,8 @@
 //! steps with the keys, plays and pauses, sees a manifest written on disk change the
 //! picture within 2 s, sees a broken manifest's `file:line:column` over the last good
 //! frame and the error go when it is fixed, sees the folder's strip turn stale, clicks a
-//! stale cell and a sphere. Screenshots go to docs/view/. Without Chromium the test says
-//! it skipped, unless CI is set.
+//! stale cell and a sphere. Screenshots go to docs/view/ (`VIEW_SCREENSHOTS=docs`).
+//! Without Chromium the test says it skipped, unless CI is set.
 
 mod support;
 mod view_common;
@@ -27,8 +27,14 @@ const PICTURE: &str = "(() => { const i = document.getElementById('frame');
   for (let k = 0; k < d.length; k++) h = (h * 31 + d[k]) >>> 0;
   return `${c.width}x${c.height}:${h}`; })()";
 
+/// Saves a screenshot: into docs/view/ with `VIEW_SCREENSHOTS=docs` (how the committed
+/// ones were made), else into cargo's temporary folder for tests (so a test run leaves
+/// the tree as it was).
 fn shot(b: &mut Browser, name: &str) {
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/view");
+    let dir = match std::env::var("VIEW_SCREENSHOTS").as_deref() {
+        Ok("docs") => Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/view"),
+        _ => Path::new(env!("CARGO_TARGET_TMPDIR")).join("view"),
+    };
     std::fs::create_dir_all(&dir).unwrap();
     std::fs::write(dir.join(name), b.screenshot()).unwrap();
 }
