@@ -9,12 +9,14 @@
 //!   and its events, provenance and status, video;
 //! - checking frames: `check` (`animate check` and `bless`: idiff metrics, FLIP, one
 //!   report value and its exporters: table, JSON, JUnit, HTML);
+//! - `job`: job templates for render farms (Open Job Description);
 //! - `preview`: quick pictures for people (a GIF, a contact sheet, a plot of the paths);
 //! - `error`: why a run stopped, and its exit status.
 
 pub mod check;
 pub mod error;
 pub mod frames;
+pub mod job;
 pub mod manifest;
 pub mod preview;
 pub mod project;
