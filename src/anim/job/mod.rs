@@ -64,8 +64,37 @@ pub fn ffmpeg_pattern(m: &Manifest) -> String {
     format!("{stem}.{}", m.output.format.extension())
 }
 
+/// `path` relative to the folder `base` (both absolute): OpenJD joins a PATH parameter's
+/// default to the template's folder, and refuses absolute defaults.
+pub fn relative_to(path: &Path, base: &Path) -> std::path::PathBuf {
+    let (p, b): (Vec<_>, Vec<_>) = (path.components().collect(), base.components().collect());
+    let common = p.iter().zip(&b).take_while(|(x, y)| x == y).count();
+    let mut out = std::path::PathBuf::new();
+    for _ in common..b.len() {
+        out.push("..");
+    }
+    for c in &p[common..] {
+        out.push(c);
+    }
+    if out.as_os_str().is_empty() {
+        out.push(".");
+    }
+    out
+}
+
+/// A PATH job parameter; its default only when it stays inside the template's folder
+/// (OpenJD refuses defaults that walk up), else the job must be given it (`-p NAME=…`).
+fn path_param(name: &str, kind: &str, flow: &str, path: &Path) -> Value {
+    let mut p = json!({"name": name, "type": "PATH", "objectType": kind, "dataFlow": flow});
+    let inside = path.components().all(|c| matches!(c, std::path::Component::Normal(_) | std::path::Component::CurDir));
+    if inside {
+        p["default"] = path.display().to_string().into();
+    }
+    p
+}
+
 /// The template for `frames` (in number order) of the manifest at `manifest_path`, into
-/// `out_dir`.
+/// `out_dir` (both relative to the folder the template is written into).
 pub fn openjd_template(
     m: &Manifest,
     manifest_path: &Path,
@@ -83,7 +112,8 @@ pub fn openjd_template(
     let name = manifest_path
         .file_stem()
         .map_or("animation".into(), |s| s.to_string_lossy().into_owned());
-    let video = format!("{}.mp4", out_dir.display());
+    let dir_name = out_dir.file_name().map_or("frames".into(), |n| n.to_string_lossy().into_owned());
+    let video = out_dir.with_file_name(format!("{dir_name}.mp4")).display().to_string();
     let first = frames.first().copied().unwrap_or(0);
     json!({
         "specificationVersion": "jobtemplate-2023-09",
@@ -93,12 +123,9 @@ pub fn openjd_template(
         "parameterDefinitions": [
             {"name": "Animate", "type": "STRING", "default": "animate",
              "description": "The animate command (a path, or a name on PATH)."},
-            {"name": "Manifest", "type": "PATH", "objectType": "FILE", "dataFlow": "IN",
-             "default": manifest_path.display().to_string()},
-            {"name": "OutDir", "type": "PATH", "objectType": "DIRECTORY", "dataFlow": "OUT",
-             "default": out_dir.display().to_string()},
-            {"name": "Video", "type": "PATH", "objectType": "FILE", "dataFlow": "OUT",
-             "default": video},
+            path_param("Manifest", "FILE", "IN", manifest_path),
+            path_param("OutDir", "DIRECTORY", "OUT", out_dir),
+            path_param("Video", "FILE", "OUT", Path::new(&video)),
         ],
         "steps": [
             {

@@ -16,7 +16,7 @@ use std::time::Instant;
 use whitted::anim::check::{self, CheckOptions};
 use whitted::anim::frames::estimate::Estimate;
 use whitted::anim::frames::{balance, run};
-use whitted::anim::job::{openjd_template, Chunking};
+use whitted::anim::job::{openjd_template, relative_to, Chunking};
 use whitted::anim::frames::status::status;
 use whitted::anim::select::sorted;
 use whitted::anim::{preview, AnimError, Animation, Reporter};
@@ -150,6 +150,16 @@ fn job(args: JobArgs) -> anyhow::Result<Outcome> {
     let absolute = |p: &std::path::Path| std::path::absolute(p).unwrap_or(p.to_path_buf());
     let out_dir = absolute(args.out_dir.as_deref().unwrap_or(&m.output.dir));
     let manifest = absolute(c.manifest.as_deref().unwrap_or(std::path::Path::new("")));
+    // OpenJD wants the default paths relative to the template's folder.
+    let here = absolute(std::path::Path::new("."));
+    let folder = match &args.out {
+        Some(file) => match file.parent().filter(|p| !p.as_os_str().is_empty()) {
+            Some(parent) => absolute(parent),
+            None => here,
+        },
+        None => here,
+    };
+    let (manifest, out_dir) = (relative_to(&manifest, &folder), relative_to(&out_dir, &folder));
     let template = openjd_template(m, &manifest, &out_dir, &frames, chunking);
     let text = serde_json::to_string_pretty(&template)? + "\n";
     match &args.out {
