@@ -22,7 +22,11 @@ fn balanced_shards_of_a_turn_to_glass_have_equal_predicted_costs() {
     assert_eq!(costs, predicted_costs(&project, &anim, &frames).unwrap());
     let (lo, hi) = (costs.iter().min().unwrap(), costs.iter().max().unwrap());
     assert!(*hi >= 8 * lo, "frames differ only {hi}/{lo}");
-    let sums = |b: &[usize]| -> Vec<u64> { b.windows(2).map(|w| costs[w[0]..w[1]].iter().sum()).collect() };
+    let sums = |b: &[usize]| -> Vec<u64> {
+        b.windows(2)
+            .map(|w| costs[w[0]..w[1]].iter().sum())
+            .collect()
+    };
     let balanced = sums(&split(&costs, 4));
     let equal = sums(&[0, 16, 32, 48, 64]);
     let ratio = |s: &[u64]| *s.iter().max().unwrap() as f64 / *s.iter().min().unwrap() as f64;
@@ -67,8 +71,16 @@ fn estimate_and_status_report_the_prediction() {
     assert!(out.status.success(), "{text}");
     assert!(text.starts_with("frames 0-11: "), "{text}");
     assert!(text.contains("3 balanced shards (--balance):"), "{text}");
-    assert!(text.contains("3 shards of equal frame counts:\n0-3 "), "{text}");
-    let out = animate().arg("status").arg(&manifest).arg("--json").output().unwrap();
+    assert!(
+        text.contains("3 shards of equal frame counts:\n0-3 "),
+        "{text}"
+    );
+    let out = animate()
+        .arg("status")
+        .arg(&manifest)
+        .arg("--json")
+        .output()
+        .unwrap();
     let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
     let rays = doc["predicted_rays"].as_object().unwrap();
     assert_eq!(rays.len(), 12);

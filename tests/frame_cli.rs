@@ -20,7 +20,11 @@ fn stream(manifest: &std::path::Path, frames: &str) -> Vec<u8> {
         .args(["--stdout", "ppm", "--quiet", "--frames", frames])
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     out.stdout
 }
 
@@ -30,7 +34,11 @@ fn a_staggered_list_streams_coarse_to_fine() {
     let order = [0, 4, 8, 3, 6, 2, 1, 5, 7];
     let staggered = ppm_frames(&stream(&manifest, "0-8:4"), order.len());
     for (frame, bytes) in order.iter().zip(&staggered) {
-        assert_eq!(bytes, &stream(&manifest, &frame.to_string()), "frame {frame}");
+        assert_eq!(
+            bytes,
+            &stream(&manifest, &frame.to_string()),
+            "frame {frame}"
+        );
     }
     // The frames differ (the camera turns), so the order is what the test sees.
     assert_ne!(staggered[0], staggered[1]);
@@ -39,25 +47,43 @@ fn a_staggered_list_streams_coarse_to_fine() {
 #[test]
 fn a_bad_frame_list_shows_its_column() {
     let (_dir, manifest) = project(&circle_manifest(""));
-    let out = animate().arg(&manifest).args(["--frames", "0-11x0"]).output().unwrap();
+    let out = animate()
+        .arg(&manifest)
+        .args(["--frames", "0-11x0"])
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
         err.contains("--frames \"0-11x0\", column 6: the step must not be 0\n  0-11x0\n       ^"),
         "{err}"
     );
-    let out = animate().arg(&manifest).args(["--frames", "0-12"]).output().unwrap();
+    let out = animate()
+        .arg(&manifest)
+        .args(["--frames", "0-12"])
+        .output()
+        .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("column 3: frame 12 is past the last frame, 11"), "{err}");
+    assert!(
+        err.contains("column 3: frame 12 is past the last frame, 11"),
+        "{err}"
+    );
 }
 
 #[test]
 fn check_frames_take_the_grammar_with_located_errors() {
     let check = |frames: &str| {
-        circle_manifest(&format!("\n[check]\nframes = {frames}\nreferences = \"refs\"\n"))
+        circle_manifest(&format!(
+            "\n[check]\nframes = {frames}\nreferences = \"refs\"\n"
+        ))
     };
     let (dir, manifest) = project(&check("\"0-11x4\""));
-    animate().arg("bless").arg(&manifest).arg("--quiet").assert().success();
+    animate()
+        .arg("bless")
+        .arg(&manifest)
+        .arg("--quiet")
+        .assert()
+        .success();
     let mut refs = entries_of(&dir.path().join("refs"));
     refs.sort();
     assert_eq!(refs, ["frame_0000.png", "frame_0004.png", "frame_0008.png"]);
@@ -67,10 +93,17 @@ fn check_frames_take_the_grammar_with_located_errors() {
     assert_eq!(out.status.code(), Some(2));
     let err = String::from_utf8_lossy(&out.stderr);
     let text = std::fs::read_to_string(&manifest).unwrap();
-    let line = text.lines().position(|l| l.starts_with("frames = \"")).unwrap() + 1;
+    let line = text
+        .lines()
+        .position(|l| l.starts_with("frames = \""))
+        .unwrap()
+        + 1;
     let column = "frames = \"0-11x".len() + 1;
     let at = format!("anim.toml:{line}:{column}:");
-    assert!(err.contains(&at) && err.contains("the step must not be 0"), "{at}: {err}");
+    assert!(
+        err.contains(&at) && err.contains("the step must not be 0"),
+        "{at}: {err}"
+    );
 }
 
 fn entries_of(dir: &std::path::Path) -> Vec<String> {
@@ -89,7 +122,8 @@ fn output_names_in_every_spelling() {
         ("shot_$F", "shot_00.png"),
         ("shot.@@@.v2", "shot.000.v2.png"),
     ] {
-        let text = circle_manifest("").replace("name = \"frame_####\"", &format!("name = \"{name}\""));
+        let text =
+            circle_manifest("").replace("name = \"frame_####\"", &format!("name = \"{name}\""));
         let (dir, manifest) = project(&text);
         render_into(&manifest, &dir.path().join("out"), &["--frames", "0"]);
         assert_eq!(entries_of(&dir.path().join("out")), [first], "{name}");

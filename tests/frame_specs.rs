@@ -72,7 +72,12 @@ for line in sys.stdin.read().split("\n")[:-1]:
         input.push_str(&serde_json::to_string(s).unwrap());
         input.push('\n');
     }
-    child.stdin.take().unwrap().write_all(input.as_bytes()).unwrap();
+    child
+        .stdin
+        .take()
+        .unwrap()
+        .write_all(input.as_bytes())
+        .unwrap();
     let out = child.wait_with_output().unwrap();
     let text = String::from_utf8_lossy(&out.stdout);
     if out.status.code() == Some(3) {
@@ -90,7 +95,10 @@ fn oracle(specs: &[String]) -> Option<Vec<Option<Vec<i64>>>> {
     match fileseq(specs) {
         Ok(answers) => Some(answers),
         Err(why) => {
-            assert!(std::env::var_os("CI").is_none(), "CI must run fileseq: {why}");
+            assert!(
+                std::env::var_os("CI").is_none(),
+                "CI must run fileseq: {why}"
+            );
             eprintln!("skipped: {why}");
             None
         }
@@ -98,11 +106,43 @@ fn oracle(specs: &[String]) -> Option<Vec<Option<Vec<i64>>>> {
 }
 
 const HAND: &[&str] = &[
-    "1-100", "1-100x5", "1-100y5", "1-100:5", "1,2,3,4,99", "100-1x7", "0-0", "0-1:9",
-    "5-5y1", "1-10x3,2-9y2", "10-20:4,1-30", "1-20:5,1-20", "3,1-5:2,4", "-5-5:3",
-    "-10--1y4", "1-20x-5", "20-1x-5", "1-20:0", "1x5", "1-", "a-b", "1-20X5", "1.5",
-    "1-5,,", " 1 - 5 x 2 ", "#1-4@", "0-99999999999999999999", "--1", "1--", "1-2-3",
-    "1-10x", "1-10:+2", "+3", "1-5x2x2", "7:1", "", ",",
+    "1-100",
+    "1-100x5",
+    "1-100y5",
+    "1-100:5",
+    "1,2,3,4,99",
+    "100-1x7",
+    "0-0",
+    "0-1:9",
+    "5-5y1",
+    "1-10x3,2-9y2",
+    "10-20:4,1-30",
+    "1-20:5,1-20",
+    "3,1-5:2,4",
+    "-5-5:3",
+    "-10--1y4",
+    "1-20x-5",
+    "20-1x-5",
+    "1-20:0",
+    "1x5",
+    "1-",
+    "a-b",
+    "1-20X5",
+    "1.5",
+    "1-5,,",
+    " 1 - 5 x 2 ",
+    "#1-4@",
+    "0-99999999999999999999",
+    "--1",
+    "1--",
+    "1-2-3",
+    "1-10x",
+    "1-10:+2",
+    "+3",
+    "1-5x2x2",
+    "7:1",
+    "",
+    ",",
 ];
 
 /// Same sets, same order, same refusals, on hand-written specs.

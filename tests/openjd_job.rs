@@ -11,11 +11,17 @@ use std::process::Command;
 use support::*;
 
 fn have(tool: &str, arg: &str) -> bool {
-    Command::new(tool).arg(arg).output().is_ok_and(|o| o.status.success())
+    Command::new(tool)
+        .arg(arg)
+        .output()
+        .is_ok_and(|o| o.status.success())
 }
 
 fn skip(why: &str) {
-    assert!(std::env::var_os("CI").is_none(), "CI must run the OpenJD test: {why}");
+    assert!(
+        std::env::var_os("CI").is_none(),
+        "CI must run the OpenJD test: {why}"
+    );
     eprintln!("skipped: {why}");
 }
 
@@ -27,7 +33,11 @@ fn job(manifest: &Path, args: &[&str]) -> serde_json::Value {
         .args(args)
         .output()
         .unwrap();
-    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     serde_json::from_slice(&out.stdout).unwrap()
 }
 
@@ -42,7 +52,11 @@ fn the_template_has_a_chunked_render_step_and_a_video_step_after_it() {
     assert_eq!(param["range"], "0-11");
     assert_eq!(param["chunks"]["defaultTaskCount"], 5);
     let args = &t["steps"][0]["script"]["actions"]["onRun"]["args"];
-    assert!(args.to_string().contains(r#""--frames","{{Task.Param.Frame}}","--resume","--quiet""#), "{args}");
+    assert!(
+        args.to_string()
+            .contains(r#""--frames","{{Task.Param.Frame}}","--resume","--quiet""#),
+        "{args}"
+    );
     assert_eq!(t["steps"][1]["dependencies"][0]["dependsOn"], "Render");
     let input = t["steps"][1]["script"]["actions"]["onRun"]["args"].to_string();
     assert!(input.contains("{{Param.OutDir}}/frame_%04d.png"), "{input}");
@@ -74,8 +88,16 @@ fn openjd_checks_and_runs_the_template_into_the_bytes_of_a_plain_run() {
         .arg(&out_dir)
         .output()
         .unwrap();
-    assert!(status.status.success(), "{}", String::from_utf8_lossy(&status.stderr));
-    let check = Command::new("openjd").arg("check").arg(&template).output().unwrap();
+    assert!(
+        status.status.success(),
+        "{}",
+        String::from_utf8_lossy(&status.stderr)
+    );
+    let check = Command::new("openjd")
+        .arg("check")
+        .arg(&template)
+        .output()
+        .unwrap();
     let said = String::from_utf8_lossy(&check.stdout).to_string()
         + &String::from_utf8_lossy(&check.stderr);
     assert!(check.status.success(), "openjd check: {said}");

@@ -10,9 +10,9 @@
 //! 2 balanced shards      0-5 = 30, 6-7 = 18   (the boundary nearest half the total, 24)
 //! ```
 
+use super::select::{in_order, select, sorted};
 use crate::anim::error::AnimError;
 use crate::anim::project::{Animation, Project};
-use super::select::{in_order, select, sorted};
 use rayon::prelude::*;
 
 /// The pre-pass draws at 1/`PREPASS_DIVISOR` of the width and of the height.

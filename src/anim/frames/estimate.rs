@@ -102,7 +102,11 @@ impl Estimate {
             self.prepass_seconds,
             100.0 * self.prepass_seconds / expected.max(1e-9),
         );
-        let _ = writeln!(out, "{:<14} {:>14} {:>8} {:>11}", "frames", "predicted", "share", "expected");
+        let _ = writeln!(
+            out,
+            "{:<14} {:>14} {:>8} {:>11}",
+            "frames", "predicted", "share", "expected"
+        );
         let n = self.frames.len();
         let parts = n.clamp(1, 8);
         for p in 0..parts {

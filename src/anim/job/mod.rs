@@ -86,7 +86,12 @@ pub fn relative_to(path: &Path, base: &Path) -> std::path::PathBuf {
 /// (OpenJD refuses defaults that walk up), else the job must be given it (`-p NAME=…`).
 fn path_param(name: &str, kind: &str, flow: &str, path: &Path) -> Value {
     let mut p = json!({"name": name, "type": "PATH", "objectType": kind, "dataFlow": flow});
-    let inside = path.components().all(|c| matches!(c, std::path::Component::Normal(_) | std::path::Component::CurDir));
+    let inside = path.components().all(|c| {
+        matches!(
+            c,
+            std::path::Component::Normal(_) | std::path::Component::CurDir
+        )
+    });
     if inside {
         p["default"] = path.display().to_string().into();
     }
@@ -112,8 +117,13 @@ pub fn openjd_template(
     let name = manifest_path
         .file_stem()
         .map_or("animation".into(), |s| s.to_string_lossy().into_owned());
-    let dir_name = out_dir.file_name().map_or("frames".into(), |n| n.to_string_lossy().into_owned());
-    let video = out_dir.with_file_name(format!("{dir_name}.mp4")).display().to_string();
+    let dir_name = out_dir
+        .file_name()
+        .map_or("frames".into(), |n| n.to_string_lossy().into_owned());
+    let video = out_dir
+        .with_file_name(format!("{dir_name}.mp4"))
+        .display()
+        .to_string();
     let first = frames.first().copied().unwrap_or(0);
     json!({
         "specificationVersion": "jobtemplate-2023-09",

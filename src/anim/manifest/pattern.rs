@@ -36,7 +36,10 @@ pub fn to_hashes(name: &str) -> Result<String, String> {
                     "`name` {name:?}: the only printf conversion understood is %0Nd (the frame number); or write #### for it"
                 ));
             };
-            let width = after[..n].trim_start_matches('0').parse::<usize>().unwrap_or(4);
+            let width = after[..n]
+                .trim_start_matches('0')
+                .parse::<usize>()
+                .unwrap_or(4);
             out.push_str(&"#".repeat(width.clamp(1, 32)));
             rest = tail;
             converted += 1;

@@ -24,9 +24,9 @@
 //! ```
 
 use super::raw::{RawCheck, RawFrames, RawOutput, RawRender};
+use super::{CheckSpec, ManifestError, OutputSpec, RenderSpec, Source};
 use crate::anim::select::parse_frames;
 use crate::anim::select::SelectError;
-use super::{CheckSpec, ManifestError, OutputSpec, RenderSpec, Source};
 use crate::limits::{MAX_PIXELS, MAX_SAMPLES, MAX_SIDE};
 use crate::output::ImageFormat;
 use std::collections::HashSet;
@@ -170,7 +170,13 @@ impl Source<'_> {
             let literal = &self.text[span.clone()];
             let plain = literal.len() == spec.len() + 2 && &literal[1..literal.len() - 1] == spec;
             let offset = match plain {
-                true => 1 + spec.chars().take(column - 1).map(char::len_utf8).sum::<usize>(),
+                true => {
+                    1 + spec
+                        .chars()
+                        .take(column - 1)
+                        .map(char::len_utf8)
+                        .sum::<usize>()
+                }
                 false => 0,
             };
             let at = span.start + offset..span.end;

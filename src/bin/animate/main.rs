@@ -15,9 +15,9 @@ use std::process::ExitCode;
 use std::time::Instant;
 use whitted::anim::check::{self, CheckOptions};
 use whitted::anim::frames::estimate::Estimate;
+use whitted::anim::frames::status::status;
 use whitted::anim::frames::{balance, run};
 use whitted::anim::job::{openjd_template, relative_to, Chunking};
-use whitted::anim::frames::status::status;
 use whitted::anim::select::sorted;
 use whitted::anim::{preview, AnimError, Animation, Reporter};
 use whitted::exit::Outcome;
@@ -159,7 +159,10 @@ fn job(args: JobArgs) -> anyhow::Result<Outcome> {
         },
         None => here,
     };
-    let (manifest, out_dir) = (relative_to(&manifest, &folder), relative_to(&out_dir, &folder));
+    let (manifest, out_dir) = (
+        relative_to(&manifest, &folder),
+        relative_to(&out_dir, &folder),
+    );
     let template = openjd_template(m, &manifest, &out_dir, &frames, chunking);
     let text = serde_json::to_string_pretty(&template)? + "\n";
     match &args.out {
@@ -176,7 +179,10 @@ fn job(args: JobArgs) -> anyhow::Result<Outcome> {
     }
     if !c.quiet {
         let size = chunking.size();
-        eprintln!("animate: an OpenJD template of {} frames in chunks of {size}", frames.len());
+        eprintln!(
+            "animate: an OpenJD template of {} frames in chunks of {size}",
+            frames.len()
+        );
     }
     Ok(Outcome::Success)
 }

@@ -132,7 +132,14 @@ impl FrameSpec {
                 continue;
             }
             let stop = part.last().map_or(end_column, |&(_, col)| col + 1);
-            items.push(Cursor { chars: part, at: 0, stop }.item()?);
+            items.push(
+                Cursor {
+                    chars: part,
+                    at: 0,
+                    stop,
+                }
+                .item()?,
+            );
         }
         Ok(FrameSpec { items })
     }
@@ -148,7 +155,10 @@ impl FrameSpec {
             total += item.len_bound();
             if total > MAX_FRAMES {
                 let column = item.start_column;
-                return Err(SpecError { column, problem: ListProblem::TooMany });
+                return Err(SpecError {
+                    column,
+                    problem: ListProblem::TooMany,
+                });
             }
         }
         let mut seen = std::collections::HashSet::new();
@@ -197,7 +207,7 @@ impl Item {
             Step::One => self.stride(1, f),
             Step::Every(k) => self.stride(k, f),
             Step::Fill(k) => self.stride(1, &mut |x| {
-                if (x - self.start).unsigned_abs() % k != 0 {
+                if !(x - self.start).unsigned_abs().is_multiple_of(k) {
                     f(x)
                 }
             }),
@@ -220,7 +230,7 @@ impl Item {
                 if k == 1 || self.span() == 0 {
                     return None;
                 }
-                let last = if self.span() % k != 0 { e } else { e - d };
+                let last = if self.span().is_multiple_of(k) { e - d } else { e };
                 Some(((s + d, self.start_column), (last, self.end_column)))
             }
         }
@@ -316,11 +326,18 @@ impl Cursor<'_> {
             Some(c @ ('x' | 'y' | ':')) => return self.fail(ListProblem::StepWithoutRange(c)),
             Some(_) => {
                 let found = self.found();
-                return self.fail(ListProblem::Unexpected { found, after: "a frame" });
+                return self.fail(ListProblem::Unexpected {
+                    found,
+                    after: "a frame",
+                });
             }
         }
         let (end, end_column) = self.number()?;
-        let range = Item { end, end_column, ..single };
+        let range = Item {
+            end,
+            end_column,
+            ..single
+        };
         let kind = match self.peek() {
             None => return Ok(range),
             Some(c @ ('x' | 'y' | ':')) => c,
@@ -335,9 +352,17 @@ impl Cursor<'_> {
         let (n, _) = self.number()?;
         if self.peek().is_some() {
             let found = self.found();
-            return self.fail(ListProblem::Unexpected { found, after: "the step" });
+            return self.fail(ListProblem::Unexpected {
+                found,
+                after: "the step",
+            });
         }
-        let at_step = |problem| Err(SpecError { column: step_column, problem });
+        let at_step = |problem| {
+            Err(SpecError {
+                column: step_column,
+                problem,
+            })
+        };
         if n == 0 {
             return at_step(ListProblem::ZeroStep);
         }

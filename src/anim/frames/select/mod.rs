@@ -81,7 +81,10 @@ pub fn parse_frames(spec: &str, frames: u32) -> Result<Vec<u32>, SelectError> {
         .map_err(err)?;
     if list.is_empty() {
         let column = 1;
-        return Err(err(SpecError { column, problem: ListProblem::NoFrames }));
+        return Err(err(SpecError {
+            column,
+            problem: ListProblem::NoFrames,
+        }));
     }
     // Bounded by `frames`, so every frame fits.
     Ok(list.into_iter().map(|f| f as u32).collect())
@@ -153,8 +156,17 @@ mod tests {
         );
         // 0-8:4 is 0 4 8, 3 6, 2, 1 5 7; the first half of 0..=8 by number is 0..=3
         // (4 of 9), in that order.
-        assert_eq!(select(9, Some("0-8:4"), None).unwrap(), [0, 4, 8, 3, 6, 2, 1, 5, 7]);
-        assert_eq!(select(9, Some("0-8:4"), Some((0, 2))).unwrap(), [0, 3, 2, 1]);
-        assert_eq!(select(9, Some("0-8:4"), Some((1, 2))).unwrap(), [4, 8, 6, 5, 7]);
+        assert_eq!(
+            select(9, Some("0-8:4"), None).unwrap(),
+            [0, 4, 8, 3, 6, 2, 1, 5, 7]
+        );
+        assert_eq!(
+            select(9, Some("0-8:4"), Some((0, 2))).unwrap(),
+            [0, 3, 2, 1]
+        );
+        assert_eq!(
+            select(9, Some("0-8:4"), Some((1, 2))).unwrap(),
+            [4, 8, 6, 5, 7]
+        );
     }
 }

@@ -276,7 +276,6 @@ mod tests {
         assert_eq!(shard(&(0..10).collect::<Vec<_>>(), 2, 3), vec![6, 7, 8, 9]);
     }
 
-
     #[test]
     fn shard_specs() {
         let part = |index, count| Shard::Part { index, count };

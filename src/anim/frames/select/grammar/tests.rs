@@ -44,13 +44,34 @@ fn malformed_specs_are_located() {
     assert_eq!(error("1x5"), (2, StepWithoutRange('x')));
     assert_eq!(error("0,1-"), (5, NotANumber("the end of the item".into())));
     let after = "a range (a step is x, y or : and a number)";
-    assert_eq!(error("1-20X5"), (5, Unexpected { found: "'X'".into(), after }));
+    assert_eq!(
+        error("1-20X5"),
+        (
+            5,
+            Unexpected {
+                found: "'X'".into(),
+                after
+            }
+        )
+    );
     assert_eq!(error("1-20x:y5"), (6, NotANumber("':'".into())));
     assert_eq!(error("1.5"), (2, Subframe));
     // Columns count the text as given, spaces included.
     assert_eq!(error("1, 2-b"), (6, NotANumber("'b'".into())));
-    assert_eq!(error("3-4x2z"), (6, Unexpected { found: "'z'".into(), after: "the step" }));
-    assert_eq!(error("99999999999999999999"), (1, TooLarge("99999999999999999999".into())));
+    assert_eq!(
+        error("3-4x2z"),
+        (
+            6,
+            Unexpected {
+                found: "'z'".into(),
+                after: "the step"
+            }
+        )
+    );
+    assert_eq!(
+        error("99999999999999999999"),
+        (1, TooLarge("99999999999999999999".into()))
+    );
     assert_eq!(error("0-99999999"), (1, TooMany));
 }
 
@@ -60,7 +81,10 @@ fn bounds_are_checked_on_the_frames_produced() {
     // 0-10x3 stops at 9, inside ten frames; 0-10 does not.
     assert_eq!(bounded("0-10x3", 10).unwrap(), [0, 3, 6, 9]);
     let e = bounded("0-10", 10).unwrap_err();
-    assert_eq!((e.column, e.problem), (3, ListProblem::PastTheEnd { frame: 10, last: 9 }));
+    assert_eq!(
+        (e.column, e.problem),
+        (3, ListProblem::PastTheEnd { frame: 10, last: 9 })
+    );
     // 0-10y5 leaves out 10 (on the x5 grid), so it fits too.
     assert_eq!(bounded("0-10y5", 10).unwrap(), [1, 2, 3, 4, 6, 7, 8, 9]);
     let e = bounded("2,-1-3", 10).unwrap_err();
