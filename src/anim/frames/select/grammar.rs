@@ -230,7 +230,11 @@ impl Item {
                 if k == 1 || self.span() == 0 {
                     return None;
                 }
-                let last = if self.span().is_multiple_of(k) { e - d } else { e };
+                let last = if self.span().is_multiple_of(k) {
+                    e - d
+                } else {
+                    e
+                };
                 Some(((s + d, self.start_column), (last, self.end_column)))
             }
         }
