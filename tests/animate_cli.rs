@@ -262,7 +262,7 @@ fn bad_frame_lists_and_shards_exit_2() {
     let (_dir, manifest) = project(&circle_manifest(""));
     for args in [
         ["--frames", "12"],
-        ["--frames", "3-1"],
+        ["--frames", "3-1x0"],
         ["--shard", "3/3"],
         ["--shard", "x"],
     ] {

@@ -96,6 +96,17 @@ fn summaries(log: &str) -> Vec<(u32, u32)> {
         .collect()
 }
 
+/// The frame counts of the TASKS shards `--shard auto --balance` makes of `manifest`.
+fn balanced_sizes(manifest: &Path) -> Vec<u32> {
+    use whitted::anim::frames::balance::{predicted_costs, split};
+    let project = whitted::anim::Project::load(manifest).unwrap();
+    let anim = whitted::anim::Animation::new(&project).unwrap();
+    let frames: Vec<u32> = (0..FRAMES).collect();
+    let costs = predicted_costs(&project, &anim, &frames).unwrap();
+    let b = split(&costs, TASKS);
+    b.windows(2).map(|w| (w[1] - w[0]) as u32).collect()
+}
+
 #[test]
 fn a_slurm_array_with_a_cancelled_task_renders_the_single_run() {
     if let Some(why) = missing() {
@@ -111,13 +122,17 @@ fn a_slurm_array_with_a_cancelled_task_renders_the_single_run() {
     std::fs::write(work.join("scene.txt"), scene_with_eye([0.0, 3.0, 8.0])).unwrap();
     std::fs::write(work.join("anim.toml"), manifest()).unwrap();
     render_into(&work.join("anim.toml"), &work.join("single"), &[]);
+    // render.sbatch balances the shards by predicted cost: the tasks' frame counts.
+    let sizes = balanced_sizes(&work.join("anim.toml"));
+    let first = sizes[0];
+    let end = first + sizes[1];
 
     let farm = Path::new(env!("CARGO_MANIFEST_DIR")).join("farm/ci");
     let run = Command::new(farm.join("slurm-cluster.sh"))
         .arg(work.join("cluster"))
         .arg(farm.join("slurm-scenario.sh"))
         .arg(work)
-        .args([FRAMES.to_string(), TASKS.to_string()])
+        .args([FRAMES, TASKS, first, end].map(|n| n.to_string()))
         .env("ANIMATE", env!("CARGO_BIN_EXE_animate"))
         .output()
         .unwrap();
@@ -140,17 +155,16 @@ fn a_slurm_array_with_a_cancelled_task_renders_the_single_run() {
     // the others and skipped those.
     let log = std::fs::read_to_string(work.join("log/render_2.out")).unwrap();
     assert!(log.contains("CANCELLED"), "{log}");
-    let per_task = FRAMES / TASKS;
     match summaries(&log)[..] {
         [(rendered, skipped)] => {
             assert!(skipped > 0 && rendered > 0, "{log}");
-            assert_eq!(rendered + skipped, per_task, "{log}");
+            assert_eq!(rendered + skipped, sizes[1], "{log}");
         }
         _ => panic!("one finished attempt expected:\n{log}"),
     }
     for task in [1, 3] {
         let log = std::fs::read_to_string(work.join(format!("log/render_{task}.out"))).unwrap();
-        assert_eq!(summaries(&log), [(per_task, 0)], "{log}");
+        assert_eq!(summaries(&log), [(sizes[task - 1], 0)], "{log}");
     }
 
     assert_eq!(probe(&work.join("video.mp4")), (320, 240, FRAMES));

@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # The farm test's scenario, run inside farm/ci/slurm-cluster.sh (SLURM_CONF set):
 #
-#   farm/ci/slurm-scenario.sh WORK FRAMES TASKS
+#   farm/ci/slurm-scenario.sh WORK FRAMES TASKS [FIRST END]
 #
 # WORK holds anim.toml (FRAMES frames, names frame_####.png, 25 fps). Submits the job files
 # of farm/slurm as a user would — an array job of TASKS tasks numbered from 1 (so
 # `--shard auto` must subtract SLURM_ARRAY_TASK_MIN) and the dependent video job — then
 # cancels task 2 once it has written some of its frames and before it has written all,
 # requeues it, and waits for the video job. Leaves WORK/frames, WORK/video.mp4 and the
-# jobs' logs in WORK/log for the caller to check; exits non-zero, with the reason and
+# jobs' logs in WORK/log for the caller to check; FIRST and END (exclusive) are task 2's
+# frames, when the caller knows them (render.sbatch balances the shards by predicted
+# cost), else the equal-count chunk [F·1/T, F·2/T); exits non-zero, with the reason and
 # the logs, when a job fails or a step takes too long. `ANIMATE` is the binary to run.
 set -euo pipefail
 work=$(cd "$1" && pwd)
@@ -40,9 +42,11 @@ job_state() {
 is_state() { [[ $(job_state "$1") == "$2" ]]; }
 gone_from_queue() { [[ -z $(squeue -h -j "$1" 2>/dev/null) ]]; }
 
-# Task 2's chunk (index 1 of TASKS): frames [F·1/T, F·2/T).
+# Task 2's chunk (index 1 of TASKS).
+first=${4:-$((frames / tasks))}
+end=${5:-$((2 * frames / tasks))}
 chunk=()
-for ((f = frames / tasks; f < 2 * frames / tasks; f++)); do
+for ((f = first; f < end; f++)); do
   chunk+=("$work/frames/$(printf 'frame_%04d.png' "$f")")
 done
 written() {

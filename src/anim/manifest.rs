@@ -45,6 +45,7 @@
 
 mod camera;
 mod locate;
+mod pattern;
 mod raw;
 mod schema;
 mod sections;

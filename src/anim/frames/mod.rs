@@ -6,8 +6,12 @@
 //! - `pipeline`: rendering in parallel into a folder or a stream, reporting `events`;
 //! - `provenance`: what made a frame, recorded in the frame file; `status`: which frames
 //!   of a folder are up to date, stale or missing;
-//! - `video`: ffmpeg, checked before the first frame.
+//! - `video`: ffmpeg, checked before the first frame;
+//! - `balance`: shards of equal predicted cost from a small pre-pass; `estimate`: the
+//!   predicted cost and time of a render.
 
+pub mod balance;
+pub mod estimate;
 pub mod events;
 pub mod pipeline;
 pub mod provenance;

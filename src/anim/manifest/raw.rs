@@ -145,10 +145,45 @@ pub(super) struct RawRender {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields, expecting = "a [check] table")]
 pub(super) struct RawCheck {
-    pub frames: Spanned<Vec<Spanned<i64>>>,
+    pub frames: Spanned<RawFrames>,
     pub references: Spanned<String>,
     pub fail: Option<Spanned<i64>>,
     pub fail_percent: Option<Spanned<f64>>,
     pub hard_fail: Option<Spanned<i64>>,
     pub flip: Option<Spanned<f64>>,
+}
+
+/// `[check] frames`: a list of frame numbers, or a frame list in the fileseq grammar
+/// (`"0-249x25"`), read with a visitor so that the numbers keep their spans.
+pub(super) enum RawFrames {
+    /// `[0, 125, 249]`.
+    List(Vec<Spanned<i64>>),
+    /// `"0-249x25"`.
+    Spec(String),
+}
+
+impl<'de> Deserialize<'de> for RawFrames {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<RawFrames, D::Error> {
+        struct Frames;
+        impl<'de> serde::de::Visitor<'de> for Frames {
+            type Value = RawFrames;
+            fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+                f.write_str("a list of frame numbers or a frame list such as \"0-249x25\"")
+            }
+            fn visit_str<E: serde::de::Error>(self, s: &str) -> Result<RawFrames, E> {
+                Ok(RawFrames::Spec(s.to_string()))
+            }
+            fn visit_seq<A: serde::de::SeqAccess<'de>>(
+                self,
+                mut seq: A,
+            ) -> Result<RawFrames, A::Error> {
+                let mut list = Vec::new();
+                while let Some(f) = seq.next_element()? {
+                    list.push(f);
+                }
+                Ok(RawFrames::List(list))
+            }
+        }
+        d.deserialize_any(Frames)
+    }
 }

@@ -3,7 +3,8 @@
 //! ```toml
 //! [output]
 //! dir = "../out/orbit"      # default: <manifest name without .toml>-frames, beside it
-//! name = "frame_####"       # default "frame_####"; a file name: no / or \, not empty
+//! name = "frame_####"       # default "frame_####"; a file name: no / or \, not empty;
+//!                           # also frame_@@@@, frame_%04d, frame_$F4 (`pattern`)
 //! format = "png"            # png | jpeg | ppm | raw; default png
 //! jpeg_quality = 90         # 1..=100; default 90
 //! exr_depth = "half"        # exr only: half | float; default half
@@ -16,7 +17,8 @@
 //! samples = 2               # 1..=16; default 1
 //!
 //! [check]
-//! frames = [0, 125, 249]    # required, not empty, each < frames, no repeats
+//! frames = [0, 125, 249]    # required, not empty, each < frames, no repeats;
+//!                           # or a frame list: frames = "0-249x25" (`select::grammar`)
 //! references = "golden"     # required
 //! fail = 2                  # 0..=255; default 2
 //! fail_percent = 0.1        # 0..=100; default 0.1
@@ -24,8 +26,10 @@
 //! flip = 0.05               # optional, 0..=1: the largest mean FLIP error
 //! ```
 
-use super::raw::{RawCheck, RawOutput, RawRender};
+use super::raw::{RawCheck, RawFrames, RawOutput, RawRender};
 use super::{CheckSpec, ManifestError, OutputSpec, RenderSpec, Source};
+use crate::anim::select::parse_frames;
+use crate::anim::select::SelectError;
 use crate::limits::{MAX_PIXELS, MAX_SAMPLES, MAX_SIDE};
 use crate::output::{ExrCompression, ExrDepth, ExrOptions, ImageFormat};
 use crate::passes::{Pass, PassSet};
@@ -137,7 +141,7 @@ impl Source<'_> {
         }
     }
 
-    /// A file name pattern; ffmpeg's `%04d` (or `%d`) is taken for Blender's `####`.
+    /// A file name pattern; `@@@@`, `%04d` and `$F4` are taken for Blender's `####`.
     fn file_name_pattern(&self, name: Spanned<String>) -> Result<String, ManifestError> {
         let text = name.get_ref();
         let bad = |c: char| c == '/' || c == '\\' || c.is_control();
@@ -147,7 +151,7 @@ impl Source<'_> {
             );
             return Err(self.error(name.span(), message));
         }
-        match printf_to_hashes(text) {
+        match super::pattern::to_hashes(text) {
             Ok(pattern) => Ok(pattern),
             Err(message) => Err(self.error(name.span(), message)),
         }
@@ -193,20 +197,66 @@ impl Source<'_> {
         })
     }
 
-    pub(super) fn check(&self, raw: RawCheck, frames: u32) -> Result<CheckSpec, ManifestError> {
-        if raw.frames.get_ref().is_empty() {
+    /// `[check] frames = [0, 125, 249]`: not empty, each in `0..frames`, no repeats.
+    fn frame_numbers(
+        &self,
+        list: &[Spanned<i64>],
+        span: std::ops::Range<usize>,
+        frames: u32,
+    ) -> Result<Vec<u32>, ManifestError> {
+        if list.is_empty() {
             let message = "[check] `frames` must list at least one frame";
-            return Err(self.error(raw.frames.span(), message));
+            return Err(self.error(span, message));
         }
-        let mut list = Vec::with_capacity(raw.frames.get_ref().len());
         let mut seen = HashSet::new();
-        for f in raw.frames.get_ref() {
+        let mut out = Vec::with_capacity(list.len());
+        for f in list {
             let frame = self.int(f, "check frame", 0..=i64::from(frames) - 1)? as u32;
             if !seen.insert(frame) {
                 return Err(self.error(f.span(), format!("frame {frame} is listed twice")));
             }
-            list.push(frame);
+            out.push(frame);
         }
+        Ok(out)
+    }
+
+    /// `[check] frames = "0-249x25"`: the fileseq grammar; an error points at its column
+    /// inside the string when the string is written without escapes.
+    fn frame_spec(
+        &self,
+        spec: &str,
+        span: std::ops::Range<usize>,
+        frames: u32,
+    ) -> Result<Vec<u32>, ManifestError> {
+        parse_frames(spec, frames).map_err(|e| {
+            let SelectError::Frames {
+                column, problem, ..
+            } = &e
+            else {
+                return self.error(span.clone(), e.to_string());
+            };
+            let literal = &self.text[span.clone()];
+            let plain = literal.len() == spec.len() + 2 && &literal[1..literal.len() - 1] == spec;
+            let offset = match plain {
+                true => {
+                    1 + spec
+                        .chars()
+                        .take(column - 1)
+                        .map(char::len_utf8)
+                        .sum::<usize>()
+                }
+                false => 0,
+            };
+            let at = span.start + offset..span.end;
+            self.error(at, format!("[check] `frames` {spec:?}: {problem}"))
+        })
+    }
+
+    pub(super) fn check(&self, raw: RawCheck, frames: u32) -> Result<CheckSpec, ManifestError> {
+        let list = match raw.frames.get_ref() {
+            RawFrames::List(list) => self.frame_numbers(list, raw.frames.span(), frames)?,
+            RawFrames::Spec(spec) => self.frame_spec(spec, raw.frames.span(), frames)?,
+        };
         let references = self.resolve(&raw.references, "references")?;
         let byte = |v: &Option<Spanned<i64>>, what, default| match v {
             Some(v) => self.int(v, what, 0..=255).map(|x| x as u8),
@@ -243,33 +293,6 @@ impl Source<'_> {
     }
 }
 
-/// `name` with a printf-style `%0Nd` (or `%d`) turned into N (or 4) `#`, as ffmpeg users
-/// write frame names; any other `%` conversion is refused.
-fn printf_to_hashes(name: &str) -> Result<String, String> {
-    let Some(start) = name.find('%') else {
-        return Ok(name.to_string());
-    };
-    let rest = &name[start + 1..];
-    let digits: String = rest.chars().take_while(|c| c.is_ascii_digit()).collect();
-    let after = &rest[digits.len()..];
-    let Some(tail) = after.strip_prefix('d') else {
-        return Err(format!(
-            "`name` {name:?}: the only printf conversion understood is %0Nd (the frame number); or write #### for it"
-        ));
-    };
-    if name[..start].contains('#') || tail.contains(['%', '#']) {
-        return Err(format!(
-            "`name` {name:?} gives the frame number twice: use one %0Nd or one run of #"
-        ));
-    }
-    let width = digits
-        .trim_start_matches('0')
-        .parse::<usize>()
-        .unwrap_or(4)
-        .clamp(1, 32);
-    Ok(format!("{}{}{tail}", &name[..start], "#".repeat(width)))
-}
-
 /// `<manifest name without .toml>-frames`, beside the manifest.
 fn default_dir(manifest: &Path) -> std::path::PathBuf {
     let name = manifest
@@ -279,20 +302,4 @@ fn default_dir(manifest: &Path) -> std::path::PathBuf {
     let stem = name.strip_suffix(".toml").unwrap_or(&name);
     let folder = manifest.parent().unwrap_or(Path::new(""));
     folder.join(format!("{stem}-frames"))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::printf_to_hashes;
-
-    #[test]
-    fn printf_patterns_become_hashes() {
-        assert_eq!(printf_to_hashes("img_%04d").unwrap(), "img_####");
-        assert_eq!(printf_to_hashes("%d-shot").unwrap(), "####-shot");
-        assert_eq!(printf_to_hashes("f%6d").unwrap(), "f######");
-        assert_eq!(printf_to_hashes("frame_####").unwrap(), "frame_####");
-        assert!(printf_to_hashes("img_%s").is_err());
-        assert!(printf_to_hashes("a%04d_%04d").is_err());
-        assert!(printf_to_hashes("##_%04d").is_err());
-    }
 }

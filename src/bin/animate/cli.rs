@@ -55,6 +55,12 @@ pub enum Command {
     /// Say which frames of the folder are up to date, stale or missing, from the frames'
     /// recorded provenance; renders nothing. Exit 0 all up to date, 1 not, 2 bad input.
     Status(StatusArgs),
+    /// Write a render-farm job template: an Open Job Description template (AWS Deadline
+    /// Cloud's format) with a chunked render step and a video step after it.
+    Job(JobArgs),
+    /// Print the predicted cost of the render per frame range and per shard, from a 1/8-size
+    /// pre-pass, and the wall time expected on this machine from one timed frame.
+    Estimate(EstimateArgs),
     /// Write quick pictures for people into a folder: a looping GIF of every frame at 1/K
     /// size, a contact sheet of every N-th frame and a plot of the camera and tracked paths.
     Preview(PreviewArgs),
@@ -121,7 +127,8 @@ pub struct Common {
     /// Worker threads (default: all cores).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     pub threads: Option<u32>,
-    /// Only these frames: `0-99`, `0,10,20-30` (inclusive ranges).
+    /// Only these frames, in fileseq's grammar: `0-99`, `0,10,20-30`, `0-99x5` (every 5th),
+    /// `0-99y5` (the others), `0-99:5` (coarse to fine: x5, x4, … x1); rendered in that order.
     #[arg(long, value_name = "LIST", allow_hyphen_values = true)]
     pub frames: Option<String>,
     /// No progress bar and no summary.
@@ -147,6 +154,10 @@ pub struct RenderArgs {
     /// index from a Slurm array job, Kubernetes Indexed Job or AWS Batch array job.
     #[arg(long, value_name = "K/N|auto")]
     pub shard: Option<Shard>,
+    /// Split the frames into shards of equal predicted cost (rays of a 1/8-size pre-pass)
+    /// instead of equal frame counts; still contiguous.
+    #[arg(long, requires = "shard")]
+    pub balance: bool,
     /// The number of tasks, for `--shard auto` under Kubernetes or AWS Batch (under Slurm
     /// it must agree with the array's size).
     #[arg(long, value_name = "N", requires = "shard",
@@ -287,4 +298,36 @@ pub struct StatusArgs {
     /// Print the states as JSON on standard output.
     #[arg(long)]
     pub json: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct JobArgs {
+    #[command(flatten)]
+    pub common: Common,
+    /// Write an Open Job Description template (the only kind for now).
+    #[arg(long, required = true)]
+    pub openjd: bool,
+    /// The frame folder the job renders into (default: the manifest's `[output] dir`).
+    #[arg(long, value_name = "DIR")]
+    pub out_dir: Option<PathBuf>,
+    /// Write the template into this file (default: standard output).
+    #[arg(short, long, value_name = "FILE")]
+    pub out: Option<PathBuf>,
+    /// Frames a task.
+    #[arg(long, value_name = "N", conflicts_with = "chunk_seconds",
+          value_parser = clap::value_parser!(u32).range(1..))]
+    pub chunk: Option<u32>,
+    /// About this many seconds a task, from the cost estimate (renders a pre-pass and one
+    /// frame to find out).
+    #[arg(long, value_name = "S", value_parser = clap::value_parser!(u32).range(1..))]
+    pub chunk_seconds: Option<u32>,
+}
+
+#[derive(Args, Debug)]
+pub struct EstimateArgs {
+    #[command(flatten)]
+    pub common: Common,
+    /// Also the predicted cost of each of N shards, balanced and by equal counts.
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    pub shards: u32,
 }

@@ -8,12 +8,18 @@ mod report;
 
 use anyhow::Context;
 use clap::Parser;
-use cli::{BlessArgs, CheckArgs, Cli, Command, PreviewArgs, RenderArgs, StatusArgs, ViewArgs};
+use cli::{
+    BlessArgs, CheckArgs, Cli, Command, EstimateArgs, JobArgs, PreviewArgs, RenderArgs, StatusArgs,
+    ViewArgs,
+};
 use std::process::ExitCode;
 use std::time::Instant;
 use whitted::anim::check::{self, CheckOptions};
-use whitted::anim::frames::run;
+use whitted::anim::frames::estimate::Estimate;
 use whitted::anim::frames::status::status;
+use whitted::anim::frames::{balance, run};
+use whitted::anim::job::{openjd_template, relative_to, Chunking};
+use whitted::anim::select::sorted;
 use whitted::anim::view::ViewOptions;
 use whitted::anim::{preview, AnimError, Animation, Reporter};
 use whitted::display::{Display, Tev};
@@ -32,7 +38,10 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
         let observer = tev_observer(addr, &anim);
         anim = anim.observed(observer);
     }
-    let frames = run::frames_of(&anim, c.frames.as_deref(), args.shard()?)?;
+    let frames = match args.balance {
+        true => balance::select_balanced(&project, &anim, c.frames.as_deref(), args.shard()?)?,
+        false => run::frames_of(&anim, c.frames.as_deref(), args.shard()?)?,
+    };
     let destination = args.destination(m)?;
     if !c.quiet {
         report::announce(&anim, frames.len(), args.stdout == Some(ImageFormat::Raw));
@@ -142,11 +151,22 @@ fn status_command(args: StatusArgs) -> anyhow::Result<Outcome> {
     let c = &args.common;
     let project = c.load()?;
     let (m, anim) = (&project.manifest, Animation::new(&project)?);
-    let frames = run::frames_of(&anim, c.frames.as_deref(), None)?;
+    let frames = sorted(&run::frames_of(&anim, c.frames.as_deref(), None)?);
     let dir = args.out.clone().unwrap_or_else(|| m.output.dir.clone());
-    let report = pool(c.threads)?.install(|| status(&anim, &dir, &frames));
+    let pool = pool(c.threads)?;
+    let report = pool.install(|| status(&anim, &dir, &frames));
     match args.json {
-        true => println!("{}", serde_json::to_string_pretty(&report.json(&dir))?),
+        true => {
+            let mut doc = report.json(&dir);
+            let costs = pool.install(|| balance::predicted_costs(&project, &anim, &frames))?;
+            let per_frame: serde_json::Map<String, serde_json::Value> = frames
+                .iter()
+                .zip(costs)
+                .map(|(f, c)| (f.to_string(), c.into()))
+                .collect();
+            doc["predicted_rays"] = per_frame.into();
+            println!("{}", serde_json::to_string_pretty(&doc)?)
+        }
         false => print!("{}", report.table(&dir)),
     }
     Ok(if report.complete() {
@@ -154,6 +174,69 @@ fn status_command(args: StatusArgs) -> anyhow::Result<Outcome> {
     } else {
         Outcome::Failed
     })
+}
+
+fn job(args: JobArgs) -> anyhow::Result<Outcome> {
+    let c = &args.common;
+    let project = c.load()?;
+    let (m, anim) = (&project.manifest, Animation::new(&project)?);
+    let frames = sorted(&run::frames_of(&anim, c.frames.as_deref(), None)?);
+    let chunking = match args.chunk_seconds {
+        Some(target) => {
+            let e = pool(c.threads)?.install(|| Estimate::new(&project, &anim, &frames))?;
+            let per_frame = e.seconds(e.total()) / frames.len().max(1) as f64;
+            Chunking::Seconds { target, per_frame }
+        }
+        None => Chunking::Frames(args.chunk.unwrap_or(10)),
+    };
+    let absolute = |p: &std::path::Path| std::path::absolute(p).unwrap_or(p.to_path_buf());
+    let out_dir = absolute(args.out_dir.as_deref().unwrap_or(&m.output.dir));
+    let manifest = absolute(c.manifest.as_deref().unwrap_or(std::path::Path::new("")));
+    // OpenJD wants the default paths relative to the template's folder.
+    let here = absolute(std::path::Path::new("."));
+    let folder = match &args.out {
+        Some(file) => match file.parent().filter(|p| !p.as_os_str().is_empty()) {
+            Some(parent) => absolute(parent),
+            None => here,
+        },
+        None => here,
+    };
+    let (manifest, out_dir) = (
+        relative_to(&manifest, &folder),
+        relative_to(&out_dir, &folder),
+    );
+    let template = openjd_template(m, &manifest, &out_dir, &frames, chunking);
+    let text = serde_json::to_string_pretty(&template)? + "\n";
+    match &args.out {
+        Some(file) => {
+            let write = || -> std::io::Result<()> {
+                let mut tmp = whitted::output::temp_beside(file)?;
+                std::io::Write::write_all(&mut tmp, text.as_bytes())?;
+                tmp.persist(file).map_err(|e| e.error)?;
+                Ok(())
+            };
+            write().with_context(|| format!("cannot write {}", file.display()))?
+        }
+        None => print!("{text}"),
+    }
+    if !c.quiet {
+        let size = chunking.size();
+        eprintln!(
+            "animate: an OpenJD template of {} frames in chunks of {size}",
+            frames.len()
+        );
+    }
+    Ok(Outcome::Success)
+}
+
+fn estimate(args: EstimateArgs) -> anyhow::Result<Outcome> {
+    let c = &args.common;
+    let project = c.load()?;
+    let anim = Animation::new(&project)?;
+    let frames = run::frames_of(&anim, c.frames.as_deref(), None)?;
+    let e = pool(c.threads)?.install(|| Estimate::new(&project, &anim, &frames))?;
+    print!("{}", e.table(args.shards));
+    Ok(Outcome::Success)
 }
 
 fn preview(args: PreviewArgs) -> anyhow::Result<Outcome> {
@@ -179,6 +262,8 @@ fn main() -> ExitCode {
         Some(Command::Check(args)) => check_command(args),
         Some(Command::Status(args)) => status_command(args),
         Some(Command::Preview(args)) => preview(args),
+        Some(Command::Job(args)) => job(args),
+        Some(Command::Estimate(args)) => estimate(args),
         Some(Command::View(args)) => view(args),
     };
     match result {

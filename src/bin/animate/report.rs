@@ -171,10 +171,17 @@ fn anim_message(e: &AnimError) -> String {
 }
 
 /// A frame list's error names `--frames`, the only place a list comes from on the
-/// command line.
+/// command line, and shows the list with a caret under the column.
 fn select_message(e: &SelectError) -> String {
     match e {
-        SelectError::Frames { list, problem } => format!("--frames {list:?}: {problem}"),
+        SelectError::Frames {
+            list,
+            column,
+            problem,
+        } => {
+            let caret = e.caret().unwrap_or_default();
+            format!("--frames {list:?}, column {column}: {problem}\n{caret}")
+        }
         SelectError::Shard(_) => e.to_string(),
     }
 }
@@ -222,14 +229,12 @@ mod tests {
         assert_eq!(outcome(&e), Outcome::BadInput);
         let e = anyhow::Error::from(PreviewError::ZeroEvery);
         assert!(message(&e).starts_with("--every 0"), "{}", message(&e));
-        let list = || parse_frames("3-1", 12).unwrap_err();
+        let list = || parse_frames("3-1x0", 12).unwrap_err();
         let e = anyhow::Error::from(AnimError::from(list()));
-        assert_eq!(
-            message(&e),
-            "--frames \"3-1\": the range 3-1 runs backwards"
-        );
+        let said = "--frames \"3-1x0\", column 5: the step must not be 0\n  3-1x0\n      ^";
+        assert_eq!(message(&e), said);
         assert_eq!(outcome(&e), Outcome::BadInput);
         let e = with_flags(CheckError::Frames(list()));
-        assert_eq!(e.0, "--frames \"3-1\": the range 3-1 runs backwards");
+        assert_eq!(e.0, said);
     }
 }

@@ -1,7 +1,6 @@
-//! Which frames a run renders: a frame list `0-99,120` (inclusive ranges, as render farms
-//! write them) and a shard, the K-th of N contiguous chunks (0-based, sizes differing by
-//! at most one). A shard is written `K/N` or `auto`; `auto` reads the task's index from
-//! the render farm's environment (SPEC §9):
+//! Shards: the K-th of N contiguous chunks of a run's frames (0-based, sizes differing by
+//! at most one), written `K/N`, or `auto`: the task's index from the render farm's
+//! environment (SPEC §9):
 //!
 //! ```text
 //! Slurm array job          SLURM_ARRAY_TASK_ID − SLURM_ARRAY_TASK_MIN (÷ SLURM_ARRAY_TASK_STEP)
@@ -9,57 +8,8 @@
 //! Kubernetes Indexed Job   JOB_COMPLETION_INDEX       of the count the user gives
 //! AWS Batch array job      AWS_BATCH_JOB_ARRAY_INDEX  of the count the user gives
 //! ```
-//!
-//! A shard splits the frames the run would otherwise render, so a list and a shard
-//! compose. The camera's time always comes from the whole sequence, so a subset renders
-//! exactly the frames a full run would.
 
-use std::collections::BTreeSet;
 use std::str::FromStr;
-
-/// A bad frame list or shard.
-#[derive(Debug, thiserror::Error, PartialEq, Eq)]
-pub enum SelectError {
-    /// The frame list `list` (as the user wrote it) cannot be read or names a frame the
-    /// sequence does not have.
-    #[error("frame list {list:?}: {problem}")]
-    Frames {
-        /// The list as given, e.g. `"0-3,9"`.
-        list: String,
-        /// What is wrong with it.
-        problem: ListProblem,
-    },
-    /// The shard cannot be parsed or resolved.
-    #[error(transparent)]
-    Shard(#[from] ShardError),
-}
-
-/// What is wrong with a frame list.
-#[derive(Debug, thiserror::Error, PartialEq, Eq)]
-pub enum ListProblem {
-    /// Two commas in a row, or a comma at either end (or an empty list).
-    #[error("an empty item (two commas, or a comma at an end)")]
-    EmptyItem,
-    /// An item or range end that is not a whole number ≥ 0 (the text found).
-    #[error("'{0}' is not a frame number")]
-    NotANumber(String),
-    /// A range `lo-hi` with `lo > hi`.
-    #[error("the range {lo}-{hi} runs backwards")]
-    Backwards {
-        /// The range's first frame.
-        lo: u32,
-        /// The range's last frame, below `lo`.
-        hi: u32,
-    },
-    /// A frame at or past the sequence's frame count.
-    #[error("frame {frame} is past the last frame, {last}")]
-    PastTheEnd {
-        /// The frame asked for.
-        frame: u32,
-        /// The sequence's last frame (count − 1).
-        last: u32,
-    },
-}
 
 /// Why a shard cannot be parsed or resolved. `count_name` is how the caller lets the user
 /// give the task count (the binary passes its option's name).
@@ -298,56 +248,6 @@ pub fn process_env(var: &str) -> Option<String> {
     std::env::var(var).ok()
 }
 
-/// The frames of a run over a `total`-frame sequence: all, or the `frames` list, then
-/// chunk `(index, count)` of that.
-pub fn select(
-    total: u32,
-    frames: Option<&str>,
-    shard: Option<(u32, u32)>,
-) -> Result<Vec<u32>, SelectError> {
-    let mut list = match frames {
-        Some(spec) => parse_frames(spec, total)?,
-        None => (0..total).collect(),
-    };
-    if let Some((k, n)) = shard {
-        list = self::shard(&list, k, n);
-    }
-    Ok(list)
-}
-
-/// Parses a frame list (`0-3,9`) against a sequence of `frames` frames: sorted, without
-/// repeats.
-pub fn parse_frames(spec: &str, frames: u32) -> Result<Vec<u32>, SelectError> {
-    let err = |problem| SelectError::Frames {
-        list: spec.to_string(),
-        problem,
-    };
-    let mut set = BTreeSet::new();
-    for part in spec.split(',').map(str::trim) {
-        if part.is_empty() {
-            return Err(err(ListProblem::EmptyItem));
-        }
-        let (lo, hi) = match part.split_once('-') {
-            Some((a, b)) => (a.trim(), b.trim()),
-            None => (part, part),
-        };
-        let num = |s: &str| {
-            s.parse::<u32>()
-                .map_err(|_| err(ListProblem::NotANumber(s.to_string())))
-        };
-        let (lo, hi) = (num(lo)?, num(hi)?);
-        if lo > hi {
-            return Err(err(ListProblem::Backwards { lo, hi }));
-        }
-        if hi >= frames {
-            let last = frames.saturating_sub(1);
-            return Err(err(ListProblem::PastTheEnd { frame: hi, last }));
-        }
-        set.extend(lo..=hi);
-    }
-    Ok(set.into_iter().collect())
-}
-
 /// The K-th of N contiguous chunks of `frames`: chunk k is `frames[k·L/N .. (k+1)·L/N]`.
 pub fn shard(frames: &[u32], k: u32, n: u32) -> Vec<u32> {
     let len = frames.len() as u64;
@@ -359,37 +259,6 @@ pub fn shard(frames: &[u32], k: u32, n: u32) -> Vec<u32> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn ranges_and_singles() {
-        assert_eq!(
-            parse_frames("0-3,10, 7", 20).unwrap(),
-            vec![0, 1, 2, 3, 7, 10]
-        );
-        assert_eq!(parse_frames("5", 6).unwrap(), vec![5]);
-        assert_eq!(parse_frames("2-4,3-5", 6).unwrap(), vec![2, 3, 4, 5]);
-    }
-
-    #[test]
-    fn bad_lists() {
-        let problem = |spec: &str| match parse_frames(spec, 6) {
-            Err(SelectError::Frames { list, problem }) if list == spec => problem,
-            other => panic!("{spec}: {other:?}"),
-        };
-        use ListProblem::*;
-        assert_eq!(problem("6"), PastTheEnd { frame: 6, last: 5 });
-        assert_eq!(problem("4-2"), Backwards { lo: 4, hi: 2 });
-        assert_eq!(problem("1,,2"), EmptyItem);
-        assert_eq!(problem("a-2"), NotANumber("a".into()));
-        assert_eq!(problem("-1"), NotANumber("".into()));
-        assert_eq!(problem(""), EmptyItem);
-        // The message names the list, not the option it came from.
-        let e = parse_frames("4-2", 6).unwrap_err();
-        assert_eq!(
-            e.to_string(),
-            "frame list \"4-2\": the range 4-2 runs backwards"
-        );
-    }
 
     #[test]
     fn shards_cover_everything_once_with_near_equal_sizes() {
@@ -405,16 +274,6 @@ mod tests {
         // 10 frames in 3 shards: 3, 3, 4.
         assert_eq!(shard(&(0..10).collect::<Vec<_>>(), 0, 3), vec![0, 1, 2]);
         assert_eq!(shard(&(0..10).collect::<Vec<_>>(), 2, 3), vec![6, 7, 8, 9]);
-    }
-
-    #[test]
-    fn shard_of_a_subset() {
-        assert_eq!(select(10, None, None).unwrap(), (0..10).collect::<Vec<_>>());
-        // Frames 2..=7 are six; the second of two halves is 5, 6, 7.
-        assert_eq!(
-            select(10, Some("2-7"), Some((1, 2))).unwrap(),
-            vec![5, 6, 7]
-        );
     }
 
     #[test]

@@ -1,0 +1,88 @@
+//! `--shard K/N --balance` on animations/turn-to-glass.toml, whose frames differ more than
+//! 8× in cost: 4 balanced shards have predicted costs within 10 % of each other where the
+//! 4 equal-count shards differ more than 3×; the balanced shards render every frame once,
+//! into the bytes of a plain run; `estimate` and `status --json` report the predictions.
+
+mod support;
+
+use std::path::Path;
+use support::*;
+use whitted::anim::frames::balance::{predicted_costs, split};
+use whitted::anim::{Animation, Project};
+
+const MANIFEST: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/animations/turn-to-glass.toml");
+
+#[test]
+fn balanced_shards_of_a_turn_to_glass_have_equal_predicted_costs() {
+    let project = Project::load(Path::new(MANIFEST)).unwrap();
+    let anim = Animation::new(&project).unwrap();
+    let frames: Vec<u32> = (0..project.manifest.frames).collect();
+    let costs = predicted_costs(&project, &anim, &frames).unwrap();
+    // The same prediction every time (ray counts, not times).
+    assert_eq!(costs, predicted_costs(&project, &anim, &frames).unwrap());
+    let (lo, hi) = (costs.iter().min().unwrap(), costs.iter().max().unwrap());
+    assert!(*hi >= 8 * lo, "frames differ only {hi}/{lo}");
+    let sums = |b: &[usize]| -> Vec<u64> {
+        b.windows(2)
+            .map(|w| costs[w[0]..w[1]].iter().sum())
+            .collect()
+    };
+    let balanced = sums(&split(&costs, 4));
+    let equal = sums(&[0, 16, 32, 48, 64]);
+    let ratio = |s: &[u64]| *s.iter().max().unwrap() as f64 / *s.iter().min().unwrap() as f64;
+    assert!(ratio(&balanced) <= 1.10, "balanced {balanced:?}");
+    assert!(ratio(&equal) >= 3.0, "equal counts {equal:?}");
+}
+
+#[test]
+fn balanced_shards_render_every_frame_once_into_the_plain_bytes() {
+    // The small manifest of the other farm tests, with a `[render]` size: 12 frames.
+    let (dir, manifest) = project(&circle_manifest("\n[render]\nwidth = 48\nheight = 36\n"));
+    render_into(&manifest, &dir.path().join("plain"), &[]);
+    let out = dir.path().join("farm");
+    let mut seen = 0;
+    for k in 0..4 {
+        let shard = format!("{k}/4");
+        animate()
+            .arg(&manifest)
+            .args(["--shard", &shard, "--balance", "--quiet", "-o"])
+            .arg(&out)
+            .assert()
+            .success();
+        let now = files(&out).len();
+        assert!(now >= seen, "{shard}");
+        seen = now;
+    }
+    assert_eq!(files(&out), files(&dir.path().join("plain")));
+    // --balance needs a shard.
+    animate().arg(&manifest).arg("--balance").assert().code(2);
+}
+
+#[test]
+fn estimate_and_status_report_the_prediction() {
+    let (_dir, manifest) = project(&circle_manifest(""));
+    let out = animate()
+        .args(["estimate"])
+        .arg(&manifest)
+        .args(["--shards", "3"])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{text}");
+    assert!(text.starts_with("frames 0-11: "), "{text}");
+    assert!(text.contains("3 balanced shards (--balance):"), "{text}");
+    assert!(
+        text.contains("3 shards of equal frame counts:\n0-3 "),
+        "{text}"
+    );
+    let out = animate()
+        .arg("status")
+        .arg(&manifest)
+        .arg("--json")
+        .output()
+        .unwrap();
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let rays = doc["predicted_rays"].as_object().unwrap();
+    assert_eq!(rays.len(), 12);
+    assert!(rays["0"].as_u64().unwrap() > 0);
+}
