@@ -11,6 +11,9 @@ use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
 
+pub mod adaptive;
+pub use adaptive::{render_add_with, render_with, Adaptive, Antialias};
+
 /// An 8-bit RGB image, rows top to bottom.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Frame {
