@@ -43,6 +43,7 @@
 //! flip = 0.05                      # optional: also fail when the mean FLIP error is above
 //! ```
 
+mod antialias;
 mod camera;
 mod locate;
 mod raw;
@@ -115,6 +116,8 @@ pub struct RenderSpec {
     pub samples: u32,
     /// Sub-frames averaged over the shutter, when `[render] motion_blur` is set.
     pub motion_blur: Option<MotionBlur>,
+    /// Adaptive anti-aliasing instead of the grid, when `antialias` is set (SPEC §15).
+    pub antialias: Option<crate::render::Adaptive>,
 }
 
 /// `[check]`, paths resolved.

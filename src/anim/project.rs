@@ -14,7 +14,7 @@ use crate::accel::Accel;
 use crate::camera::Camera;
 use crate::limits::size_ok;
 use crate::output::ImageFormat;
-use crate::render::{render, render_add, Frame};
+use crate::render::{render_add_with, render_with, Adaptive, Antialias, Frame};
 use crate::scene::{Scene, SceneError};
 use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
@@ -63,6 +63,10 @@ pub struct Settings {
     pub samples: u32,
     /// The motion blur, if any.
     pub motion_blur: Option<MotionBlur>,
+    /// Adaptive anti-aliasing, if set (left out of the digest's JSON when not, so that
+    /// frames drawn before it existed stay up to date).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub antialias: Option<Adaptive>,
     /// The file format the frame is written in.
     pub format: ImageFormat,
     /// `PIXEL_VERSION` of the library that drew it.
@@ -81,6 +85,8 @@ pub struct Animation<'p> {
     pub height: u32,
     /// n of the n×n supersampling grid.
     pub samples: u32,
+    /// Adaptive anti-aliasing instead of the grid, when the manifest asks for it.
+    pub antialias: Option<Adaptive>,
     /// The acceleration structure every frame shares, when no track moves geometry.
     shared: Option<Arc<Accel>>,
 }
@@ -117,6 +123,7 @@ impl<'p> Animation<'p> {
             width,
             height,
             samples: project.manifest.render.samples.max(1),
+            antialias: project.manifest.render.antialias,
             shared,
         })
     }
@@ -150,19 +157,22 @@ impl<'p> Animation<'p> {
     /// its camera; with motion blur the mean of its sub-frames (each sample clamped, all
     /// averaged, then rounded).
     pub fn render(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
-        let (w, h, n) = (self.width, self.height, self.samples);
+        let (w, h) = (self.width, self.height);
+        let n = self
+            .antialias
+            .map_or(Antialias::Grid(self.samples), Antialias::Adaptive);
         let times = self.timeline.times(frame);
         if let [t] = times[..] {
             let state = self.timeline.at(t);
             let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
-            return Ok(render(&self.tracer(&state.scene), &camera, w, h, n));
+            return Ok(render_with(&self.tracer(&state.scene), &camera, w, h, n));
         }
         let mut sum = vec![Color::ZERO; w as usize * h as usize];
         let mut rays = RayCount::default();
         for &t in &times {
             let state = self.timeline.at(t);
             let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
-            rays = rays + render_add(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
+            rays = rays + render_add_with(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
         }
         Ok((Frame::from_sum(&sum, times.len() as u32, w, h), rays))
     }
@@ -179,6 +189,7 @@ impl<'p> Animation<'p> {
             height: self.height,
             samples: self.samples,
             motion_blur: self.timeline.blur,
+            antialias: self.antialias,
             format: self.format(),
             pixel_version: PIXEL_VERSION,
         }
