@@ -1,8 +1,9 @@
-//! The command line's spelling of adaptive anti-aliasing, `adaptive[:T[:D]]`
-//! (`raytrace --aa adaptive:0.1:3`), and the bounds every spelling obeys: 0 ≤ T ≤ 3,
-//! 0 ≤ D ≤ `MAX_DEPTH`.
+//! The command line's spelling of adaptive anti-aliasing, `adaptive[:T[:D[:MEASURE]]]`
+//! (`raytrace --aa adaptive:0.1:3`; MEASURE `sum`, the default, or `max`, for the
+//! measurements of benches/pov/adaptive.sh), and the bounds every spelling obeys:
+//! 0 ≤ T ≤ 3, 0 ≤ D ≤ `MAX_DEPTH`.
 
-use super::{Adaptive, MAX_DEPTH, MAX_THRESHOLD};
+use super::{Adaptive, Measure, MAX_DEPTH, MAX_THRESHOLD};
 use std::str::FromStr;
 use thiserror::Error;
 
@@ -10,7 +11,7 @@ use thiserror::Error;
 #[derive(Debug, Error, PartialEq)]
 pub enum AntialiasError {
     /// Not `adaptive[:T[:D]]`.
-    #[error("expected adaptive[:THRESHOLD[:DEPTH]], e.g. adaptive:0.1:3, found {0:?}")]
+    #[error("expected adaptive[:THRESHOLD[:DEPTH[:sum|max]]], e.g. adaptive:0.1:3, found {0:?}")]
     Syntax(String),
     /// A threshold out of 0..=3 (or not a number).
     #[error("the threshold must be a number from 0 to 3, found {0}")]
@@ -62,10 +63,18 @@ impl FromStr for Adaptive {
             ),
             None => None,
         };
+        let measure = match parts.next() {
+            None | Some("sum") => Measure::Sum,
+            Some("max") => Measure::Max,
+            Some(_) => return Err(AntialiasError::Syntax(s.to_string())),
+        };
         if parts.next().is_some() {
             return Err(AntialiasError::Syntax(s.to_string()));
         }
-        Adaptive::with(threshold, depth)
+        Ok(Adaptive {
+            measure,
+            ..Adaptive::with(threshold, depth)?
+        })
     }
 }
 
@@ -79,7 +88,9 @@ mod tests {
         let a: Adaptive = "adaptive:0.3".parse().unwrap();
         assert_eq!((a.threshold, a.depth), (0.3, Adaptive::DEFAULT.depth));
         let a: Adaptive = "adaptive:0:5".parse().unwrap();
-        assert_eq!((a.threshold, a.depth), (0.0, 5));
+        assert_eq!((a.threshold, a.depth, a.measure), (0.0, 5, Measure::Sum));
+        let a: Adaptive = "adaptive:0.2:2:max".parse().unwrap();
+        assert_eq!((a.threshold, a.depth, a.measure), (0.2, 2, Measure::Max));
     }
 
     #[test]
@@ -87,6 +98,7 @@ mod tests {
         let bad = |s: &str| s.parse::<Adaptive>().unwrap_err();
         assert!(matches!(bad("grid"), AntialiasError::Syntax(_)));
         assert!(matches!(bad("adaptive:0.1:3:1"), AntialiasError::Syntax(_)));
+        assert!(matches!(bad("adaptive:0.1:3:max:1"), AntialiasError::Syntax(_)));
         assert!(matches!(bad("adaptive:x"), AntialiasError::Threshold(_)));
         assert!(matches!(bad("adaptive:-0.1"), AntialiasError::Threshold(_)));
         assert!(matches!(bad("adaptive:3.5"), AntialiasError::Threshold(_)));
