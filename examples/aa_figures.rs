@@ -16,7 +16,9 @@ use whitted::render::Frame;
 use whitted::{trace::Tracer, Scene};
 
 fn load(path: &str) -> anyhow::Result<Frame> {
-    let img = image::open(path).with_context(|| path.to_string())?.to_rgb8();
+    let img = image::open(path)
+        .with_context(|| path.to_string())?
+        .to_rgb8();
     Ok(Frame {
         width: img.width(),
         height: img.height(),
@@ -53,7 +55,8 @@ fn heat(scene: &str, out: &str, aa: Adaptive) -> anyhow::Result<()> {
         .iter()
         .map(|&n| (n as f32).log2() / top)
         .collect();
-    let map = nv_flip::FlipImageFloat::with_data(w, h, &values).apply_color_lut(&nv_flip::magma_lut());
+    let map =
+        nv_flip::FlipImageFloat::with_data(w, h, &values).apply_color_lut(&nv_flip::magma_lut());
     image::save_buffer(out, &map.to_vec(), w, h, image::ExtendedColorType::Rgb8)?;
     let split = done.leaves.iter().filter(|&&n| n > 1).count();
     println!(

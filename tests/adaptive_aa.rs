@@ -33,8 +33,8 @@ fn raytrace_adaptive_is_the_same_on_one_and_two_threads_and_differs_from_the_gri
     let dir = tempfile::tempdir().unwrap();
     write_scene(dir.path());
     let d = dir.path();
-    let one = raytrace_ok(d, &["--aa", "adaptive:0.1:3", "--threads", "1"], "one.png");
-    raytrace_ok(d, &["--aa", "adaptive:0.1:3", "--threads", "2"], "two.png");
+    let one = raytrace_ok(d, &["--aa", "adaptive:0.5:3", "--threads", "1"], "one.png");
+    raytrace_ok(d, &["--aa", "adaptive:0.5:3", "--threads", "2"], "two.png");
     raytrace_ok(d, &["--aa", "adaptive", "--threads", "2"], "default.png");
     raytrace_ok(d, &[], "plain.png");
     raytrace_ok(d, &["--aa", "adaptive:0.1:0"], "corners.png");
@@ -43,10 +43,16 @@ fn raytrace_adaptive_is_the_same_on_one_and_two_threads_and_differs_from_the_gri
     assert_eq!(a, pixels(&d.join("default.png")));
     assert_ne!(a, pixels(&d.join("plain.png")));
     assert_ne!(a, pixels(&d.join("corners.png")));
-    assert!(one.contains("adaptive 0.1 depth 3"), "{one}");
+    assert!(one.contains("adaptive 0.5 depth 3"), "{one}");
     // Depth 0 casts exactly the (64+1)·(48+1) corner rays.
     let corners = raytrace_ok(d, &["--aa", "adaptive:0.1:0"], "corners.png");
-    assert!(corners.contains(&format!("{:.3} camera rays/px", 65.0 * 49.0 / (64.0 * 48.0))), "{corners}");
+    assert!(
+        corners.contains(&format!(
+            "{:.3} camera rays/px",
+            65.0 * 49.0 / (64.0 * 48.0)
+        )),
+        "{corners}"
+    );
 }
 
 #[test]
@@ -57,7 +63,10 @@ fn raytrace_refuses_bad_adaptive_settings() {
         (&["--aa", "adaptive:5"][..], "threshold must be"),
         (&["--aa", "adaptive:0.1:9"], "depth must be"),
         (&["--aa", "grid"], "expected adaptive"),
-        (&["--aa", "adaptive", "--samples", "2"], "cannot be used with"),
+        (
+            &["--aa", "adaptive", "--samples", "2"],
+            "cannot be used with",
+        ),
     ] {
         let o = raytrace()
             .current_dir(dir.path())
@@ -93,7 +102,13 @@ fn animate_adaptive_frames_are_the_same_whole_sharded_and_threaded() {
 
 /// `animate status MANIFEST -o OUT`: its exit status.
 fn status(manifest: &Path, out: &Path) -> Option<i32> {
-    let o = animate().arg("status").arg(manifest).arg("-o").arg(out).output().unwrap();
+    let o = animate()
+        .arg("status")
+        .arg(manifest)
+        .arg("-o")
+        .arg(out)
+        .output()
+        .unwrap();
     o.status.code()
 }
 
@@ -103,7 +118,8 @@ fn the_settings_are_part_of_the_digest() {
     let out = dir.path().join("out");
     render_into(&manifest, &out, &[]);
     assert_eq!(status(&manifest, &out), Some(0));
-    let stamp = String::from_utf8_lossy(&std::fs::read(out.join("frame_0000.png")).unwrap()).into_owned();
+    let stamp =
+        String::from_utf8_lossy(&std::fs::read(out.join("frame_0000.png")).unwrap()).into_owned();
     assert!(stamp.contains("adaptive anti-aliasing threshold 0.1 depth 3"));
     for other in [
         AA.replace("threshold = 0.1", "threshold = 0.2"),
@@ -114,7 +130,11 @@ fn the_settings_are_part_of_the_digest() {
         assert_eq!(status(&manifest, &out), Some(1), "{other}");
     }
     // A resumed run after a change redraws the frames as a fresh run would.
-    std::fs::write(&manifest, circle_manifest(&AA.replace("depth = 3", "depth = 2"))).unwrap();
+    std::fs::write(
+        &manifest,
+        circle_manifest(&AA.replace("depth = 3", "depth = 2")),
+    )
+    .unwrap();
     render_into(&manifest, &out, &["--resume"]);
     assert_eq!(status(&manifest, &out), Some(0));
     let fresh = dir.path().join("fresh");
@@ -147,5 +167,8 @@ fn manifest_refusals_are_located() {
     let o = animate().arg(&manifest).output().unwrap();
     assert_eq!(o.status.code(), Some(2));
     let err = String::from_utf8_lossy(&o.stderr);
-    assert!(err.contains("anim.toml:18:") && err.contains("threshold must be"), "{err}");
+    assert!(
+        err.contains("anim.toml:18:") && err.contains("threshold must be"),
+        "{err}"
+    );
 }

@@ -38,7 +38,7 @@ struct Args {
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=16))]
     samples: u32,
     /// Adaptive anti-aliasing instead of the grid (SPEC §15): pixel corners shared, squares
-    /// split where corners differ by more than THRESHOLD (0..=3, default 0.1), down to
+    /// split where corners differ by more than THRESHOLD (0..=3, default 0.5), down to
     /// DEPTH (0..=6, default 3).
     #[arg(long, value_name = "adaptive[:T[:D]]", conflicts_with = "samples",
           value_parser = |s: &str| s.parse::<Adaptive>().map_err(|e| e.to_string()))]
@@ -90,7 +90,10 @@ fn run(args: Args) -> anyhow::Result<()> {
         };
         eprintln!(
             "raytrace: wrote {} ({}×{}, {n}) in {traced:.3} s: {} rays, {mrays:.2} Mrays/s",
-            out.display(), frame.width, frame.height, rays.total()
+            out.display(),
+            frame.width,
+            frame.height,
+            rays.total()
         );
     }
     Ok(())

@@ -6,15 +6,15 @@
 //!
 //! ```toml
 //! [render]
-//! antialias = { mode = "adaptive", threshold = 0.1, depth = 3 }   # raytrace --aa adaptive:0.1:3
+//! antialias = { mode = "adaptive", threshold = 0.5, depth = 3 }   # raytrace --aa adaptive:0.5:3
 //! ```
 //!
 //! Determinism. Every sample sits on the lattice of pitch 2^−D and is named by its
 //! integer lattice coordinates (X, Y); its colour is a function of (X, Y) alone (the ray
 //! through the point X·2^−D, Y·2^−D, exact in binary). The pixel corners (the multiples
 //! of 2^D) are traced first, in parallel over lattice rows, into one array. The finer
-//! samples are traced on demand, each exactly once whichever tile or thread asks first
-//! (`Memo`: a cell per point, initialised once), so the pixels' colours, and the ray
+//! samples are traced on demand and kept in a map per pixel row, each counted once
+//! whichever tile or thread asks first, so the pixels' colours, and the ray
 //! counts, do not depend on the thread count, the shard or the tile size. Tiles of
 //! `tile`×`tile` pixels are the parallel work units.
 //!
@@ -30,8 +30,9 @@ use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
 use serde::Serialize;
+use std::collections::hash_map::Entry;
 use std::collections::HashMap;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::Mutex;
 
 mod parse;
 #[cfg(test)]
@@ -71,7 +72,7 @@ impl Adaptive {
     /// The defaults: the threshold whose images are as close to a 16×16 reference as
     /// POV-Ray's `+AM2 +A0.3 +R3` are to its own (benches/pov/adaptive.sh).
     pub const DEFAULT: Adaptive = Adaptive {
-        threshold: 0.1,
+        threshold: 0.5,
         depth: 3,
         measure: Measure::Sum,
     };
@@ -170,7 +171,7 @@ struct Lattice<'a> {
     /// The pixel corners, (width+1)·(height+1), rows top to bottom.
     corners: Vec<Color>,
     /// The finer samples, one map per pixel row (its inside and its bottom edge).
-    memo: Vec<Mutex<HashMap<(u32, u32), Arc<OnceLock<Color>>>>>,
+    memo: Vec<Mutex<HashMap<(u32, u32), Color>>>,
 }
 
 impl Lattice<'_> {
@@ -182,9 +183,7 @@ impl Lattice<'_> {
             (y >> self.depth).min(self.height - 1),
         );
         let hint = self.view.map(|v| v.hint(i, j));
-        let ray = self
-            .camera
-            .ray(f64::from(x) * step, f64::from(y) * step);
+        let ray = self.camera.ray(f64::from(x) * step, f64::from(y) * step);
         self.tracer
             .primary_in(hint, &ray, count)
             .clamp(Color::ZERO, Color::ONE)
@@ -202,13 +201,26 @@ impl Lattice<'_> {
         } else {
             (y >> self.depth).min(self.height - 1)
         };
-        let cell = {
-            let mut map = self.memo[row as usize]
+        let lock = || {
+            self.memo[row as usize]
                 .lock()
-                .unwrap_or_else(|e| e.into_inner());
-            Arc::clone(map.entry((x, y)).or_default())
+                .unwrap_or_else(|e| e.into_inner())
         };
-        *cell.get_or_init(|| self.trace(x, y, count))
+        if let Some(&c) = lock().get(&(x, y)) {
+            return c;
+        }
+        // Traced outside the lock; when another thread traced the point meanwhile (only
+        // on a pixel row's top or bottom edge), the colours are the same and the first
+        // one's rays are the ones counted: each point counts once, whoever traced it.
+        let mut own = RayCount::default();
+        let c = self.trace(x, y, &mut own);
+        match lock().entry((x, y)) {
+            Entry::Occupied(first) => *first.get(),
+            Entry::Vacant(slot) => {
+                *count = *count + own;
+                *slot.insert(c)
+            }
+        }
     }
 }
 

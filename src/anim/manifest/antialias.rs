@@ -2,7 +2,7 @@
 //!
 //! ```toml
 //! [render]
-//! antialias = { mode = "adaptive", threshold = 0.1, depth = 3 }  # mode required; threshold
+//! antialias = { mode = "adaptive", threshold = 0.5, depth = 3 }  # mode required; threshold
 //!                                                                 # 0..=3, depth 0..=6
 //! ```
 //!
@@ -29,7 +29,8 @@ impl Source<'_> {
             return Err(self.error(a.mode.span(), message));
         }
         if let Some(s) = samples.as_ref().filter(|s| *s.get_ref() > 1) {
-            let message = "`samples` above 1 and `antialias` cannot both be set: choose the grid or adaptive";
+            let message =
+                "`samples` above 1 and `antialias` cannot both be set: choose the grid or adaptive";
             return Err(self.error(s.span(), message));
         }
         let threshold = a.threshold.as_ref().map(|t| *t.get_ref());
@@ -78,13 +79,19 @@ mod tests {
     fn bad_settings_are_located() {
         let bad = |r: &str| load(r).unwrap_err();
         let e = bad("antialias = { mode = \"grid\" }");
-        assert!(e.contains("4:22") && e.contains("unknown antialias mode `grid`"), "{e}");
+        assert!(
+            e.contains("4:22") && e.contains("unknown antialias mode `grid`"),
+            "{e}"
+        );
         let e = bad("antialias = { mode = \"adaptive\", threshold = 4.0 }");
         assert!(e.contains("4:46") && e.contains("threshold must be"), "{e}");
         let e = bad("antialias = { mode = \"adaptive\", depth = 9 }");
         assert!(e.contains("4:42") && e.contains("depth must be"), "{e}");
         let e = bad("samples = 2\nantialias = { mode = \"adaptive\" }");
-        assert!(e.contains("4:11") && e.contains("cannot both be set"), "{e}");
+        assert!(
+            e.contains("4:11") && e.contains("cannot both be set"),
+            "{e}"
+        );
         let e = bad("antialias = { mode = \"adaptive\", treshold = 0.1 }");
         assert!(e.contains("did you mean `threshold`"), "{e}");
     }

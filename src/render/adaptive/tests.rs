@@ -84,7 +84,12 @@ fn the_two_measures() {
     assert!(!max.differ(&c));
     assert!(!aa(0.3 + 1e-9, 3).differ(&c));
     // A diagonal pair counts too.
-    let diagonal = [BLACK, Color::splat(0.05), Color::splat(0.05), Color::splat(0.1)];
+    let diagonal = [
+        BLACK,
+        Color::splat(0.05),
+        Color::splat(0.05),
+        Color::splat(0.1),
+    ];
     assert!(aa(0.25, 3).differ(&diagonal));
 }
 
@@ -109,7 +114,10 @@ fn a_flat_scene_casts_only_its_corner_rays() {
     assert_eq!(out.rays.primary, 5 * 4);
     assert_eq!(out.rays.total(), 5 * 4);
     let c = Color::new(0.3, 0.6, 0.9) * 0.2;
-    assert!(out.colors.iter().all(|p| (*p - c).abs().max_element() < 1e-15));
+    assert!(out
+        .colors
+        .iter()
+        .all(|p| (*p - c).abs().max_element() < 1e-15));
     assert!(out.leaves.iter().all(|&n| n == 1));
 }
 
@@ -138,12 +146,20 @@ fn same_colours_and_rays_whatever_the_tiles_and_threads() {
     let tracer = Tracer::new(&scene);
     let camera = scene.camera();
     let a = aa(0.1, 3);
-    let pool = |n| rayon::ThreadPoolBuilder::new().num_threads(n).build().unwrap();
+    let pool = |n| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .unwrap()
+    };
     let reference = pool(1).install(|| trace(&tracer, &camera, w, h, a, 1));
     assert!(reference.leaves.iter().any(|&n| n > 1));
     for (threads, tile) in [(1, 32), (2, 1), (2, 5), (2, 32), (3, 7)] {
         let out = pool(threads).install(|| trace(&tracer, &camera, w, h, a, tile));
-        assert_eq!(out.colors, reference.colors, "{threads} threads, tile {tile}");
+        assert_eq!(
+            out.colors, reference.colors,
+            "{threads} threads, tile {tile}"
+        );
         assert_eq!(out.leaves, reference.leaves);
         assert_eq!(out.rays, reference.rays);
     }
@@ -157,7 +173,10 @@ fn shared_samples_are_traced_once() {
     let out = traced(SPHERE, aa(0.1, 3), TILE);
     let splits: u64 = out.leaves.iter().map(|&n| u64::from(n - 1) / 3).sum();
     let finer = out.rays.primary - 81;
-    assert!(finer > 0 && finer < 5 * splits, "{finer} vs {splits} splits");
+    assert!(
+        finer > 0 && finer < 5 * splits,
+        "{finer} vs {splits} splits"
+    );
 }
 
 #[test]
@@ -179,6 +198,9 @@ fn grid_dispatch_is_render() {
     let adaptive = Antialias::Adaptive(aa(0.1, 3));
     let (frame, rays) = render_with(&tracer, &camera, 8, 8, adaptive);
     let mut sum = vec![Color::ZERO; 64];
-    assert_eq!(render_add_with(&tracer, &camera, 8, 8, adaptive, &mut sum), rays);
+    assert_eq!(
+        render_add_with(&tracer, &camera, 8, 8, adaptive, &mut sum),
+        rays
+    );
     assert_eq!(Frame::from_sum(&sum, 1, 8, 8), frame);
 }
