@@ -43,6 +43,7 @@
 //! flip = 0.05                      # optional: also fail when the mean FLIP error is above
 //! ```
 
+mod antialias;
 mod camera;
 mod locate;
 mod pattern;
@@ -117,6 +118,8 @@ pub struct RenderSpec {
     pub samples: u32,
     /// Sub-frames averaged over the shutter, when `[render] motion_blur` is set.
     pub motion_blur: Option<MotionBlur>,
+    /// Adaptive anti-aliasing instead of the grid, when `antialias` is set (SPEC §15).
+    pub antialias: Option<crate::render::Adaptive>,
 }
 
 /// `[check]`, paths resolved.
@@ -302,6 +305,7 @@ impl Source<'_> {
             Some(c) => camera(self, c, frames)?,
             None => (None, None),
         };
+        let output = self.output(raw.output)?;
         Ok(Manifest {
             path: self.path.to_path_buf(),
             scene,
@@ -311,8 +315,8 @@ impl Source<'_> {
             camera,
             look_at,
             tracks: self.tracks(raw.track.unwrap_or_default(), frames)?,
-            output: self.output(raw.output)?,
-            render: self.render(raw.render)?,
+            render: self.render(raw.render, output.format)?,
+            output,
             check: raw.check.map(|c| self.check(c, frames)).transpose()?,
         })
     }

@@ -17,7 +17,7 @@ use crate::output::ImageFormat;
 use crate::passes::record::{finish, PixelSum};
 use crate::passes::{Layers, PassSet};
 use crate::render::layers::camera_matrices;
-use crate::render::{render, render_add, render_layers_add, Frame};
+use crate::render::{render_add_with, render_layers_add, render_with, Adaptive, Antialias, Frame};
 use crate::scene::{Scene, SceneError};
 use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
@@ -66,6 +66,10 @@ pub struct Settings {
     pub samples: u32,
     /// The motion blur, if any.
     pub motion_blur: Option<MotionBlur>,
+    /// Adaptive anti-aliasing, if set (left out of the digest's JSON when not, so that
+    /// frames drawn before it existed stay up to date).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub antialias: Option<Adaptive>,
     /// The file format the frame is written in.
     pub format: ImageFormat,
     /// `PIXEL_VERSION` of the library that drew it.
@@ -84,6 +88,8 @@ pub struct Animation<'p> {
     pub height: u32,
     /// n of the n×n supersampling grid.
     pub samples: u32,
+    /// Adaptive anti-aliasing instead of the grid, when the manifest asks for it.
+    pub antialias: Option<Adaptive>,
     /// The acceleration structure every frame shares, when no track moves geometry.
     shared: Option<Arc<Accel>>,
     /// Told of every frame drawn (a live display such as tev), if any.
@@ -125,6 +131,7 @@ impl<'p> Animation<'p> {
             width,
             height,
             samples: project.manifest.render.samples.max(1),
+            antialias: project.manifest.render.antialias,
             shared,
             observer: None,
         })
@@ -173,19 +180,22 @@ impl<'p> Animation<'p> {
     }
 
     fn draw(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
-        let (w, h, n) = (self.width, self.height, self.samples);
+        let (w, h) = (self.width, self.height);
+        let n = self
+            .antialias
+            .map_or(Antialias::Grid(self.samples), Antialias::Adaptive);
         let times = self.timeline.times(frame);
         if let [t] = times[..] {
             let state = self.timeline.at(t);
             let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
-            return Ok(render(&self.tracer(&state.scene), &camera, w, h, n));
+            return Ok(render_with(&self.tracer(&state.scene), &camera, w, h, n));
         }
         let mut sum = vec![Color::ZERO; w as usize * h as usize];
         let mut rays = RayCount::default();
         for &t in &times {
             let state = self.timeline.at(t);
             let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
-            rays = rays + render_add(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
+            rays = rays + render_add_with(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
         }
         Ok((Frame::from_sum(&sum, times.len() as u32, w, h), rays))
     }
@@ -238,6 +248,7 @@ impl<'p> Animation<'p> {
             height: self.height,
             samples: self.samples,
             motion_blur: self.timeline.blur,
+            antialias: self.antialias,
             format: self.format(),
             pixel_version: PIXEL_VERSION,
         }

@@ -1,6 +1,6 @@
-//! `raytrace [SCENE] [-o OUT] [--size WxH] [--samples N] [--threads N] [--display tev]
-//! [--passes LIST] [--pass NAME] [--exr-depth half|float]`: one image from a Scene.txt, the
-//! report's main(). It parses the command line and calls the library;
+//! `raytrace [SCENE] [-o OUT] [--size WxH] [--samples N | --aa adaptive[:T[:D]]] [--threads N]
+//! [--display tev] [--passes LIST] [--pass NAME] [--exr-depth half|float]`: one image from a
+//! Scene.txt, the report's main(). It parses the command line and calls the library;
 //! exit statuses follow `whitted::exit` (2 bad input, 1 a failed write, 130/143 stopped by
 //! SIGINT/SIGTERM).
 
@@ -14,8 +14,8 @@ use whitted::output::{
     check_target, write_atomic, write_atomic_layers, ExrDepth, ImageFormat, OutputError,
 };
 use whitted::passes::{visible::picture, Pass, PassSet};
-use whitted::render::{render_layers, render_observed};
-use whitted::{render, trace::Tracer, Scene, SceneError};
+use whitted::render::{render_layers, render_observed, render_with, Adaptive, Antialias};
+use whitted::{trace::Tracer, Scene, SceneError};
 
 /// Rows per band streamed to tev: a band is a few milliseconds of work at the report's
 /// sizes, so the picture fills in smoothly.
@@ -50,6 +50,12 @@ struct Args {
     /// Anti-aliasing: an N×N stratified grid of samples per pixel (1 = the report's).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=16))]
     samples: u32,
+    /// Adaptive anti-aliasing instead of the grid (SPEC §15): pixel corners shared, squares
+    /// split where corners differ by more than THRESHOLD (0..=3, default 0.5), down to
+    /// DEPTH (0..=6, default 3).
+    #[arg(long, value_name = "adaptive[:T[:D]]", conflicts_with = "samples",
+          value_parser = |s: &str| s.parse::<Adaptive>().map_err(|e| e.to_string()))]
+    aa: Option<Adaptive>,
     /// Worker threads (default: all cores).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     threads: Option<u32>,
@@ -109,7 +115,13 @@ fn out_format(args: &Args, out: &std::path::Path) -> Result<ImageFormat, OutputE
         path: out.to_path_buf(),
         reason: reason.into(),
     };
-    match ImageFormat::from_path(out)? {
+    let format = ImageFormat::from_path(out)?;
+    if args.aa.is_some() && (format.is_layered() || args.pass.is_some()) {
+        return Err(refuse(
+            "--aa adaptive draws 8-bit pictures only; an .exr or a --pass takes --samples",
+        ));
+    }
+    match format {
         ImageFormat::Exr(mut o) => {
             if args.pass.is_some() {
                 return Err(refuse("--pass writes an 8-bit picture (.png, .jpg, .ppm, .raw); an .exr takes --passes"));
@@ -138,6 +150,7 @@ fn run(args: Args) -> anyhow::Result<()> {
     let start = std::time::Instant::now();
     let (camera, tracer) = (scene.camera(), Tracer::new(&scene));
     let (w, h, n) = (scene.width, scene.height, args.samples);
+    let aa = args.aa.map_or(Antialias::Grid(n), Antialias::Adaptive);
     let (frame, rays) = if format.is_layered() || args.pass.is_some() {
         let passes = args.pass.map_or(format.passes(), |p| PassSet::of(&[p]));
         let (layers, rays) = pool.install(|| render_layers(&tracer, &camera, w, h, n, passes));
@@ -151,14 +164,21 @@ fn run(args: Args) -> anyhow::Result<()> {
         (Some(frame).filter(|_| args.pass.is_some()), rays)
     } else {
         let (frame, rays) = match &args.display {
-            None => pool.install(|| render(&tracer, &camera, w, h, n)),
+            None => pool.install(|| render_with(&tracer, &camera, w, h, aa)),
             Some(Display::Tev(addr)) => {
                 let tev = Tev::connect_stderr(addr, "raytrace");
                 let name = format!("raytrace: {}", out.display());
                 tev.create(&name, w, h);
-                let band = STREAM_BAND;
-                let send = |y0: u32, rows: &[u8]| tev.rows(&name, w, y0, rows);
-                pool.install(|| render_observed(&tracer, &camera, w, h, n, band, &send))
+                if let Antialias::Adaptive(_) = aa {
+                    // Adaptive frames are drawn whole (their corner lattice first), then sent.
+                    let drawn = pool.install(|| render_with(&tracer, &camera, w, h, aa));
+                    tev.rows(&name, w, 0, &drawn.0.pixels);
+                    drawn
+                } else {
+                    let band = STREAM_BAND;
+                    let send = |y0: u32, rows: &[u8]| tev.rows(&name, w, y0, rows);
+                    pool.install(|| render_observed(&tracer, &camera, w, h, n, band, &send))
+                }
             }
         };
         (Some(frame), rays)
@@ -168,13 +188,22 @@ fn run(args: Args) -> anyhow::Result<()> {
         write_atomic(&out, frame, format)?;
     }
     if !args.quiet {
-        let (n, mrays) = (
-            args.samples * args.samples,
-            rays.total() as f64 / traced.max(1e-9) / 1e6,
-        );
+        let mrays = rays.total() as f64 / traced.max(1e-9) / 1e6;
+        let n = match aa {
+            Antialias::Grid(n) => format!("{} sample(s)/px", n * n),
+            Antialias::Adaptive(a) => format!(
+                "adaptive {} depth {}, {:.3} camera rays/px",
+                a.threshold,
+                a.depth,
+                rays.primary as f64 / (f64::from(w) * f64::from(h))
+            ),
+        };
         eprintln!(
-            "raytrace: wrote {} ({}×{}, {n} sample(s)/px) in {traced:.3} s: {} rays, {mrays:.2} Mrays/s",
-            out.display(), w, h, rays.total()
+            "raytrace: wrote {} ({}×{}, {n}) in {traced:.3} s: {} rays, {mrays:.2} Mrays/s",
+            out.display(),
+            w,
+            h,
+            rays.total()
         );
     }
     Ok(())

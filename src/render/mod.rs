@@ -15,7 +15,9 @@ use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
 
+pub mod adaptive;
 pub mod layers;
+pub use adaptive::{render_add_with, render_with, Adaptive, Antialias};
 pub use layers::{render_layers, render_layers_add};
 
 /// An 8-bit RGB image, rows top to bottom.

@@ -144,10 +144,16 @@ pub(crate) fn stamp(anim: &Animation, frame: u32, digest: String) -> Vec<(String
         ),
         (
             "whitted:render".into(),
-            format!(
-                "{}x{}, {}x{} sample(s) per pixel{blur}",
-                s.width, s.height, s.samples, s.samples
-            ),
+            match s.antialias {
+                Some(a) => format!(
+                    "{}x{}, adaptive anti-aliasing threshold {} depth {}{blur}",
+                    s.width, s.height, a.threshold, a.depth
+                ),
+                None => format!(
+                    "{}x{}, {}x{} sample(s) per pixel{blur}",
+                    s.width, s.height, s.samples, s.samples
+                ),
+            },
         ),
     ]
 }

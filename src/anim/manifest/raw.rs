@@ -140,6 +140,19 @@ pub(super) struct RawRender {
     pub height: Option<Spanned<i64>>,
     pub samples: Option<Spanned<i64>>,
     pub motion_blur: Option<Spanned<RawBlur>>,
+    pub antialias: Option<Spanned<RawAntialias>>,
+}
+
+/// `antialias = { mode = "adaptive", threshold = 0.1, depth = 3 }`.
+#[derive(Deserialize)]
+#[serde(
+    deny_unknown_fields,
+    expecting = "antialias = { mode = \"adaptive\", threshold = 0.1, depth = 3 }"
+)]
+pub(super) struct RawAntialias {
+    pub mode: Spanned<String>,
+    pub threshold: Option<Spanned<f64>>,
+    pub depth: Option<Spanned<i64>>,
 }
 
 #[derive(Deserialize)]

@@ -141,7 +141,13 @@ const RENDER: Place = Place {
         ("height", Value),
         ("samples", Value),
         ("motion_blur", Table(BLUR)),
+        ("antialias", Table(ANTIALIAS)),
     ]],
+};
+
+const ANTIALIAS: Place = Place {
+    name: "antialias",
+    groups: &[&[("mode", Value), ("threshold", Value), ("depth", Value)]],
 };
 
 const BLUR: Place = Place {
@@ -326,7 +332,7 @@ mod tests {
         let page = include_str!("../../../docs/manifest.md");
         let places = [
             TOP, STILL, CIRCLE, SPLINE, ANY_CAMERA, SPLINE_KEY, TRACK, TRACK_KEY, OUTPUT, RENDER,
-            BLUR, CHECK,
+            BLUR, ANTIALIAS, CHECK,
         ];
         for place in places {
             for (key, _) in place.keys() {

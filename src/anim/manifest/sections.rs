@@ -15,6 +15,7 @@
 //! width = 1280              # 1..=16384 each, width·height <= 2^26 when both are given
 //! height = 960
 //! samples = 2               # 1..=16; default 1
+//! antialias = { mode = "adaptive", threshold = 0.1, depth = 3 }   # instead of samples
 //!
 //! [check]
 //! frames = [0, 125, 249]    # required, not empty, each < frames, no repeats;
@@ -157,7 +158,11 @@ impl Source<'_> {
         }
     }
 
-    pub(super) fn render(&self, raw: Option<RawRender>) -> Result<RenderSpec, ManifestError> {
+    pub(super) fn render(
+        &self,
+        raw: Option<RawRender>,
+        format: ImageFormat,
+    ) -> Result<RenderSpec, ManifestError> {
         let Some(raw) = raw else {
             return Ok(RenderSpec {
                 samples: 1,
@@ -189,11 +194,17 @@ impl Source<'_> {
             .as_ref()
             .map(|b| self.motion_blur(b))
             .transpose()?;
+        let antialias = raw
+            .antialias
+            .as_ref()
+            .map(|a| self.antialias(a, &raw.samples, format))
+            .transpose()?;
         Ok(RenderSpec {
             width,
             height,
             samples,
             motion_blur,
+            antialias,
         })
     }
 

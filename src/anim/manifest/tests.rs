@@ -107,6 +107,7 @@ fn the_spec_orbit_parses_with_its_values() {
         height: None,
         samples: 1,
         motion_blur: None,
+        antialias: None,
     };
     assert_eq!(m.render, render);
     let check = CheckSpec {

@@ -1,4 +1,5 @@
 use super::*;
+use crate::render::render;
 
 fn project(manifest: &str, scene: &str) -> (tempfile::TempDir, Project) {
     let dir = tempfile::tempdir().unwrap();

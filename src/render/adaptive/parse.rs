@@ -1,0 +1,112 @@
+//! The command line's spelling of adaptive anti-aliasing, `adaptive[:T[:D[:MEASURE]]]`
+//! (`raytrace --aa adaptive:0.5:3`; MEASURE `sum`, the default, or `max`, for the
+//! measurements of benches/pov/adaptive.sh), and the bounds every spelling obeys:
+//! 0 ≤ T ≤ 3, 0 ≤ D ≤ `MAX_DEPTH`.
+
+use super::{Adaptive, Measure, MAX_DEPTH, MAX_THRESHOLD};
+use std::str::FromStr;
+use thiserror::Error;
+
+/// A bad anti-aliasing setting.
+#[derive(Debug, Error, PartialEq)]
+pub enum AntialiasError {
+    /// Not `adaptive[:T[:D]]`.
+    #[error("expected adaptive[:THRESHOLD[:DEPTH[:sum|max]]], e.g. adaptive:0.5:3, found {0:?}")]
+    Syntax(String),
+    /// A threshold out of 0..=3 (or not a number).
+    #[error("the threshold must be a number from 0 to 3, found {0}")]
+    Threshold(String),
+    /// A depth out of 0..=MAX_DEPTH.
+    #[error("the depth must be a whole number from 0 to 6, found {0}")]
+    Depth(String),
+}
+
+impl Adaptive {
+    /// The defaults with `threshold` and `depth` where given, each checked.
+    pub fn with(threshold: Option<f64>, depth: Option<i64>) -> Result<Adaptive, AntialiasError> {
+        let mut aa = Adaptive::DEFAULT;
+        if let Some(t) = threshold {
+            if !(0.0..=MAX_THRESHOLD).contains(&t) {
+                return Err(AntialiasError::Threshold(t.to_string()));
+            }
+            aa.threshold = t;
+        }
+        if let Some(d) = depth {
+            if !(0..=i64::from(MAX_DEPTH)).contains(&d) {
+                return Err(AntialiasError::Depth(d.to_string()));
+            }
+            aa.depth = d as u32;
+        }
+        Ok(aa)
+    }
+}
+
+impl FromStr for Adaptive {
+    type Err = AntialiasError;
+
+    fn from_str(s: &str) -> Result<Adaptive, AntialiasError> {
+        let mut parts = s.split(':');
+        if parts.next() != Some("adaptive") {
+            return Err(AntialiasError::Syntax(s.to_string()));
+        }
+        let threshold = match parts.next() {
+            Some(t) => Some(
+                t.parse::<f64>()
+                    .map_err(|_| AntialiasError::Threshold(format!("{t:?}")))?,
+            ),
+            None => None,
+        };
+        let depth = match parts.next() {
+            Some(d) => Some(
+                d.parse::<i64>()
+                    .map_err(|_| AntialiasError::Depth(format!("{d:?}")))?,
+            ),
+            None => None,
+        };
+        let measure = match parts.next() {
+            None | Some("sum") => Measure::Sum,
+            Some("max") => Measure::Max,
+            Some(_) => return Err(AntialiasError::Syntax(s.to_string())),
+        };
+        if parts.next().is_some() {
+            return Err(AntialiasError::Syntax(s.to_string()));
+        }
+        Ok(Adaptive {
+            measure,
+            ..Adaptive::with(threshold, depth)?
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spellings() {
+        assert_eq!("adaptive".parse(), Ok(Adaptive::DEFAULT));
+        let a: Adaptive = "adaptive:0.3".parse().unwrap();
+        assert_eq!((a.threshold, a.depth), (0.3, Adaptive::DEFAULT.depth));
+        let a: Adaptive = "adaptive:0:5".parse().unwrap();
+        assert_eq!((a.threshold, a.depth, a.measure), (0.0, 5, Measure::Sum));
+        let a: Adaptive = "adaptive:0.2:2:max".parse().unwrap();
+        assert_eq!((a.threshold, a.depth, a.measure), (0.2, 2, Measure::Max));
+    }
+
+    #[test]
+    fn refusals() {
+        let bad = |s: &str| s.parse::<Adaptive>().unwrap_err();
+        assert!(matches!(bad("grid"), AntialiasError::Syntax(_)));
+        assert!(matches!(bad("adaptive:0.1:3:1"), AntialiasError::Syntax(_)));
+        assert!(matches!(
+            bad("adaptive:0.1:3:max:1"),
+            AntialiasError::Syntax(_)
+        ));
+        assert!(matches!(bad("adaptive:x"), AntialiasError::Threshold(_)));
+        assert!(matches!(bad("adaptive:-0.1"), AntialiasError::Threshold(_)));
+        assert!(matches!(bad("adaptive:3.5"), AntialiasError::Threshold(_)));
+        assert!(matches!(bad("adaptive:NaN"), AntialiasError::Threshold(_)));
+        assert!(matches!(bad("adaptive:0.1:7"), AntialiasError::Depth(_)));
+        assert!(matches!(bad("adaptive:0.1:1.5"), AntialiasError::Depth(_)));
+    }
+}
