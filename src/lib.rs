@@ -38,6 +38,7 @@ pub mod camera;
 pub mod exit;
 pub mod fileloc;
 pub mod fog;
+pub mod input;
 pub mod limits;
 pub mod noise;
 pub mod object;

@@ -8,12 +8,16 @@ mod report;
 
 use anyhow::Context;
 use clap::Parser;
-use cli::{BlessArgs, CheckArgs, Cli, Command, PreviewArgs, RenderArgs, StatusArgs};
+use cli::{
+    BlessArgs, CheckArgs, CleanArgs, Cli, Command, EncodeArgs, PreviewArgs, RenderArgs, StatusArgs,
+};
+use std::os::fd::AsFd;
 use std::process::ExitCode;
 use std::time::Instant;
 use whitted::anim::check::{self, CheckOptions};
-use whitted::anim::frames::run;
-use whitted::anim::frames::status::status;
+use whitted::anim::frames::run::{self, Destination, Policy};
+use whitted::anim::frames::status::{ranges, status};
+use whitted::anim::frames::{encode, folder, lock};
 use whitted::anim::{preview, AnimError, Animation, Reporter};
 use whitted::exit::Outcome;
 use whitted::output::ImageFormat;
@@ -22,16 +26,31 @@ fn pool(threads: Option<u32>) -> anyhow::Result<rayon::ThreadPool> {
     whitted::process::pool(threads).context("cannot start the worker threads")
 }
 
+/// What an interrupted stream or video says: `--resume` does not apply to them.
+const STREAM_STOPPED: &str = "a stream or video cannot be resumed: run the command again, \
+or render into a folder (`--resume` completes that) and `animate encode` it";
+
 fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     let c = &args.common;
+    if args.stdout.is_some() && std::io::stdout().as_fd().try_clone_to_owned().is_err() {
+        return Err(AnimError::StdoutClosed.into());
+    }
     let project = c.load()?;
     let (m, anim) = (&project.manifest, Animation::new(&project)?);
     let frames = run::frames_of(&anim, c.frames.as_deref(), args.shard()?)?;
     let destination = args.destination(m)?;
+    let policy = args.policy()?;
     if !c.quiet {
         report::announce(&anim, frames.len(), args.stdout == Some(ImageFormat::Raw));
     }
     let (stop, pool) = (whitted::process::watch_signals(), pool(c.threads)?);
+    if matches!(destination, Destination::Stream(_)) {
+        // A reader that stops reading would hold a write, and the run, forever.
+        whitted::process::exit_when_stuck(stop.clone(), |sig| {
+            let e = AnimError::Interrupted(sig);
+            format!("animate: {e}\nanimate: hint: {STREAM_STOPPED}")
+        });
+    }
     let bar = report::Bar::new(frames.len(), c.quiet || args.events);
     let reporter: &dyn Reporter = if args.events {
         &report::JsonLines
@@ -45,16 +64,80 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
             &anim,
             &frames,
             &destination,
-            args.resume,
+            &policy,
             &mut out,
             reporter,
             &stop,
         )
-    })?;
+    });
     bar.finish();
+    let summary = match (summary, &destination) {
+        (Err(AnimError::Interrupted(sig)), Destination::Stream(_) | Destination::Video(_)) => {
+            eprintln!("animate: {}", AnimError::Interrupted(sig));
+            eprintln!("animate: hint: {STREAM_STOPPED}");
+            return Ok(Outcome::Interrupted(sig));
+        }
+        (summary, _) => summary?,
+    };
     if !c.quiet {
         report::summary(&summary, start, &destination.describe());
     }
+    Ok(Outcome::Success)
+}
+
+fn encode_command(args: EncodeArgs) -> anyhow::Result<Outcome> {
+    let project = whitted::anim::Project::load(&args.manifest)?;
+    let (m, anim) = (&project.manifest, Animation::new(&project)?);
+    let dir = args.dir.clone().unwrap_or_else(|| m.output.dir.clone());
+    let video = args.out.clone().unwrap_or_else(|| encode::default_video(&dir));
+    let policy = Policy {
+        force: args.force,
+        encoding: args.encoding.encoding(),
+        ..Policy::default()
+    };
+    let stop = whitted::process::watch_signals();
+    let bar = report::Bar::new(m.frames as usize, args.quiet);
+    let start = Instant::now();
+    let summary = encode::encode(&anim, &dir, &video, &policy, &bar, &stop);
+    bar.finish();
+    let summary = summary?;
+    if !args.quiet {
+        let secs = start.elapsed().as_secs_f64();
+        eprintln!(
+            "animate: encoded {} frames of {} at {} fps in {secs:.2} s -> {}",
+            summary.rendered,
+            dir.display(),
+            m.fps,
+            video.display()
+        );
+    }
+    Ok(Outcome::Success)
+}
+
+fn clean_command(args: CleanArgs) -> anyhow::Result<Outcome> {
+    let project = whitted::anim::Project::load(&args.manifest)?;
+    let (m, anim) = (&project.manifest, Animation::new(&project)?);
+    let dir = args.out.clone().unwrap_or_else(|| m.output.dir.clone());
+    if args.dry_run {
+        let past: Vec<u32> = folder::beyond(&anim, &dir).iter().map(|f| f.0).collect();
+        println!(
+            "{}: would remove {} frame(s) past the end ({}) and {} temporary file(s)",
+            dir.display(),
+            past.len(),
+            ranges(&past),
+            folder::temporaries(&anim, &dir).len()
+        );
+        return Ok(Outcome::Success);
+    }
+    let _lock = lock::lock(&dir, &m.path)?;
+    let cleaned = folder::clean(&anim, &dir).with_context(|| format!("cleaning {}", dir.display()))?;
+    println!(
+        "{}: removed {} frame(s) past the end ({}) and {} temporary file(s)",
+        dir.display(),
+        cleaned.beyond.len(),
+        ranges(&cleaned.beyond),
+        cleaned.temporaries
+    );
     Ok(Outcome::Success)
 }
 
@@ -103,7 +186,7 @@ fn status_command(args: StatusArgs) -> anyhow::Result<Outcome> {
     let (m, anim) = (&project.manifest, Animation::new(&project)?);
     let frames = run::frames_of(&anim, c.frames.as_deref(), None)?;
     let dir = args.out.clone().unwrap_or_else(|| m.output.dir.clone());
-    let report = pool(c.threads)?.install(|| status(&anim, &dir, &frames));
+    let report = pool(c.threads)?.install(|| status(&anim, &dir, &frames, args.verify));
     match args.json {
         true => println!("{}", serde_json::to_string_pretty(&report.json(&dir))?),
         false => print!("{}", report.table(&dir)),
@@ -138,6 +221,8 @@ fn main() -> ExitCode {
         Some(Command::Check(args)) => check_command(args),
         Some(Command::Status(args)) => status_command(args),
         Some(Command::Preview(args)) => preview(args),
+        Some(Command::Encode(args)) => encode_command(args),
+        Some(Command::Clean(args)) => clean_command(args),
     };
     match result {
         Ok(outcome) => ExitCode::from(outcome.code()),
