@@ -89,6 +89,20 @@ pub fn exit_when_stuck(
     });
 }
 
+/// Whether the process was started with its standard output closed (`>&-`). Rust's
+/// runtime then opens `/dev/null` read-write in its place, so writes would vanish
+/// silently; a shell's `> /dev/null` opens it write-only. Linux only (`/proc`).
+pub fn stdout_closed() -> bool {
+    let null = std::fs::read_link("/proc/self/fd/1").is_ok_and(|p| p == *"/dev/null");
+    let flags = std::fs::read_to_string("/proc/self/fdinfo/1").ok();
+    let rdwr = flags
+        .as_deref()
+        .and_then(|t| t.lines().find_map(|l| l.strip_prefix("flags:")))
+        .and_then(|f| u32::from_str_radix(f.trim(), 8).ok())
+        .is_some_and(|f| f & 3 == 2);
+    null && rdwr
+}
+
 /// Makes SIGINT and SIGTERM end the process at once with status 128 + N (130, 143), for
 /// a run that cannot stop between pieces of work. The status is the same whatever signal
 /// handling the process inherited (a job started with SIGINT ignored still stops).

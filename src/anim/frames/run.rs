@@ -30,6 +30,8 @@ pub struct Encoding {
 pub struct Policy {
     /// Leave a folder's up-to-date frames as they are.
     pub resume: bool,
+    /// With `resume`, decode each kept frame too (`status --verify`).
+    pub verify: bool,
     /// Write over frames recorded by another manifest, and over an existing video.
     pub force: bool,
     /// How a video is encoded.

@@ -143,6 +143,10 @@ pub struct RenderArgs {
     /// the manifest now gives them; leave up-to-date files untouched.
     #[arg(long, conflicts_with_all = ["stdout", "video"])]
     pub resume: bool,
+    /// With --resume: decode every frame kept (as `status --verify`), so that damage the
+    /// default checks cannot see is rendered again.
+    #[arg(long, requires = "resume")]
+    pub verify: bool,
     /// Write the frames in order to standard output instead of files: raw (RGB bytes),
     /// ppm or png.
     #[arg(long, value_name = "FORMAT", value_parser = stream_format,
@@ -203,6 +207,7 @@ impl RenderArgs {
         }
         Ok(Policy {
             resume: self.resume,
+            verify: self.verify,
             force: self.force,
             encoding: self.encoding.encoding(),
         })

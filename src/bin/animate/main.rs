@@ -11,7 +11,6 @@ use clap::Parser;
 use cli::{
     BlessArgs, CheckArgs, CleanArgs, Cli, Command, EncodeArgs, PreviewArgs, RenderArgs, StatusArgs,
 };
-use std::os::fd::AsFd;
 use std::process::ExitCode;
 use std::time::Instant;
 use whitted::anim::check::{self, CheckOptions};
@@ -32,7 +31,7 @@ or render into a folder (`--resume` completes that) and `animate encode` it";
 
 fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     let c = &args.common;
-    if args.stdout.is_some() && std::io::stdout().as_fd().try_clone_to_owned().is_err() {
+    if args.stdout.is_some() && whitted::process::stdout_closed() {
         return Err(AnimError::StdoutClosed.into());
     }
     let project = c.load()?;
@@ -47,8 +46,7 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     if matches!(destination, Destination::Stream(_)) {
         // A reader that stops reading would hold a write, and the run, forever.
         whitted::process::exit_when_stuck(stop.clone(), |sig| {
-            let e = AnimError::Interrupted(sig);
-            format!("animate: {e}\nanimate: hint: {STREAM_STOPPED}")
+            format!("animate: interrupted by signal {sig}\nanimate: hint: {STREAM_STOPPED}")
         });
     }
     let bar = report::Bar::new(frames.len(), c.quiet || args.events);
@@ -73,7 +71,7 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     bar.finish();
     let summary = match (summary, &destination) {
         (Err(AnimError::Interrupted(sig)), Destination::Stream(_) | Destination::Video(_)) => {
-            eprintln!("animate: {}", AnimError::Interrupted(sig));
+            eprintln!("animate: interrupted by signal {sig}");
             eprintln!("animate: hint: {STREAM_STOPPED}");
             return Ok(Outcome::Interrupted(sig));
         }

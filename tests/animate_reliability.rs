@@ -1,0 +1,426 @@
+//! Reliability, round two, through the built `animate` and `raytrace`: frame records that
+//! cannot lie (kill -9 and concurrent-run trials, seeded), corruption inside frames,
+//! endless and non-regular inputs, stalled consumers, frames past a shortened sequence,
+//! one folder for one run, and the smaller faults of docs/reliability.md.
+
+mod support;
+
+use std::path::{Path, PathBuf};
+use std::process::{Child, Command, Stdio};
+use std::time::{Duration, Instant};
+use support::*;
+
+/// A `frames`-frame circle manifest in RAW at `radius`, written as `name` in `dir`.
+fn raw_manifest(dir: &Path, name: &str, frames: u32, radius: f64) -> PathBuf {
+    let text = circle_manifest("")
+        .replace("frames = 12", &format!("frames = {frames}"))
+        .replace("radius = 8.0", &format!("radius = {radius:?}"))
+        .replace("format = \"png\"", "format = \"raw\"");
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}
+
+fn spawn(args: &[&std::ffi::OsStr]) -> Child {
+    Command::new(assert_cmd::cargo::cargo_bin("animate"))
+        .args(args)
+        .stdout(Stdio::null())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap()
+}
+
+/// A small deterministic generator (a 64-bit LCG, Knuth's MMIX constants).
+struct Lcg(u64);
+impl Lcg {
+    fn below(&mut self, n: u64) -> u64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (self.0 >> 33) % n
+    }
+}
+
+/// `animate status --json` of `manifest`: the up-to-date frames.
+fn up_to_date(manifest: &Path) -> Vec<u32> {
+    let out = animate()
+        .args(["status", "--json"])
+        .arg(manifest)
+        .output()
+        .unwrap();
+    let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let ranges = doc["up_to_date"].as_str().unwrap().to_string();
+    if ranges == "-" {
+        return vec![];
+    }
+    whitted::anim::select::parse_frames(&ranges, 1_000_000).unwrap()
+}
+
+/// Asserts that every frame `status` calls up to date has the clean render's bytes.
+fn no_record_lies(manifest: &Path, frames: &Path, clean: &Path, trial: &str) {
+    for f in up_to_date(manifest) {
+        let name = format!("frame_{f:04}.raw");
+        assert_eq!(
+            std::fs::read(frames.join(&name)).unwrap(),
+            std::fs::read(clean.join(&name)).unwrap(),
+            "{trial}: {name} is called up to date but holds other pixels"
+        );
+    }
+}
+
+#[test]
+fn kill_9_and_concurrent_runs_never_leave_a_lying_raw_record() {
+    let (dir, _) = project(&circle_manifest(""));
+    let a = raw_manifest(dir.path(), "a.toml", 120, 8.0);
+    let b = raw_manifest(dir.path(), "b.toml", 120, 9.5);
+    let (frames, clean) = (dir.path().join("frames"), dir.path().join("clean"));
+    render_into(&a, &clean, &[]);
+    let mut rng = Lcg(23);
+    let deadline = Instant::now() + Duration::from_secs(60);
+    let mut trials = 0;
+    for trial in 0..24 {
+        if Instant::now() > deadline {
+            break;
+        }
+        render_into(&a, &frames, &["--resume", "--force"]);
+        let name = format!("trial {trial} (seed 23)");
+        if trial % 2 == 0 {
+            // B over A's folder, killed after 5–90 ms.
+            let mut child = spawn(&[b.as_os_str(), "--force".as_ref(), "--threads".as_ref(), "2".as_ref()]);
+            std::thread::sleep(Duration::from_millis(5 + rng.below(86)));
+            child.kill().unwrap();
+            child.wait().unwrap();
+        } else {
+            // A and B at once into one folder: the lock lets one of them in.
+            let mut one = spawn(&[b.as_os_str(), "--force".as_ref()]);
+            let mut two = spawn(&[a.as_os_str(), "--force".as_ref()]);
+            std::thread::sleep(Duration::from_millis(rng.below(60)));
+            if rng.below(2) == 0 {
+                one.kill().unwrap();
+            }
+            let (s1, s2) = (one.wait().unwrap(), two.wait().unwrap());
+            assert!(
+                s1.code() != Some(1) && s2.code() != Some(1),
+                "{name}: {s1:?} {s2:?}"
+            );
+        }
+        no_record_lies(&a, &frames, &clean, &name);
+        animate()
+            .arg(&a)
+            .args(["--resume", "--force", "-q"])
+            .assert()
+            .success();
+        assert_eq!(files(&frames), files(&clean), "{name}: --resume");
+        trials += 1;
+    }
+    assert!(trials >= 6, "only {trials} trials in the time allowed");
+}
+
+#[test]
+fn a_raw_frame_overwritten_with_other_bytes_is_stale() {
+    let (dir, _) = project(&circle_manifest(""));
+    let a = raw_manifest(dir.path(), "a.toml", 12, 8.0);
+    animate().arg(&a).arg("-q").assert().success();
+    let frames = dir.path().join("frames");
+    let (f3, f4) = (frames.join("frame_0003.raw"), frames.join("frame_0004.raw"));
+    std::fs::copy(&f4, &f3).unwrap();
+    let garbage: Vec<u8> = (0..64 * 48 * 3).map(|i| (i * 7 % 251) as u8).collect();
+    std::fs::write(frames.join("frame_0005.raw"), garbage).unwrap();
+    let out = animate().arg("status").arg(&a).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(text.contains("      stale:       2  3,5\n"), "{text}");
+}
+
+#[test]
+fn damage_inside_a_png_is_seen_and_verify_decodes() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    animate().arg(&manifest).arg("-q").assert().success();
+    let frames = dir.path().join("frames");
+    // 40 flipped bytes inside frame 2's IDAT: its CRC fails.
+    let f2 = frames.join("frame_0002.png");
+    let mut bytes = std::fs::read(&f2).unwrap();
+    let idat = bytes.windows(4).position(|w| w == b"IDAT").unwrap() + 4;
+    for b in &mut bytes[idat + 10..idat + 50] {
+        *b ^= 0x5A;
+    }
+    std::fs::write(&f2, bytes).unwrap();
+    // Frame 6's compressed data broken and its CRC made right again: only decoding sees it.
+    let f6 = frames.join("frame_0006.png");
+    let mut bytes = std::fs::read(&f6).unwrap();
+    let at = bytes.windows(4).position(|w| w == b"IDAT").unwrap();
+    let len = u32::from_be_bytes(bytes[at - 4..at].try_into().unwrap()) as usize;
+    for b in &mut bytes[at + 4 + 2..at + 4 + len - 4] {
+        *b = 0xFF;
+    }
+    let crc = crc32(&bytes[at..at + 4 + len]);
+    bytes[at + 4 + len..at + 8 + len].copy_from_slice(&crc.to_be_bytes());
+    std::fs::write(&f6, bytes).unwrap();
+    let out = animate().arg("status").arg(&manifest).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("      stale:       1  2\n"), "{text}");
+    let out = animate()
+        .args(["status", "--verify"])
+        .arg(&manifest)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("      stale:       2  2,6\n"), "{text}");
+    animate().arg(&manifest).args(["--resume", "-q"]).assert().success();
+    // Plain --resume trusts the cheap checks, which frame 6 passes; --verify does not.
+    animate().args(["status", "--verify"]).arg(&manifest).assert().code(1);
+    animate().arg(&manifest).args(["--resume", "--verify", "-q"]).assert().success();
+    animate()
+        .args(["status", "--verify"])
+        .arg(&manifest)
+        .assert()
+        .success();
+}
+
+/// CRC-32 (ISO-HDLC, PNG's), bit by bit.
+fn crc32(bytes: &[u8]) -> u32 {
+    let mut c = 0xFFFF_FFFFu32;
+    for &b in bytes {
+        c ^= u32::from(b);
+        for _ in 0..8 {
+            c = if c & 1 != 0 { 0xEDB8_8320 ^ (c >> 1) } else { c >> 1 };
+        }
+    }
+    !c
+}
+
+#[test]
+fn png_crc_of_the_test_helper() {
+    assert_eq!(crc32(b"IEND"), 0xAE42_6082);
+}
+
+fn mkfifo(path: &Path) {
+    assert!(Command::new("mkfifo").arg(path).status().unwrap().success());
+}
+
+/// Runs `cmd` with a deadline: a hang fails instead of blocking the suite.
+fn within(cmd: &mut Command, secs: u64) -> std::process::Output {
+    let mut child = cmd.stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().unwrap();
+    let start = Instant::now();
+    while child.try_wait().unwrap().is_none() {
+        if start.elapsed() > Duration::from_secs(secs) {
+            child.kill().unwrap();
+            panic!("still running after {secs} s: {cmd:?}");
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
+    child.wait_with_output().unwrap()
+}
+
+fn animate_cmd() -> Command {
+    Command::new(assert_cmd::cargo::cargo_bin("animate"))
+}
+
+#[test]
+fn devices_fifos_and_huge_files_are_refused_with_the_limit() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    let out = within(animate_cmd().arg("/dev/zero"), 10);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("/dev/zero") && err.contains("not a regular file"), "{err}");
+    let fifo = dir.path().join("pipe.txt");
+    mkfifo(&fifo);
+    for scene in ["/dev/zero", "pipe.txt"] {
+        let text = circle_manifest("").replace("scene.txt", scene);
+        std::fs::write(&manifest, text).unwrap();
+        let out = within(animate_cmd().arg(&manifest), 10);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(err.contains(":1:9: scene: cannot read") && err.contains("not a regular file"), "{err}");
+    }
+    let out = within(Command::new(assert_cmd::cargo::cargo_bin("raytrace")).arg(&fifo), 10);
+    assert_eq!(out.status.code(), Some(2));
+    // A manifest past 16 MiB: refused, the limit stated, before it is read.
+    let big = dir.path().join("big.toml");
+    let file = std::fs::File::create(&big).unwrap();
+    file.set_len((16 << 20) + 1).unwrap();
+    let out = within(animate_cmd().arg(&big), 10);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("larger than the limit of 16 MiB for a manifest"), "{err}");
+}
+
+#[test]
+fn status_does_not_follow_a_frame_into_a_device_or_fifo() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    animate().arg(&manifest).arg("-q").assert().success();
+    let frames = dir.path().join("frames");
+    std::fs::remove_file(frames.join("frame_0001.png")).unwrap();
+    std::os::unix::fs::symlink("/dev/zero", frames.join("frame_0001.png")).unwrap();
+    std::fs::remove_file(frames.join("frame_0002.png")).unwrap();
+    mkfifo(&frames.join("frame_0002.png"));
+    let out = within(animate_cmd().arg("status").arg(&manifest), 10);
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(text.contains("      stale:       2  1-2\n"), "{text}");
+    // --resume replaces them with frames (the rename replaces the link and the FIFO).
+    let out = within(animate_cmd().arg(&manifest).args(["--resume", "-q"]), 20);
+    assert!(out.status.success());
+    assert!(std::fs::symlink_metadata(frames.join("frame_0001.png")).unwrap().is_file());
+}
+
+#[test]
+fn a_signal_ends_a_run_whose_stdout_reader_never_reads() {
+    let (dir, _) = project(&circle_manifest(""));
+    let m = raw_manifest(dir.path(), "long.toml", 100_000, 8.0);
+    let fifo = dir.path().join("out.fifo");
+    mkfifo(&fifo);
+    // Holding the FIFO open for reading and writing: the reader that never reads.
+    let _held = std::fs::OpenOptions::new().read(true).write(true).open(&fifo).unwrap();
+    for (sig, code) in [("TERM", 143), ("INT", 130)] {
+        let out = std::fs::OpenOptions::new().write(true).open(&fifo).unwrap();
+        let mut child = animate_cmd()
+            .arg(&m)
+            .args(["--stdout", "raw", "-q"])
+            .stdout(out)
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(Duration::from_millis(700));
+        let sent = Instant::now();
+        let ok = Command::new("kill").args(["-s", sig, &child.id().to_string()]).status();
+        assert!(ok.unwrap().success());
+        while child.try_wait().unwrap().is_none() && sent.elapsed() < Duration::from_secs(5) {
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        let took = sent.elapsed();
+        let _ = child.kill();
+        let status = child.wait().unwrap();
+        assert_eq!(status.code(), Some(code), "SIG{sig}");
+        assert!(took < Duration::from_secs(1), "SIG{sig}: {took:?}");
+        let mut err = String::new();
+        std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+        assert!(err.contains("cannot be resumed") && !err.contains("completes the run"), "{err}");
+    }
+}
+
+#[test]
+fn frames_past_a_shortened_sequence_are_reported_and_cleaned() {
+    let (dir, manifest) = project(&circle_manifest("").replace("frames = 12", "frames = 20"));
+    animate().arg(&manifest).arg("-q").assert().success();
+    let frames = dir.path().join("frames");
+    // A killed run's temporary.
+    std::fs::write(frames.join(".frame_0003.png.Ab12Cd.tmp"), b"half").unwrap();
+    let ten = dir.path().join("ten.toml");
+    std::fs::write(&ten, circle_manifest("").replace("frames = 12", "frames = 10")).unwrap();
+    animate().arg(&ten).args(["-q", "--force"]).assert().success();
+    assert!(!frames.join(".frame_0003.png.Ab12Cd.tmp").exists(), "the run clears stale temporaries");
+    std::fs::write(frames.join(".frame_0004.png.Zz99Yy.tmp"), b"half").unwrap();
+    let out = animate().arg("status").arg(&ten).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(text.contains(" up to date:      10  0-9\n"), "{text}");
+    assert!(text.contains("   past end:      10  10-19  ("), "{text}");
+    let out = animate().arg("clean").arg(&ten).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success());
+    assert!(text.contains("removed 10 frame(s) past the end (10-19) and 1 temporary file(s)"), "{text}");
+    assert_eq!(files(&frames).len(), 10);
+    animate().arg("status").arg(&ten).assert().success();
+}
+
+#[test]
+fn one_folder_one_run_and_no_overwriting_another_manifests_frames() {
+    let (dir, _) = project(&circle_manifest(""));
+    let a = raw_manifest(dir.path(), "a.toml", 4000, 8.0);
+    let b = raw_manifest(dir.path(), "b.toml", 12, 9.0);
+    let mut first = spawn(&[a.as_os_str()]);
+    let frames = dir.path().join("frames");
+    let start = Instant::now();
+    while !frames.join(".whitted-lock").exists() || std::fs::read(frames.join(".whitted-lock")).unwrap().is_empty() {
+        assert!(start.elapsed() < Duration::from_secs(10));
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    let out = animate().arg(&b).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    while !frames.join(".whitted-record/frame_0000.raw.txt").exists() {
+        assert!(start.elapsed() < Duration::from_secs(10));
+        std::thread::sleep(Duration::from_millis(10));
+    }
+    first.kill().unwrap();
+    first.wait().unwrap();
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    let holder = format!("pid {}, manifest ", first.id());
+    assert!(err.contains("another run is writing into") && err.contains(&holder) && err.contains("a.toml"), "{err}");
+    // A killed holder leaves no lock: B runs, but refuses A's frames without --force.
+    let out = animate().arg(&b).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("rendered by another manifest (a.toml: frames 0-") && err.contains("--force"), "{err}");
+    animate().arg(&b).args(["--force", "-q"]).assert().success();
+    animate().arg("status").arg(&b).assert().success();
+}
+
+#[test]
+fn smaller_faults() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    // raytrace does not write its image over the scene it reads.
+    let scene = dir.path().join("s.png");
+    std::fs::copy(dir.path().join("scene.txt"), &scene).unwrap();
+    let before = std::fs::read(&scene).unwrap();
+    let out = raytrace().arg(&scene).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(std::fs::read(&scene).unwrap(), before);
+    // A closed standard output is an error, not a silent success.
+    let out = Command::new("sh")
+        .arg("-c")
+        .arg(format!("exec \"$0\" \"$1\" --stdout raw -q >&-"))
+        .arg(assert_cmd::cargo::cargo_bin("animate"))
+        .arg(&manifest)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("standard output is closed"), "{err}");
+    // fps has a lower bound.
+    std::fs::write(&manifest, circle_manifest("").replace("fps = 12", "fps = 5e-324")).unwrap();
+    let out = animate().arg(&manifest).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("`fps` must be a number from 0.01 to 1000"), "{err}");
+    // A 1 MB token is cut in the message.
+    let token = "x".repeat(1 << 20);
+    std::fs::write(dir.path().join("t.txt"), format!("{token} 48\n")).unwrap();
+    let out = raytrace().arg(dir.path().join("t.txt")).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(err.len() < 400 && err.contains("… (1048576 characters)"), "{}", &err[..err.len().min(400)]);
+}
+
+#[test]
+fn a_full_disk_names_the_frame_and_leaves_no_temporary() {
+    let (dir, manifest) = project(&circle_manifest("\n[render]\nwidth = 320\nheight = 240\n"));
+    let mnt = dir.path().join("small");
+    std::fs::create_dir(&mnt).unwrap();
+    let mounted = Command::new("mount")
+        .args(["-t", "tmpfs", "-o", "size=256k", "tmpfs"])
+        .arg(&mnt)
+        .stderr(Stdio::null())
+        .status()
+        .is_ok_and(|s| s.success());
+    if !mounted {
+        assert!(std::env::var_os("CI").is_none(), "CI runs as root and can mount a tmpfs");
+        eprintln!("skipped: cannot mount a small tmpfs here (not root?)");
+        return;
+    }
+    let out = animate().arg(&manifest).arg("-o").arg(&mnt).args(["-q", "--threads", "1"]).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    let left: Vec<String> = entries_of(&mnt).into_iter().filter(|n| n.ends_with(".tmp")).collect();
+    let _ = Command::new("umount").arg(&mnt).status();
+    assert_eq!(out.status.code(), Some(1), "{err}");
+    assert!(err.contains("No space left on device") && err.contains("/small/frame_00"), "{err}");
+    assert!(left.is_empty(), "{left:?}");
+}
+
+fn entries_of(dir: &Path) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect()
+}
