@@ -333,28 +333,30 @@ fn one_folder_one_run_and_no_overwriting_another_manifests_frames() {
     let mut first = spawn(&[a.as_os_str()]);
     let frames = dir.path().join("frames");
     let start = Instant::now();
-    while !frames.join(".whitted-lock").exists() || std::fs::read(frames.join(".whitted-lock")).unwrap().is_empty() {
+    while !frames.join(".whitted-record/frame_0000.raw.txt").exists() {
         assert!(start.elapsed() < Duration::from_secs(10));
         std::thread::sleep(Duration::from_millis(10));
     }
     let out = animate().arg(&b).output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
-    while !frames.join(".whitted-record/frame_0000.raw.txt").exists() {
-        assert!(start.elapsed() < Duration::from_secs(10));
-        std::thread::sleep(Duration::from_millis(10));
-    }
+    // A second run of A's manifest shares the folder (as render-farm shards do).
+    animate().arg(&a).args(["--frames", "3999", "-q"]).assert().success();
     first.kill().unwrap();
     first.wait().unwrap();
     assert_eq!(out.status.code(), Some(2), "{err}");
     let holder = format!("pid {}, manifest ", first.id());
-    assert!(err.contains("another run is writing into") && err.contains(&holder) && err.contains("a.toml"), "{err}");
+    assert!(err.contains("a run of another manifest is writing into") && err.contains(&holder) && err.contains("a.toml"), "{err}");
     // A killed holder leaves no lock: B runs, but refuses A's frames without --force.
     let out = animate().arg(&b).output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains("rendered by another manifest (a.toml: frames 0-") && err.contains("--force"), "{err}");
     animate().arg(&b).args(["--force", "-q"]).assert().success();
-    animate().arg("status").arg(&b).assert().success();
+    // B's 12 frames are up to date; A's later ones are past B's end.
+    let out = animate().arg("status").arg(&b).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(out.status.code(), Some(1), "{text}");
+    assert!(text.contains(" up to date:      12  0-11\n") && text.contains("past end:"), "{text}");
 }
 
 #[test]

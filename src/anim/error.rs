@@ -97,7 +97,7 @@ pub enum AnimError {
     #[error("ffmpeg failed: {0}")]
     Ffmpeg(String),
     /// Another run holds the frame folder's lock (bad input: nothing was rendered).
-    #[error("another run is writing into {dir} ({holder}); wait for it to end, or write elsewhere")]
+    #[error("a run of another manifest is writing into {dir} ({holder}); wait for it to end, or write elsewhere")]
     Busy {
         /// The frame folder.
         dir: PathBuf,

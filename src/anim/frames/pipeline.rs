@@ -146,12 +146,15 @@ pub(crate) fn render_to_folder(
         dir: dir.to_path_buf(),
         source,
     })?;
-    let _lock = lock(dir, &anim.manifest.path)?;
-    let folder = |source| AnimError::Folder {
-        dir: dir.to_path_buf(),
-        source,
-    };
-    folder::remove(&folder::temporaries(anim, dir)).map_err(folder)?;
+    let lock = lock(dir, &anim.manifest.path)?;
+    if lock.alone() {
+        // No other run of this manifest is writing: every temporary is a killed run's.
+        let folder = |source| AnimError::Folder {
+            dir: dir.to_path_buf(),
+            source,
+        };
+        folder::remove(&folder::temporaries(anim, dir)).map_err(folder)?;
+    }
     let mut todo = Vec::with_capacity(frames.len());
     let mut done = Vec::new();
     for &f in frames {
@@ -210,6 +213,7 @@ pub(crate) fn render_to_folder(
         })
         .fold(RayCount::default(), |a, b| a + b);
 
+    drop(lock);
     if let Some(e) = failure.into_inner().unwrap_or(None) {
         return Err(e);
     }

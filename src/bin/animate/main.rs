@@ -127,7 +127,11 @@ fn clean_command(args: CleanArgs) -> anyhow::Result<Outcome> {
         );
         return Ok(Outcome::Success);
     }
-    let _lock = lock::lock(&dir, &m.path)?;
+    let held = lock::lock(&dir, &m.path)?;
+    if !held.alone() {
+        let why = "another run of this manifest is writing into the folder: clean when it has ended";
+        return Err(anyhow::anyhow!("{}: {why}", dir.display()));
+    }
     let cleaned = folder::clean(&anim, &dir).with_context(|| format!("cleaning {}", dir.display()))?;
     println!(
         "{}: removed {} frame(s) past the end ({}) and {} temporary file(s)",
