@@ -80,12 +80,7 @@ pub fn quote(text: &str) -> std::borrow::Cow<'_, str> {
     let limit = crate::limits::MAX_QUOTED;
     match text.char_indices().nth(limit) {
         None => text.into(),
-        Some((end, _)) => format!(
-            "{}… ({} characters)",
-            &text[..end],
-            text.chars().count()
-        )
-        .into(),
+        Some((end, _)) => format!("{}… ({} characters)", &text[..end], text.chars().count()).into(),
     }
 }
 
@@ -96,7 +91,10 @@ mod tests {
     #[test]
     fn devices_fifos_and_folders_are_refused_before_opening() {
         let e = read_regular(Path::new("/dev/zero"), 100, "scene").unwrap_err();
-        assert!(e.to_string().contains("not a regular file (a device"), "{e}");
+        assert!(
+            e.to_string().contains("not a regular file (a device"),
+            "{e}"
+        );
         let dir = tempfile::tempdir().unwrap();
         let e = read_regular(dir.path(), 100, "scene").unwrap_err();
         assert!(e.to_string().contains("(a folder)"), "{e}");

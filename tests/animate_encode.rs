@@ -25,7 +25,12 @@ fn have_ffmpeg() -> bool {
 fn probe(file: &std::path::Path) -> String {
     let out = Command::new("ffprobe")
         .args(["-v", "error", "-select_streams", "v:0", "-count_frames"])
-        .args(["-show_entries", "stream=codec_name,nb_read_frames", "-of", "csv=p=0"])
+        .args([
+            "-show_entries",
+            "stream=codec_name,nb_read_frames",
+            "-of",
+            "csv=p=0",
+        ])
         .arg(file)
         .output()
         .unwrap();
@@ -34,8 +39,11 @@ fn probe(file: &std::path::Path) -> String {
 
 /// The child processes of `pid` (from /proc).
 fn children(pid: u32) -> Vec<u32> {
-    let text = std::fs::read_to_string(format!("/proc/{pid}/task/{pid}/children")).unwrap_or_default();
-    text.split_whitespace().filter_map(|p| p.parse().ok()).collect()
+    let text =
+        std::fs::read_to_string(format!("/proc/{pid}/task/{pid}/children")).unwrap_or_default();
+    text.split_whitespace()
+        .filter_map(|p| p.parse().ok())
+        .collect()
 }
 
 fn hidden(dir: &std::path::Path) -> Vec<String> {
@@ -53,15 +61,33 @@ fn an_interrupted_or_stopped_video_leaves_the_previous_one_whole() {
     }
     let (dir, manifest) = project(&circle_manifest(""));
     let video = dir.path().join("v.mp4");
-    animate().arg(&manifest).arg("--video").arg(&video).arg("-q").assert().success();
+    animate()
+        .arg(&manifest)
+        .arg("--video")
+        .arg(&video)
+        .arg("-q")
+        .assert()
+        .success();
     let good = std::fs::read(&video).unwrap();
     // Not replaced without --force, and nothing rendered.
-    let out = animate().arg(&manifest).arg("--video").arg(&video).output().unwrap();
+    let out = animate()
+        .arg(&manifest)
+        .arg("--video")
+        .arg(&video)
+        .output()
+        .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
-    assert!(err.contains("exists and would be replaced") && err.contains("--force"), "{err}");
+    assert!(
+        err.contains("exists and would be replaced") && err.contains("--force"),
+        "{err}"
+    );
     let long = dir.path().join("long.toml");
-    std::fs::write(&long, circle_manifest("").replace("frames = 12", "frames = 100000")).unwrap();
+    std::fs::write(
+        &long,
+        circle_manifest("").replace("frames = 12", "frames = 100000"),
+    )
+    .unwrap();
     for (sig, code, stop_ffmpeg) in [("INT", 130, false), ("TERM", 143, true)] {
         let mut child = Command::new(assert_cmd::cargo::cargo_bin("animate"))
             .arg(&long)
@@ -74,12 +100,20 @@ fn an_interrupted_or_stopped_video_leaves_the_previous_one_whole() {
         std::thread::sleep(Duration::from_millis(800));
         if stop_ffmpeg {
             for c in children(child.id()) {
-                assert!(Command::new("kill").args(["-s", "STOP", &c.to_string()]).status().unwrap().success());
+                assert!(Command::new("kill")
+                    .args(["-s", "STOP", &c.to_string()])
+                    .status()
+                    .unwrap()
+                    .success());
             }
             std::thread::sleep(Duration::from_millis(300));
         }
         let sent = Instant::now();
-        assert!(Command::new("kill").args(["-s", sig, &child.id().to_string()]).status().unwrap().success());
+        assert!(Command::new("kill")
+            .args(["-s", sig, &child.id().to_string()])
+            .status()
+            .unwrap()
+            .success());
         while child.try_wait().unwrap().is_none() && sent.elapsed() < Duration::from_secs(5) {
             std::thread::sleep(Duration::from_millis(10));
         }
@@ -89,9 +123,19 @@ fn an_interrupted_or_stopped_video_leaves_the_previous_one_whole() {
         let mut err = String::new();
         std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
         assert_eq!(status.code(), Some(code), "SIG{sig}: {err}");
-        assert!(took < Duration::from_secs(1), "SIG{sig} (ffmpeg stopped: {stop_ffmpeg}): {took:?}");
-        assert!(err.contains("cannot be resumed") && !err.contains("completes the run"), "{err}");
-        assert_eq!(std::fs::read(&video).unwrap(), good, "SIG{sig}: the previous video changed");
+        assert!(
+            took < Duration::from_secs(1),
+            "SIG{sig} (ffmpeg stopped: {stop_ffmpeg}): {took:?}"
+        );
+        assert!(
+            err.contains("cannot be resumed") && !err.contains("completes the run"),
+            "{err}"
+        );
+        assert_eq!(
+            std::fs::read(&video).unwrap(),
+            good,
+            "SIG{sig}: the previous video changed"
+        );
         assert_eq!(hidden(dir.path()), Vec::<String>::new(), "SIG{sig}");
     }
 }
@@ -102,20 +146,41 @@ fn encode_checks_the_folder_then_makes_the_video_with_the_options() {
         return;
     }
     let (dir, manifest) = project(&circle_manifest(""));
-    animate().arg(&manifest).args(["--frames", "0-5", "-q"]).assert().success();
+    animate()
+        .arg(&manifest)
+        .args(["--frames", "0-5", "-q"])
+        .assert()
+        .success();
     let video = dir.path().join("frames.mp4");
     let out = animate().arg("encode").arg(&manifest).output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
-    assert!(err.contains("not ready to encode: frames missing 6-11"), "{err}");
+    assert!(
+        err.contains("not ready to encode: frames missing 6-11"),
+        "{err}"
+    );
     assert!(!video.exists());
-    animate().arg(&manifest).args(["--resume", "-q"]).assert().success();
-    animate().arg("encode").arg(&manifest).args(["--codec", "libx264", "--crf", "30", "-q"]).assert().success();
+    animate()
+        .arg(&manifest)
+        .args(["--resume", "-q"])
+        .assert()
+        .success();
+    animate()
+        .arg("encode")
+        .arg(&manifest)
+        .args(["--codec", "libx264", "--crf", "30", "-q"])
+        .assert()
+        .success();
     assert_eq!(probe(&video), "h264,12");
     let first = std::fs::read(&video).unwrap();
     animate().arg("encode").arg(&manifest).assert().code(2);
     // Another codec, forced over the first video.
-    animate().arg("encode").arg(&manifest).args(["--codec", "mpeg4", "--force", "-q"]).assert().success();
+    animate()
+        .arg("encode")
+        .arg(&manifest)
+        .args(["--codec", "mpeg4", "--force", "-q"])
+        .assert()
+        .success();
     assert_eq!(probe(&video), "mpeg4,12");
     assert_ne!(std::fs::read(&video).unwrap(), first);
     // A stale frame is refused.
@@ -124,12 +189,27 @@ fn encode_checks_the_folder_then_makes_the_video_with_the_options() {
     let n = bytes.len();
     bytes[n / 2] ^= 1;
     std::fs::write(&png, bytes).unwrap();
-    let out = animate().arg("encode").arg(&manifest).arg("--force").output().unwrap();
+    let out = animate()
+        .arg("encode")
+        .arg(&manifest)
+        .arg("--force")
+        .output()
+        .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("frames stale 4"), "{err}");
     // The same options on --video.
     let other = dir.path().join("crf.mkv");
-    animate().arg(&manifest).arg("--video").arg(&other).args(["--codec", "libx264", "--crf", "40", "-q"]).assert().success();
+    animate()
+        .arg(&manifest)
+        .arg("--video")
+        .arg(&other)
+        .args(["--codec", "libx264", "--crf", "40", "-q"])
+        .assert()
+        .success();
     assert_eq!(probe(&other), "h264,12");
-    animate().arg(&manifest).args(["--crf", "20"]).assert().code(2);
+    animate()
+        .arg(&manifest)
+        .args(["--crf", "20"])
+        .assert()
+        .code(2);
 }

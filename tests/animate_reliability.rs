@@ -87,7 +87,12 @@ fn kill_9_and_concurrent_runs_never_leave_a_lying_raw_record() {
         let name = format!("trial {trial} (seed 23)");
         if trial % 2 == 0 {
             // B over A's folder, killed after 5–90 ms.
-            let mut child = spawn(&[b.as_os_str(), "--force".as_ref(), "--threads".as_ref(), "2".as_ref()]);
+            let mut child = spawn(&[
+                b.as_os_str(),
+                "--force".as_ref(),
+                "--threads".as_ref(),
+                "2".as_ref(),
+            ]);
             std::thread::sleep(Duration::from_millis(5 + rng.below(86)));
             child.kill().unwrap();
             child.wait().unwrap();
@@ -167,10 +172,22 @@ fn damage_inside_a_png_is_seen_and_verify_decodes() {
         .unwrap();
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(text.contains("      stale:       2  2,6\n"), "{text}");
-    animate().arg(&manifest).args(["--resume", "-q"]).assert().success();
+    animate()
+        .arg(&manifest)
+        .args(["--resume", "-q"])
+        .assert()
+        .success();
     // Plain --resume trusts the cheap checks, which frame 6 passes; --verify does not.
-    animate().args(["status", "--verify"]).arg(&manifest).assert().code(1);
-    animate().arg(&manifest).args(["--resume", "--verify", "-q"]).assert().success();
+    animate()
+        .args(["status", "--verify"])
+        .arg(&manifest)
+        .assert()
+        .code(1);
+    animate()
+        .arg(&manifest)
+        .args(["--resume", "--verify", "-q"])
+        .assert()
+        .success();
     animate()
         .args(["status", "--verify"])
         .arg(&manifest)
@@ -184,7 +201,11 @@ fn crc32(bytes: &[u8]) -> u32 {
     for &b in bytes {
         c ^= u32::from(b);
         for _ in 0..8 {
-            c = if c & 1 != 0 { 0xEDB8_8320 ^ (c >> 1) } else { c >> 1 };
+            c = if c & 1 != 0 {
+                0xEDB8_8320 ^ (c >> 1)
+            } else {
+                c >> 1
+            };
         }
     }
     !c
@@ -201,7 +222,11 @@ fn mkfifo(path: &Path) {
 
 /// Runs `cmd` with a deadline: a hang fails instead of blocking the suite.
 fn within(cmd: &mut Command, secs: u64) -> std::process::Output {
-    let mut child = cmd.stdout(Stdio::piped()).stderr(Stdio::piped()).spawn().unwrap();
+    let mut child = cmd
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
     let start = Instant::now();
     while child.try_wait().unwrap().is_none() {
         if start.elapsed() > Duration::from_secs(secs) {
@@ -223,7 +248,10 @@ fn devices_fifos_and_huge_files_are_refused_with_the_limit() {
     let out = within(animate_cmd().arg("/dev/zero"), 10);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
-    assert!(err.contains("/dev/zero") && err.contains("not a regular file"), "{err}");
+    assert!(
+        err.contains("/dev/zero") && err.contains("not a regular file"),
+        "{err}"
+    );
     let fifo = dir.path().join("pipe.txt");
     mkfifo(&fifo);
     for scene in ["/dev/zero", "pipe.txt"] {
@@ -232,9 +260,15 @@ fn devices_fifos_and_huge_files_are_refused_with_the_limit() {
         let out = within(animate_cmd().arg(&manifest), 10);
         let err = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{err}");
-        assert!(err.contains(":1:9: scene: cannot read") && err.contains("not a regular file"), "{err}");
+        assert!(
+            err.contains(":1:9: scene: cannot read") && err.contains("not a regular file"),
+            "{err}"
+        );
     }
-    let out = within(Command::new(assert_cmd::cargo::cargo_bin("raytrace")).arg(&fifo), 10);
+    let out = within(
+        Command::new(assert_cmd::cargo::cargo_bin("raytrace")).arg(&fifo),
+        10,
+    );
     assert_eq!(out.status.code(), Some(2));
     // A manifest past 16 MiB: refused, the limit stated, before it is read.
     let big = dir.path().join("big.toml");
@@ -243,7 +277,10 @@ fn devices_fifos_and_huge_files_are_refused_with_the_limit() {
     let out = within(animate_cmd().arg(&big), 10);
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
-    assert!(err.contains("larger than the limit of 16 MiB for a manifest"), "{err}");
+    assert!(
+        err.contains("larger than the limit of 16 MiB for a manifest"),
+        "{err}"
+    );
 }
 
 #[test]
@@ -262,7 +299,9 @@ fn status_does_not_follow_a_frame_into_a_device_or_fifo() {
     // --resume replaces them with frames (the rename replaces the link and the FIFO).
     let out = within(animate_cmd().arg(&manifest).args(["--resume", "-q"]), 20);
     assert!(out.status.success());
-    assert!(std::fs::symlink_metadata(frames.join("frame_0001.png")).unwrap().is_file());
+    assert!(std::fs::symlink_metadata(frames.join("frame_0001.png"))
+        .unwrap()
+        .is_file());
 }
 
 #[test]
@@ -272,7 +311,11 @@ fn a_signal_ends_a_run_whose_stdout_reader_never_reads() {
     let fifo = dir.path().join("out.fifo");
     mkfifo(&fifo);
     // Holding the FIFO open for reading and writing: the reader that never reads.
-    let _held = std::fs::OpenOptions::new().read(true).write(true).open(&fifo).unwrap();
+    let _held = std::fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .open(&fifo)
+        .unwrap();
     for (sig, code) in [("TERM", 143), ("INT", 130)] {
         let out = std::fs::OpenOptions::new().write(true).open(&fifo).unwrap();
         let mut child = animate_cmd()
@@ -284,7 +327,9 @@ fn a_signal_ends_a_run_whose_stdout_reader_never_reads() {
             .unwrap();
         std::thread::sleep(Duration::from_millis(700));
         let sent = Instant::now();
-        let ok = Command::new("kill").args(["-s", sig, &child.id().to_string()]).status();
+        let ok = Command::new("kill")
+            .args(["-s", sig, &child.id().to_string()])
+            .status();
         assert!(ok.unwrap().success());
         while child.try_wait().unwrap().is_none() && sent.elapsed() < Duration::from_secs(5) {
             std::thread::sleep(Duration::from_millis(10));
@@ -296,7 +341,10 @@ fn a_signal_ends_a_run_whose_stdout_reader_never_reads() {
         assert!(took < Duration::from_secs(1), "SIG{sig}: {took:?}");
         let mut err = String::new();
         std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
-        assert!(err.contains("cannot be resumed") && !err.contains("completes the run"), "{err}");
+        assert!(
+            err.contains("cannot be resumed") && !err.contains("completes the run"),
+            "{err}"
+        );
     }
 }
 
@@ -308,9 +356,20 @@ fn frames_past_a_shortened_sequence_are_reported_and_cleaned() {
     // A killed run's temporary.
     std::fs::write(frames.join(".frame_0003.png.Ab12Cd.tmp"), b"half").unwrap();
     let ten = dir.path().join("ten.toml");
-    std::fs::write(&ten, circle_manifest("").replace("frames = 12", "frames = 10")).unwrap();
-    animate().arg(&ten).args(["-q", "--force"]).assert().success();
-    assert!(!frames.join(".frame_0003.png.Ab12Cd.tmp").exists(), "the run clears stale temporaries");
+    std::fs::write(
+        &ten,
+        circle_manifest("").replace("frames = 12", "frames = 10"),
+    )
+    .unwrap();
+    animate()
+        .arg(&ten)
+        .args(["-q", "--force"])
+        .assert()
+        .success();
+    assert!(
+        !frames.join(".frame_0003.png.Ab12Cd.tmp").exists(),
+        "the run clears stale temporaries"
+    );
     std::fs::write(frames.join(".frame_0004.png.Zz99Yy.tmp"), b"half").unwrap();
     let out = animate().arg("status").arg(&ten).output().unwrap();
     let text = String::from_utf8_lossy(&out.stdout);
@@ -320,7 +379,10 @@ fn frames_past_a_shortened_sequence_are_reported_and_cleaned() {
     let out = animate().arg("clean").arg(&ten).output().unwrap();
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success());
-    assert!(text.contains("removed 10 frame(s) past the end (10-19) and 1 temporary file(s)"), "{text}");
+    assert!(
+        text.contains("removed 10 frame(s) past the end (10-19) and 1 temporary file(s)"),
+        "{text}"
+    );
     assert_eq!(files(&frames).len(), 10);
     animate().arg("status").arg(&ten).assert().success();
 }
@@ -340,23 +402,38 @@ fn one_folder_one_run_and_no_overwriting_another_manifests_frames() {
     let out = animate().arg(&b).output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     // A second run of A's manifest shares the folder (as render-farm shards do).
-    animate().arg(&a).args(["--frames", "3999", "-q"]).assert().success();
+    animate()
+        .arg(&a)
+        .args(["--frames", "3999", "-q"])
+        .assert()
+        .success();
     first.kill().unwrap();
     first.wait().unwrap();
     assert_eq!(out.status.code(), Some(2), "{err}");
     let holder = format!("pid {}, manifest ", first.id());
-    assert!(err.contains("a run of another manifest is writing into") && err.contains(&holder) && err.contains("a.toml"), "{err}");
+    assert!(
+        err.contains("a run of another manifest is writing into")
+            && err.contains(&holder)
+            && err.contains("a.toml"),
+        "{err}"
+    );
     // A killed holder leaves no lock: B runs, but refuses A's frames without --force.
     let out = animate().arg(&b).output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
-    assert!(err.contains("rendered by another manifest (a.toml: frames 0-") && err.contains("--force"), "{err}");
+    assert!(
+        err.contains("rendered by another manifest (a.toml: frames 0-") && err.contains("--force"),
+        "{err}"
+    );
     animate().arg(&b).args(["--force", "-q"]).assert().success();
     // B's 12 frames are up to date; A's later ones are past B's end.
     let out = animate().arg("status").arg(&b).output().unwrap();
     let text = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(1), "{text}");
-    assert!(text.contains(" up to date:      12  0-11\n") && text.contains("past end:"), "{text}");
+    assert!(
+        text.contains(" up to date:      12  0-11\n") && text.contains("past end:"),
+        "{text}"
+    );
 }
 
 #[test]
@@ -372,7 +449,7 @@ fn smaller_faults() {
     // A closed standard output is an error, not a silent success.
     let out = Command::new("sh")
         .arg("-c")
-        .arg(format!("exec \"$0\" \"$1\" --stdout raw -q >&-"))
+        .arg("exec \"$0\" \"$1\" --stdout raw -q >&-")
         .arg(assert_cmd::cargo::cargo_bin("animate"))
         .arg(&manifest)
         .output()
@@ -381,18 +458,29 @@ fn smaller_faults() {
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(err.contains("standard output is closed"), "{err}");
     // fps has a lower bound.
-    std::fs::write(&manifest, circle_manifest("").replace("fps = 12", "fps = 5e-324")).unwrap();
+    std::fs::write(
+        &manifest,
+        circle_manifest("").replace("fps = 12", "fps = 5e-324"),
+    )
+    .unwrap();
     let out = animate().arg(&manifest).output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{err}");
-    assert!(err.contains("`fps` must be a number from 0.01 to 1000"), "{err}");
+    assert!(
+        err.contains("`fps` must be a number from 0.01 to 1000"),
+        "{err}"
+    );
     // A 1 MB token is cut in the message.
     let token = "x".repeat(1 << 20);
     std::fs::write(dir.path().join("t.txt"), format!("{token} 48\n")).unwrap();
     let out = raytrace().arg(dir.path().join("t.txt")).output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2));
-    assert!(err.len() < 400 && err.contains("… (1048576 characters)"), "{}", &err[..err.len().min(400)]);
+    assert!(
+        err.len() < 400 && err.contains("… (1048576 characters)"),
+        "{}",
+        &err[..err.len().min(400)]
+    );
 }
 
 #[test]
@@ -407,16 +495,31 @@ fn a_full_disk_names_the_frame_and_leaves_no_temporary() {
         .status()
         .is_ok_and(|s| s.success());
     if !mounted {
-        assert!(std::env::var_os("CI").is_none(), "CI runs as root and can mount a tmpfs");
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "CI runs as root and can mount a tmpfs"
+        );
         eprintln!("skipped: cannot mount a small tmpfs here (not root?)");
         return;
     }
-    let out = animate().arg(&manifest).arg("-o").arg(&mnt).args(["-q", "--threads", "1"]).output().unwrap();
+    let out = animate()
+        .arg(&manifest)
+        .arg("-o")
+        .arg(&mnt)
+        .args(["-q", "--threads", "1"])
+        .output()
+        .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
-    let left: Vec<String> = entries_of(&mnt).into_iter().filter(|n| n.ends_with(".tmp")).collect();
+    let left: Vec<String> = entries_of(&mnt)
+        .into_iter()
+        .filter(|n| n.ends_with(".tmp"))
+        .collect();
     let _ = Command::new("umount").arg(&mnt).status();
     assert_eq!(out.status.code(), Some(1), "{err}");
-    assert!(err.contains("No space left on device") && err.contains("/small/frame_00"), "{err}");
+    assert!(
+        err.contains("No space left on device") && err.contains("/small/frame_00"),
+        "{err}"
+    );
     assert!(left.is_empty(), "{left:?}");
 }
 

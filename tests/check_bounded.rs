@@ -44,13 +44,23 @@ fn check_peak(manifest: &std::path::Path, n: u32) -> u64 {
 
 #[test]
 fn check_memory_does_not_grow_with_the_frames() {
-    let text = circle_manifest("\n[render]\nwidth = 160\nheight = 120\n[check]\nframes = [0]\nreferences = \"refs\"\n")
-        .replace("frames = 12", "frames = 400");
+    let text = circle_manifest(
+        "\n[render]\nwidth = 160\nheight = 120\n[check]\nframes = [0]\nreferences = \"refs\"\n",
+    )
+    .replace("frames = 12", "frames = 400");
     let (_dir, manifest) = project(&text);
-    animate().arg("bless").arg(&manifest).args(["--frames", "0-399", "-q"]).assert().success();
+    animate()
+        .arg("bless")
+        .arg(&manifest)
+        .args(["--frames", "0-399", "-q"])
+        .assert()
+        .success();
     let (few, many) = (check_peak(&manifest, 20), check_peak(&manifest, 400));
     // All 400 references at once would be 400 × 57.6 kB = 23 MB more.
-    assert!(many < few + 8 * 1024, "20 frames: {few} KiB, 400 frames: {many} KiB");
+    assert!(
+        many < few + 8 * 1024,
+        "20 frames: {few} KiB, 400 frames: {many} KiB"
+    );
 }
 
 #[test]
@@ -64,7 +74,13 @@ fn report_links_survive_question_marks_and_hashes_in_names() {
     magenta_block(&mut img);
     img.save(&reference).unwrap();
     let page = dir.path().join("page");
-    let out = animate().arg("check").arg(&manifest).arg("--html").arg(&page).output().unwrap();
+    let out = animate()
+        .arg("check")
+        .arg(&manifest)
+        .arg("--html")
+        .arg(&page)
+        .output()
+        .unwrap();
     assert_eq!(out.status.code(), Some(1));
     let html = std::fs::read_to_string(page.join("index.html")).unwrap();
     let links: Vec<String> = html
@@ -72,10 +88,15 @@ fn report_links_survive_question_marks_and_hashes_in_names() {
         .skip(1)
         .map(|rest| rest[..rest.find('"').unwrap()].to_string())
         .collect();
-    assert!(links.iter().any(|l| l.starts_with("f%3F_0003_%23x.")), "{links:?}");
+    assert!(
+        links.iter().any(|l| l.starts_with("f%3F_0003_%23x.")),
+        "{links:?}"
+    );
     for link in links {
         assert!(!link.contains(['?', '#']), "{link}");
-        let file = percent_encoding::percent_decode_str(&link).decode_utf8().unwrap();
+        let file = percent_encoding::percent_decode_str(&link)
+            .decode_utf8()
+            .unwrap();
         assert!(page.join(file.as_ref()).is_file(), "{link} names no file");
     }
 }

@@ -59,9 +59,7 @@ fn run(args: Args) -> anyhow::Result<()> {
     let format = ImageFormat::from_path(&out)?;
     let mut scene = Scene::load(&args.scene)?;
     check_target(&out)?;
-    let same = |a: &std::path::Path, b: &std::path::Path| {
-        matches!((a.canonicalize(), b.canonicalize()), (Ok(x), Ok(y)) if x == y)
-    };
+    let same = |a: &std::path::Path, b: &std::path::Path| matches!((a.canonicalize(), b.canonicalize()), (Ok(x), Ok(y)) if x == y);
     if same(&args.scene, &out) {
         return Err(OutputError::Target {
             path: out,

@@ -12,9 +12,9 @@ use super::{Scene, ShapeSpec, MAX_COUNT, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
 use crate::bump::Bump;
 use crate::camera::Camera;
 use crate::fog::Fog;
+use crate::input::quote;
 use crate::object::{Light, Material, Object};
 use crate::texture::{Color, Texture};
-use crate::input::quote;
 use counts::{Counts, Record};
 use glam::DVec3;
 
@@ -107,7 +107,10 @@ impl<'a> Parser<'a> {
             Ok(v) if v.is_finite() => Ok((v, tok)),
             Ok(_) => Err(self.error(
                 &tok,
-                format!("expected a finite number for {field}, found '{}'", quote(tok.text)),
+                format!(
+                    "expected a finite number for {field}, found '{}'",
+                    quote(tok.text)
+                ),
                 field,
             )),
             Err(_) => Err(self.error(
@@ -124,7 +127,10 @@ impl<'a> Parser<'a> {
         if v > 0.0 {
             Ok(v)
         } else {
-            let msg = format!("{field} must be greater than 0, found '{}'", quote(tok.text));
+            let msg = format!(
+                "{field} must be greater than 0, found '{}'",
+                quote(tok.text)
+            );
             Err(self.error(&tok, msg, field))
         }
     }
@@ -182,7 +188,10 @@ impl<'a> Parser<'a> {
         if (lo..=hi).contains(&v) {
             Ok(v)
         } else {
-            let msg = format!("{field} must be from {lo} to {hi}, found '{}'", quote(tok.text));
+            let msg = format!(
+                "{field} must be from {lo} to {hi}, found '{}'",
+                quote(tok.text)
+            );
             Err(self.error(&tok, msg, field))
         }
     }

@@ -73,7 +73,10 @@ pub fn temporaries(anim: &Animation, dir: &Path) -> Vec<PathBuf> {
     };
     list(dir, &|t| frame_of(anim, t).is_some(), &mut found);
     let records = dir.join(RAW_RECORDS);
-    let record = |t: &str| t.strip_suffix(".txt").is_some_and(|f| frame_of(anim, f).is_some());
+    let record = |t: &str| {
+        t.strip_suffix(".txt")
+            .is_some_and(|f| frame_of(anim, f).is_some())
+    };
     list(&records, &record, &mut found);
     found.sort();
     found
@@ -126,7 +129,11 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         std::fs::write(dir.path().join("s.txt"), "8 6  0 1 6  0 1 0  0 0  1 0 0 1\n1.0  0 1 0   1 0.9 0.2 0.1   0.7 0.3 0 1 0 0\n5 10 5  1 1 1  0.9").unwrap();
         let m = dir.path().join("m.toml");
-        std::fs::write(&m, "scene = \"s.txt\"\nframes = 10\n[output]\nname = \"f_###x\"\n").unwrap();
+        std::fs::write(
+            &m,
+            "scene = \"s.txt\"\nframes = 10\n[output]\nname = \"f_###x\"\n",
+        )
+        .unwrap();
         let p = crate::anim::project::Project::load(&m).unwrap();
         let anim = Animation::new(&p).unwrap();
         assert_eq!(frame_of(&anim, "f_012x.png"), Some(12));

@@ -158,7 +158,8 @@ pub(crate) fn render_to_folder(
     let mut todo = Vec::with_capacity(frames.len());
     let mut done = Vec::new();
     for &f in frames {
-        if policy.resume && status::frame_state(anim, dir, f, policy.verify) == FrameState::UpToDate {
+        if policy.resume && status::frame_state(anim, dir, f, policy.verify) == FrameState::UpToDate
+        {
             done.push(f);
         } else {
             todo.push(f);

@@ -177,7 +177,9 @@ mod tests {
             ..StatusReport::default()
         };
         assert!(!past.complete());
-        assert!(past.table(Path::new("f")).contains("   past end:       2  1-2  ("));
+        assert!(past
+            .table(Path::new("f"))
+            .contains("   past end:       2  1-2  ("));
         assert_eq!(past.json(Path::new("f"))["past_end"], "1-2");
     }
 

@@ -157,7 +157,9 @@ impl Ffmpeg {
             Some(d) if !d.as_os_str().is_empty() => d,
             _ => Path::new("."),
         };
-        let name = file.file_name().map_or("video".into(), |n| n.to_string_lossy());
+        let name = file
+            .file_name()
+            .map_or("video".into(), |n| n.to_string_lossy());
         let ext = file.extension().map_or("".into(), |e| e.to_string_lossy());
         let temp = tempfile::Builder::new()
             .prefix(&format!(".{name}."))
@@ -280,10 +282,12 @@ impl Ffmpeg {
             return Err(AnimError::Ffmpeg(format!("{status}: {words}")));
         }
         let file = self.file.clone();
-        self.temp.persist(&file).map_err(|e| AnimError::VideoTarget {
-            path: file.clone(),
-            reason: format!("cannot rename the finished video onto it: {}", e.error),
-        })
+        self.temp
+            .persist(&file)
+            .map_err(|e| AnimError::VideoTarget {
+                path: file.clone(),
+                reason: format!("cannot rename the finished video onto it: {}", e.error),
+            })
     }
 
     /// The error when writing into ffmpeg failed: ffmpeg's own words if it has ended.

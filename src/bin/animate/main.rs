@@ -87,7 +87,10 @@ fn encode_command(args: EncodeArgs) -> anyhow::Result<Outcome> {
     let project = whitted::anim::Project::load(&args.manifest)?;
     let (m, anim) = (&project.manifest, Animation::new(&project)?);
     let dir = args.dir.clone().unwrap_or_else(|| m.output.dir.clone());
-    let video = args.out.clone().unwrap_or_else(|| encode::default_video(&dir));
+    let video = args
+        .out
+        .clone()
+        .unwrap_or_else(|| encode::default_video(&dir));
     let policy = Policy {
         force: args.force,
         encoding: args.encoding.encoding(),
@@ -129,10 +132,12 @@ fn clean_command(args: CleanArgs) -> anyhow::Result<Outcome> {
     }
     let held = lock::lock(&dir, &m.path)?;
     if !held.alone() {
-        let why = "another run of this manifest is writing into the folder: clean when it has ended";
+        let why =
+            "another run of this manifest is writing into the folder: clean when it has ended";
         return Err(anyhow::anyhow!("{}: {why}", dir.display()));
     }
-    let cleaned = folder::clean(&anim, &dir).with_context(|| format!("cleaning {}", dir.display()))?;
+    let cleaned =
+        folder::clean(&anim, &dir).with_context(|| format!("cleaning {}", dir.display()))?;
     println!(
         "{}: removed {} frame(s) past the end ({}) and {} temporary file(s)",
         dir.display(),

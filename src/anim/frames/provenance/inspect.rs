@@ -131,7 +131,8 @@ fn inspect_file(
 fn png_record(mut r: impl Read) -> Result<Record, String> {
     let io = |e: std::io::Error| format!("cannot read it: {e}");
     let mut sig = [0u8; 8];
-    r.read_exact(&mut sig).map_err(|_| "cut short".to_string())?;
+    r.read_exact(&mut sig)
+        .map_err(|_| "cut short".to_string())?;
     if sig != *b"\x89PNG\r\n\x1a\n" {
         return Err("not a PNG file".into());
     }
@@ -139,7 +140,8 @@ fn png_record(mut r: impl Read) -> Result<Record, String> {
     let mut buf = vec![0u8; 1 << 16];
     loop {
         let mut head = [0u8; 8];
-        r.read_exact(&mut head).map_err(|_| "cut short".to_string())?;
+        r.read_exact(&mut head)
+            .map_err(|_| "cut short".to_string())?;
         let len = u32::from_be_bytes([head[0], head[1], head[2], head[3]]) as usize;
         let kind = [head[4], head[5], head[6], head[7]];
         let mut crc = crc32fast::Hasher::new();
@@ -268,7 +270,9 @@ fn decode(path: &Path, format: ImageFormat, width: u32, height: u32) -> Result<(
     let image = image::ImageReader::open(path)
         .and_then(|r| r.with_guessed_format())
         .map_err(|e| format!("cannot read it: {e}"))?;
-    let image = image.decode().map_err(|e| format!("cannot decode it: {e}"))?;
+    let image = image
+        .decode()
+        .map_err(|e| format!("cannot decode it: {e}"))?;
     if (image.width(), image.height()) != (width, height) {
         return Err(format!(
             "it is {}×{}, not {width}×{height}",
