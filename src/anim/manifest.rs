@@ -337,7 +337,7 @@ impl Source<'_> {
         let fps = match &raw.fps {
             Some(v) if !(MIN_FPS..=MAX_FPS).contains(v.get_ref()) => {
                 let message = format!(
-                    "`fps` must be a number from {MIN_FPS} to {MAX_FPS}, found {}",
+                    "`fps` must be a number from {MIN_FPS} to {MAX_FPS}, found {:?}",
                     v.get_ref()
                 );
                 return Err(self.error(v.span(), message));

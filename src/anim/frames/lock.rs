@@ -131,7 +131,8 @@ mod tests {
         drop(shard);
         let e = lock(dir.path(), Path::new("/a/two.toml")).unwrap_err();
         let shown = e.to_string();
-        let me = format!("pid {}, manifest /a/one.toml, started ", std::process::id());
+        // The latest run of the holding manifest names it.
+        let me = format!("pid {}, manifest /b/one.toml, started ", std::process::id());
         assert!(shown.contains(&me), "{shown}");
         assert_eq!(e.exit_code(), 2);
         drop(first);

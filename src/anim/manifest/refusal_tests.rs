@@ -165,7 +165,7 @@ fn numbers_out_of_range_are_located() {
     let cases = [
         (
             "fps = 0",
-            "3:7: `fps` must be a number from 0.01 to 1000, found 0",
+            "3:7: `fps` must be a number from 0.01 to 1000, found 0.0",
         ),
         (
             "fps = 5e-324",
