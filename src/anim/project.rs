@@ -83,7 +83,12 @@ pub struct Animation<'p> {
     pub samples: u32,
     /// The acceleration structure every frame shares, when no track moves geometry.
     shared: Option<Arc<Accel>>,
+    /// Told of every frame drawn (a live display such as tev), if any.
+    observer: Option<FrameObserver>,
 }
+
+/// A callback told of each frame as it is drawn: its number and pixels.
+pub type FrameObserver = Arc<dyn Fn(u32, &Frame) + Send + Sync>;
 
 impl<'p> Animation<'p> {
     /// The project at the manifest's size (`[render]` overrides, else the scene's).
@@ -118,7 +123,14 @@ impl<'p> Animation<'p> {
             height,
             samples: project.manifest.render.samples.max(1),
             shared,
+            observer: None,
         })
+    }
+
+    /// This animation, telling `observer` of every frame it draws (`--display tev`).
+    pub fn observed(mut self, observer: FrameObserver) -> Animation<'p> {
+        self.observer = Some(observer);
+        self
     }
 
     /// The camera of a frame state, `None` when the eye is on the point it looks at.
@@ -150,6 +162,14 @@ impl<'p> Animation<'p> {
     /// its camera; with motion blur the mean of its sub-frames (each sample clamped, all
     /// averaged, then rounded).
     pub fn render(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
+        let drawn = self.draw(frame)?;
+        if let Some(observe) = &self.observer {
+            observe(frame, &drawn.0);
+        }
+        Ok(drawn)
+    }
+
+    fn draw(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
         let (w, h, n) = (self.width, self.height, self.samples);
         let times = self.timeline.times(frame);
         if let [t] = times[..] {

@@ -1,4 +1,4 @@
-//! `raytrace [SCENE] [-o OUT] [--size WxH] [--samples N] [--threads N]`: one image from a
+//! `raytrace [SCENE] [-o OUT] [--size WxH] [--samples N] [--threads N] [--display tev]`: one image from a
 //! Scene.txt, the report's main(). It parses the command line and calls the library;
 //! exit statuses follow `whitted::exit` (2 bad input, 1 a failed write, 130/143 stopped by
 //! SIGINT/SIGTERM).
@@ -7,9 +7,15 @@ use anyhow::Context;
 use clap::Parser;
 use std::path::PathBuf;
 use std::process::ExitCode;
+use whitted::display::{Display, Tev};
 use whitted::exit::Outcome;
 use whitted::output::{check_target, write_atomic, ImageFormat, OutputError};
+use whitted::render::render_observed;
 use whitted::{render, trace::Tracer, Scene, SceneError};
+
+/// Rows per band streamed to tev: a band is a few milliseconds of work at the report's
+/// sizes, so the picture fills in smoothly.
+const STREAM_BAND: u32 = 16;
 
 const AFTER_HELP: &str = "\
 Formats, by OUT's extension: .png, .jpg/.jpeg (quality 90), .ppm (binary P6), .raw (the
@@ -42,6 +48,10 @@ struct Args {
     /// Print nothing on success.
     #[arg(short, long)]
     quiet: bool,
+    /// Also stream the rows to a running tev viewer as they finish: `tev` (at
+    /// 127.0.0.1:14158) or `tev=HOST:PORT`. A missing viewer is a warning.
+    #[arg(long, value_name = "tev[=HOST:PORT]")]
+    display: Option<Display>,
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -71,8 +81,18 @@ fn run(args: Args) -> anyhow::Result<()> {
     let pool = whitted::process::pool(args.threads).context("cannot start the worker threads")?;
     let start = std::time::Instant::now();
     let (camera, tracer) = (scene.camera(), Tracer::new(&scene));
-    let (frame, rays) =
-        pool.install(|| render(&tracer, &camera, scene.width, scene.height, args.samples));
+    let (w, h, n) = (scene.width, scene.height, args.samples);
+    let (frame, rays) = match &args.display {
+        None => pool.install(|| render(&tracer, &camera, w, h, n)),
+        Some(Display::Tev(addr)) => {
+            let tev = Tev::connect_stderr(addr, "raytrace");
+            let name = format!("raytrace: {}", out.display());
+            tev.create(&name, w, h);
+            let band = STREAM_BAND;
+            let send = |y0: u32, rows: &[u8]| tev.rows(&name, w, y0, rows);
+            pool.install(|| render_observed(&tracer, &camera, w, h, n, band, &send))
+        }
+    };
     let traced = start.elapsed().as_secs_f64();
     write_atomic(&out, &frame, format)?;
     if !args.quiet {
