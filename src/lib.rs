@@ -39,6 +39,7 @@ pub mod display;
 pub mod exit;
 pub mod fileloc;
 pub mod fog;
+pub mod input;
 pub mod limits;
 pub mod noise;
 pub mod object;

@@ -22,6 +22,22 @@ pub const MAX_FRAMES: u32 = 1_000_000;
 pub const MAX_COORD: f64 = 1e9;
 /// The largest number of turns a circle accepts (keeps turns·frame finite).
 pub const MAX_TURNS: f64 = 1e6;
+/// The lowest frame rate a manifest accepts: one frame every 100 s (ffmpeg's rational
+/// rates and every duration stay finite and meaningful).
+pub const MIN_FPS: f64 = 0.01;
+/// The highest frame rate a manifest accepts.
+pub const MAX_FPS: f64 = 1000.0;
+/// The largest scene file read: 256 MiB (a million objects of each kind at about 100
+/// bytes a record fit, with room for comments).
+pub const MAX_SCENE_BYTES: u64 = 256 << 20;
+/// The largest manifest file read: 16 MiB.
+pub const MAX_MANIFEST_BYTES: u64 = 16 << 20;
+/// The largest frame file read by `status`, `--resume` and `encode`: the RGB bytes of
+/// the largest image accepted (`MAX_PIXELS`) and 16 MiB for headers and metadata.
+pub const MAX_FRAME_BYTES: u64 = 3 * MAX_PIXELS + (16 << 20);
+/// The longest piece of input an error message quotes, in characters; longer ones are
+/// cut with "…".
+pub const MAX_QUOTED: usize = 60;
 
 /// Whether `width`×`height` is a size the renderer accepts.
 pub fn size_ok(width: u64, height: u64) -> bool {

@@ -69,6 +69,40 @@ pub fn watch_signals() -> Arc<AtomicUsize> {
     stop
 }
 
+/// For a run whose output may stall (a `--stdout` reader that stops reading holds a
+/// write forever): once `stop` holds a signal, waits half a second for the run to stop
+/// by itself, then prints `last_words(N)` on standard error and ends the process with
+/// status 128 + N. The run normally ends first, and the process with it.
+pub fn exit_when_stuck(
+    stop: Arc<AtomicUsize>,
+    last_words: impl Fn(i32) -> String + Send + 'static,
+) {
+    use std::sync::atomic::Ordering;
+    std::thread::spawn(move || loop {
+        let sig = stop.load(Ordering::SeqCst);
+        if sig != 0 {
+            std::thread::sleep(std::time::Duration::from_millis(500));
+            eprintln!("{}", last_words(sig as i32));
+            std::process::exit(128 + sig as i32);
+        }
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    });
+}
+
+/// Whether the process was started with its standard output closed (`>&-`). Rust's
+/// runtime then opens `/dev/null` read-write in its place, so writes would vanish
+/// silently; a shell's `> /dev/null` opens it write-only. Linux only (`/proc`).
+pub fn stdout_closed() -> bool {
+    let null = std::fs::read_link("/proc/self/fd/1").is_ok_and(|p| p == *"/dev/null");
+    let flags = std::fs::read_to_string("/proc/self/fdinfo/1").ok();
+    let rdwr = flags
+        .as_deref()
+        .and_then(|t| t.lines().find_map(|l| l.strip_prefix("flags:")))
+        .and_then(|f| u32::from_str_radix(f.trim(), 8).ok())
+        .is_some_and(|f| f & 3 == 2);
+    null && rdwr
+}
+
 /// Makes SIGINT and SIGTERM end the process at once with status 128 + N (130, 143), for
 /// a run that cannot stop between pieces of work. The status is the same whatever signal
 /// handling the process inherited (a job started with SIGINT ignored still stops).

@@ -60,7 +60,7 @@ cd "$work"
 array=$(sbatch --parsable --array="1-$tasks" --cpus-per-task=1 \
   --output="$work/log/render_%a.out" "$here/slurm/render.sbatch" anim.toml frames)
 video=$(sbatch --parsable --dependency="afterok:$array" --cpus-per-task=1 \
-  --output="$work/log/video.out" "$here/slurm/video.sbatch" frames video.mp4 25)
+  --output="$work/log/video.out" "$here/slurm/video.sbatch" anim.toml frames video.mp4)
 echo "slurm-scenario: array job $array (tasks 1-$tasks), video job $video"
 
 wait_for 60 is_state "${array}_2" RUNNING || fail "task 2 did not start"

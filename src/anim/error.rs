@@ -96,6 +96,41 @@ pub enum AnimError {
     /// its own last words (a failed run).
     #[error("ffmpeg failed: {0}")]
     Ffmpeg(String),
+    /// Another run holds the frame folder's lock (bad input: nothing was rendered).
+    #[error("a run of another manifest is writing into {dir} ({holder}); wait for it to end, or write elsewhere")]
+    Busy {
+        /// The frame folder.
+        dir: PathBuf,
+        /// What the holder wrote in the lock file: its pid, manifest and start time.
+        holder: String,
+    },
+    /// Frames in the folder were recorded by another manifest, and would be overwritten
+    /// (bad input: nothing was rendered).
+    #[error("{dir} holds {count} frame(s) rendered by another manifest ({other}: frames {frames}); they would be overwritten")]
+    Foreign {
+        /// The frame folder.
+        dir: PathBuf,
+        /// The file name of the manifest the frames record.
+        other: String,
+        /// Their ranges, render-farm style.
+        frames: String,
+        /// How many.
+        count: usize,
+    },
+    /// The video file exists and would be replaced (bad input: nothing was rendered).
+    #[error("the video {} exists and would be replaced", .0.display())]
+    VideoExists(PathBuf),
+    /// The frame folder is not ready to encode (bad input: nothing was encoded).
+    #[error("{dir} is not ready to encode: {why}")]
+    NotReady {
+        /// The frame folder.
+        dir: PathBuf,
+        /// Which frames are stale, missing or past the end.
+        why: String,
+    },
+    /// Standard output is closed, so streamed frames would go nowhere (bad input).
+    #[error("standard output is closed: the frames would go nowhere")]
+    StdoutClosed,
     /// The run was stopped by this signal number (2 SIGINT, 15 SIGTERM) after the frames
     /// in flight were finished.
     #[error("interrupted by signal {0}; finished frames are kept")]
@@ -115,7 +150,12 @@ impl AnimError {
             | AnimError::Camera { .. }
             | AnimError::Folder { .. }
             | AnimError::FfmpegMissing
-            | AnimError::VideoTarget { .. } => Outcome::BadInput,
+            | AnimError::VideoTarget { .. }
+            | AnimError::Busy { .. }
+            | AnimError::Foreign { .. }
+            | AnimError::VideoExists(_)
+            | AnimError::NotReady { .. }
+            | AnimError::StdoutClosed => Outcome::BadInput,
             AnimError::Write { .. } | AnimError::Stream(_) | AnimError::Ffmpeg(_) => {
                 Outcome::Failed
             }

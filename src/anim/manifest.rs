@@ -9,7 +9,7 @@
 //! ```toml
 //! scene = "../scenes/orbit.txt"    # required, relative to the manifest's folder
 //! frames = 250                     # required, 1..=1000000
-//! fps = 25                         # > 0; default 25
+//! fps = 25                         # 0.01 to 1000; default 25
 //!
 //! [camera]                         # optional: path = "circle" | "spline" (see `camera`)
 //! path = "circle"                  #   no path (or no [camera]): the scene's eye holds still
@@ -57,7 +57,7 @@ pub use crate::anim::timeline::LookAt;
 
 use crate::anim::timeline::{CameraPath, MotionBlur, Sequence, TrackSpec};
 use crate::fileloc::FileLoc;
-use crate::limits::MAX_FRAMES;
+use crate::limits::{MAX_FPS, MAX_FRAMES, MIN_FPS};
 use crate::output::ImageFormat;
 use locate::key_path;
 use raw::{Probe, RawCircle, RawManifest, RawSpline, RawStill};
@@ -171,7 +171,9 @@ impl Manifest {
     /// Reads and validates the manifest at `path`; relative paths inside it are resolved
     /// against its folder.
     pub fn load(path: &Path) -> Result<Manifest, ManifestError> {
-        let bytes = std::fs::read(path).map_err(|source| ManifestError::Io {
+        let limit = crate::limits::MAX_MANIFEST_BYTES;
+        let read = crate::input::read_regular(path, limit, "manifest");
+        let bytes = read.map_err(|source| ManifestError::Io {
             path: path.display().to_string(),
             source,
         })?;
@@ -291,9 +293,9 @@ impl Source<'_> {
         let scene_loc = self.loc(raw.scene.span());
         let frames = self.int(&raw.frames, "frames", 1..=i64::from(MAX_FRAMES))? as u32;
         let fps = match &raw.fps {
-            Some(v) if !(v.get_ref().is_finite() && *v.get_ref() > 0.0) => {
+            Some(v) if !(MIN_FPS..=MAX_FPS).contains(v.get_ref()) => {
                 let message = format!(
-                    "`fps` must be a finite number above 0, found {}",
+                    "`fps` must be a number from {MIN_FPS} to {MAX_FPS}, found {:?}",
                     v.get_ref()
                 );
                 return Err(self.error(v.span(), message));

@@ -145,6 +145,14 @@ fn run(args: Args) -> anyhow::Result<()> {
     let format = out_format(&args, &out)?;
     let mut scene = Scene::load(&args.scene)?;
     check_target(&out)?;
+    let same = |a: &std::path::Path, b: &std::path::Path| matches!((a.canonicalize(), b.canonicalize()), (Ok(x), Ok(y)) if x == y);
+    if same(&args.scene, &out) {
+        return Err(OutputError::Target {
+            path: out,
+            reason: "it is the scene file being read (name another image with -o)".into(),
+        }
+        .into());
+    }
     (scene.width, scene.height) = args.size.unwrap_or((scene.width, scene.height));
     let pool = whitted::process::pool(args.threads).context("cannot start the worker threads")?;
     let start = std::time::Instant::now();

@@ -68,7 +68,9 @@ impl Scene {
     /// what was parsed).
     pub fn load_with_bytes(path: &Path) -> Result<(Scene, Vec<u8>), SceneError> {
         let name = path.display().to_string();
-        let bytes = std::fs::read(path).map_err(|source| SceneError::Io {
+        let limit = crate::limits::MAX_SCENE_BYTES;
+        let read = crate::input::read_regular(path, limit, "scene");
+        let bytes = read.map_err(|source| SceneError::Io {
             path: name.clone(),
             source,
         })?;

@@ -12,6 +12,7 @@ use super::{Scene, ShapeSpec, MAX_COUNT, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
 use crate::bump::Bump;
 use crate::camera::Camera;
 use crate::fog::Fog;
+use crate::input::quote;
 use crate::object::{Light, Material, Object};
 use crate::texture::{Color, Texture};
 use counts::{Counts, Record};
@@ -106,12 +107,15 @@ impl<'a> Parser<'a> {
             Ok(v) if v.is_finite() => Ok((v, tok)),
             Ok(_) => Err(self.error(
                 &tok,
-                format!("expected a finite number for {field}, found '{}'", tok.text),
+                format!(
+                    "expected a finite number for {field}, found '{}'",
+                    quote(tok.text)
+                ),
                 field,
             )),
             Err(_) => Err(self.error(
                 &tok,
-                format!("expected a number for {field}, found '{}'", tok.text),
+                format!("expected a number for {field}, found '{}'", quote(tok.text)),
                 field,
             )),
         }
@@ -123,7 +127,10 @@ impl<'a> Parser<'a> {
         if v > 0.0 {
             Ok(v)
         } else {
-            let msg = format!("{field} must be greater than 0, found '{}'", tok.text);
+            let msg = format!(
+                "{field} must be greater than 0, found '{}'",
+                quote(tok.text)
+            );
             Err(self.error(&tok, msg, field))
         }
     }
@@ -145,7 +152,7 @@ impl<'a> Parser<'a> {
                 self,
                 format!(
                     "expected {what} for {field}, found '{}' (not {kind})",
-                    tok.text
+                    quote(tok.text)
                 ),
             );
         }
@@ -153,7 +160,7 @@ impl<'a> Parser<'a> {
             Ok(n) if (lo..=hi).contains(&n) => Ok((n, tok)),
             _ => bad(
                 self,
-                format!("expected {what} for {field}, found '{}'", tok.text),
+                format!("expected {what} for {field}, found '{}'", quote(tok.text)),
             ),
         }
     }
@@ -181,7 +188,10 @@ impl<'a> Parser<'a> {
         if (lo..=hi).contains(&v) {
             Ok(v)
         } else {
-            let msg = format!("{field} must be from {lo} to {hi}, found '{}'", tok.text);
+            let msg = format!(
+                "{field} must be from {lo} to {hi}, found '{}'",
+                quote(tok.text)
+            );
             Err(self.error(&tok, msg, field))
         }
     }
@@ -340,7 +350,7 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
     if fog_type != 0 && fog_distance <= 0.0 {
         let msg = format!(
             "FogDistance must be greater than 0 with fog, found '{}'",
-            tok.text
+            quote(tok.text)
         );
         return Err(p.error(&tok, msg, "FogDistance"));
     }
@@ -383,7 +393,7 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
         p.enter("after the last record", None);
         let msg = format!(
             "expected the end of the file after the last light, found '{}' (do the counts match the records?)",
-            tok.text
+            quote(tok.text)
         );
         let record = Record {
             kind: 4,

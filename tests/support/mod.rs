@@ -131,3 +131,14 @@ pub fn row(out: &str, frame: u32) -> &str {
     let found = out.lines().find(|l| l.trim_start().starts_with(&start));
     found.unwrap_or_else(|| panic!("no row for frame {frame} in:\n{out}"))
 }
+
+/// A `frames`-frame circle manifest in RAW at `radius`, written as `name` in `dir`.
+pub fn raw_manifest(dir: &Path, name: &str, frames: u32, radius: f64) -> PathBuf {
+    let text = circle_manifest("")
+        .replace("frames = 12", &format!("frames = {frames}"))
+        .replace("radius = 8.0", &format!("radius = {radius:?}"))
+        .replace("format = \"png\"", "format = \"raw\"");
+    let path = dir.join(name);
+    std::fs::write(&path, text).unwrap();
+    path
+}

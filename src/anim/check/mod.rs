@@ -1,9 +1,10 @@
 //! `animate bless` and `animate check`: regression on selected frames.
 //!
 //! `bless` renders the chosen frames and writes them as lossless PNG references into the
-//! references folder (atomically). `check` loads every reference first (a missing,
-//! unreadable or wrongly sized one stops the check before anything renders), renders the
-//! frames in parallel, compares each (`diff.rs`, and `flip.rs` when the tolerance has a
+//! references folder (atomically). `check` looks at every reference's header first (a
+//! missing, unreadable or wrongly sized one stops the check before anything renders),
+//! then renders the frames in parallel windows, reading each reference only when its
+//! frame is compared (memory bounded by the window, as in rendering), compares each (`diff.rs`, and `flip.rs` when the tolerance has a
 //! FLIP limit), and for every failing frame writes the rendered frame, a diff heat map and
 //! the FLIP map into a report folder; stale report images of frames that now pass are
 //! removed, so the folder shows failures only. The result is one [`CheckReport`]
@@ -213,15 +214,11 @@ fn draw(anim: &Animation, frame: u32) -> Result<Reference, AnimError> {
     Ok((layers.to_frame(), Some(floats)))
 }
 
+/// Reads the reference of `frame`: an EXR reference's float beauty and its picture, or
+/// an 8-bit reference that `probe_reference` accepts.
 fn load_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<Reference, AnimError> {
     if anim.format().is_layered() {
-        let path = reference_path(anim, refs, frame);
-        if !path.exists() {
-            return Err(AnimError::Reference(format!(
-                "frame {frame}: the reference {} is missing (run `animate bless` first)",
-                path.display()
-            )));
-        }
+        let path = probe_reference(anim, refs, frame)?;
         let (w, h, beauty) = crate::output::exr::read_beauty(&path).map_err(|e| {
             AnimError::Reference(format!("{}: cannot read it: {e}", path.display()))
         })?;
@@ -247,7 +244,10 @@ fn load_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<Reference
     load_picture(anim, refs, frame).map(|f| (f, None))
 }
 
-fn load_picture(anim: &Animation, refs: &Path, frame: u32) -> Result<Frame, AnimError> {
+/// Refuses a reference that is missing, unreadable or of another size, from its header
+/// alone (the check's first pass, before anything renders). An EXR reference is only
+/// looked for here; its size is checked when it is read.
+fn probe_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<PathBuf, AnimError> {
     let path = reference_path(anim, refs, frame);
     if !path.exists() {
         return Err(AnimError::Reference(format!(
@@ -255,17 +255,42 @@ fn load_picture(anim: &Animation, refs: &Path, frame: u32) -> Result<Frame, Anim
             path.display()
         )));
     }
+    if anim.format().is_layered() {
+        return Ok(path);
+    }
+    let unreadable = |e: &dyn std::fmt::Display| {
+        AnimError::Reference(format!("{}: cannot read it: {e}", path.display()))
+    };
+    let limit = crate::limits::MAX_FRAME_BYTES;
+    let (file, _) =
+        crate::input::open_regular(&path, limit, "reference").map_err(|e| unreadable(&e))?;
+    let reader = image::ImageReader::new(std::io::BufReader::new(file))
+        .with_guessed_format()
+        .map_err(|e| unreadable(&e))?;
+    let (width, height) = reader.into_dimensions().map_err(|e| unreadable(&e))?;
+    if (width, height) != (anim.width, anim.height) {
+        return Err(AnimError::Reference(format!(
+            "frame {frame}: the reference {} is {}×{}, the frame is {}×{}",
+            path.display(),
+            width,
+            height,
+            anim.width,
+            anim.height
+        )));
+    }
+    Ok(path)
+}
+
+/// Reads an 8-bit reference that `probe_reference` accepted.
+fn load_picture(anim: &Animation, refs: &Path, frame: u32) -> Result<Frame, AnimError> {
+    let path = probe_reference(anim, refs, frame)?;
     let image = image::open(&path)
         .map_err(|e| AnimError::Reference(format!("{}: cannot read it: {e}", path.display())))?
         .to_rgb8();
     if (image.width(), image.height()) != (anim.width, anim.height) {
         return Err(AnimError::Reference(format!(
-            "frame {frame}: the reference {} is {}×{}, the frame is {}×{}",
-            path.display(),
-            image.width(),
-            image.height(),
-            anim.width,
-            anim.height
+            "{}: changed size during the check",
+            path.display()
         )));
     }
     Ok(Frame {
@@ -311,17 +336,22 @@ pub fn bless(anim: &Animation, frames: &[u32], refs: &Path) -> Result<Vec<PathBu
 /// frames into the report folder.
 pub fn check(anim: &Animation, opts: &CheckOptions) -> Result<CheckReport, AnimError> {
     let refs = &opts.references;
-    let references = opts
-        .frames
-        .iter()
-        .map(|&f| load_reference(anim, refs, f))
-        .collect::<Result<Vec<Reference>, AnimError>>()?;
-    let frames = opts
-        .frames
-        .par_iter()
-        .zip(references.par_iter())
-        .map(|(&frame, reference)| check_frame(anim, opts, frame, reference))
-        .collect::<Result<Vec<FrameReport>, AnimError>>()?;
+    for &f in &opts.frames {
+        probe_reference(anim, refs, f)?;
+    }
+    // Frame by frame in windows, like rendering: a reference is read only when its frame
+    // is compared, so memory is bounded by the window whatever the number of frames.
+    let mut frames = Vec::with_capacity(opts.frames.len());
+    for window in opts.frames.chunks(anim.window(1)) {
+        let reports = window
+            .par_iter()
+            .map(|&frame| {
+                let reference = load_reference(anim, refs, frame)?;
+                check_frame(anim, opts, frame, &reference)
+            })
+            .collect::<Result<Vec<FrameReport>, AnimError>>()?;
+        frames.extend(reports);
+    }
     Ok(CheckReport {
         manifest: anim.manifest.path.clone(),
         references: refs.clone(),

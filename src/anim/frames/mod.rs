@@ -6,13 +6,19 @@
 //! - `pipeline`: rendering in parallel into a folder or a stream, reporting `events`;
 //! - `provenance`: what made a frame, recorded in the frame file; `status`: which frames
 //!   of a folder are up to date, stale or missing;
-//! - `video`: ffmpeg, checked before the first frame;
+//! - `folder`: what else a frame folder holds (frames past the end, temporaries of
+//!   killed runs) and `animate clean`; `lock`: one run at a time per folder;
+//! - `video`: ffmpeg, checked before the first frame; `encode`: a rendered folder into a
+//!   video;
 //! - `balance`: shards of equal predicted cost from a small pre-pass; `estimate`: the
 //!   predicted cost and time of a render.
 
 pub mod balance;
+pub mod encode;
 pub mod estimate;
 pub mod events;
+pub mod folder;
+pub mod lock;
 pub mod pipeline;
 pub mod provenance;
 pub mod run;

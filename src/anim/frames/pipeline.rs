@@ -1,10 +1,12 @@
 //! Producing frames: rendered in parallel with rayon, then either written into a folder
 //! or streamed in frame order, every step reported as an `Event`.
 //!
-//! - Folder: frames render in windows of four per thread; each is encoded with its
-//!   provenance (`provenance`), written to a temporary name in the folder, then renamed,
-//!   so a file under a final name is always complete. With `resume`, frames whose file
-//!   records the digest the manifest now gives them are left untouched (`status`).
+//! - Folder: the run holds the folder's lock (`lock`) and clears the temporaries killed
+//!   runs left (`folder`); frames render in windows of four per thread; each is encoded
+//!   with its provenance (`provenance`), written to a temporary name in the folder, then
+//!   renamed, so a file under a final name is always complete. With `resume`, frames
+//!   whose file records the digest the manifest now gives them are left untouched
+//!   (`status`); frames recorded by another manifest are not overwritten unless forced.
 //! - Stream (`--stdout`, `--video`): frames render in windows of twice the thread count
 //!   and are written in order.
 //!
@@ -14,11 +16,16 @@
 //! finished stay finished.
 
 use super::events::{Event, Reporter};
-use super::provenance::{self, raw_record_path};
+use super::folder;
+use super::lock::lock;
+use super::provenance::{self, raw_record_path, Inspection, Record};
+use super::run::Policy;
 use super::status::{self, FrameState};
 use crate::anim::error::AnimError;
 use crate::anim::project::Animation;
-use crate::output::{encode, temp_beside, write_atomic_layers, write_atomic_with, ImageFormat};
+use crate::output::{
+    encode, temp_beside, write_atomic_layers, write_atomic_with, ImageFormat, OutputError,
+};
 use crate::trace::RayCount;
 use rayon::prelude::*;
 use std::io::Write;
@@ -48,32 +55,48 @@ fn stopped(stop: &AtomicUsize) -> Option<i32> {
     }
 }
 
-/// Renders frame `frame` and writes it with its provenance under its final name.
+/// A write error with the frame's path in it: the encoder's own errors (a full disk
+/// while encoding) name no file.
+fn with_path(path: &Path, e: OutputError) -> OutputError {
+    match e {
+        OutputError::Stream(source) | OutputError::Encode(image::ImageError::IoError(source)) => {
+            OutputError::Io {
+                path: path.to_path_buf(),
+                source,
+            }
+        }
+        other => other,
+    }
+}
+
+/// Renders frame `frame` and writes it with its provenance under its final name; a RAW
+/// frame's record, written after it, carries the SHA-256 of its pixels.
 fn write_frame(anim: &Animation, dir: &Path, frame: u32) -> Result<RayCount, AnimError> {
     let path = anim.frame_path(dir, frame);
     let digest = provenance::digest(anim, frame);
-    let stamp = provenance::stamp(anim, frame, digest);
+    let mut stamp = provenance::stamp(anim, frame, digest);
     let write = |source| AnimError::Write { frame, source };
     let format = anim.format();
     let rays = if format.is_layered() {
         // EXR: the beauty unclamped and the passes, provenance in the header.
         let (layers, rays) = anim.render_layers(frame, format.passes())?;
-        write_atomic_layers(&path, &layers, format, &stamp).map_err(write)?;
+        write_atomic_layers(&path, &layers, format, &stamp)
+            .map_err(|e| write(with_path(&path, e)))?;
         rays
     } else {
         let (image, rays) = anim.render(frame)?;
-        write_atomic_with(&path, &image, format, &stamp).map_err(write)?;
+        write_atomic_with(&path, &image, format, &stamp).map_err(|e| write(with_path(&path, e)))?;
+        if format == ImageFormat::Raw {
+            stamp.push(provenance::pixels_line(&image.pixels));
+            write_raw_record(&path, &stamp).map_err(|source| {
+                write(OutputError::Io {
+                    path: raw_record_path(&path),
+                    source,
+                })
+            })?;
+        }
         rays
     };
-    if anim.format() == ImageFormat::Raw {
-        write_raw_record(&path, &stamp).map_err(|source| AnimError::Write {
-            frame,
-            source: crate::output::OutputError::Io {
-                path: raw_record_path(&path),
-                source,
-            },
-        })?;
-    }
     Ok(rays)
 }
 
@@ -91,13 +114,42 @@ fn write_raw_record(frame_path: &Path, stamp: &[(String, String)]) -> std::io::R
     Ok(())
 }
 
-/// Renders `frames` into `dir` (created if missing), in parallel. With `resume`, frames
-/// that are up to date are skipped (and reported so).
+/// Refuses to overwrite frames of `todo` whose files record another manifest than
+/// `anim`'s (`--force` allows it).
+fn refuse_foreign(anim: &Animation, dir: &Path, todo: &[u32]) -> Result<(), AnimError> {
+    let ours = anim.manifest.path.file_name().map(|n| n.to_string_lossy());
+    let foreign: Vec<(u32, String)> = todo
+        .par_iter()
+        .filter_map(|&f| {
+            let path = anim.frame_path(dir, f);
+            match provenance::inspect(&path, anim.format(), anim.width, anim.height, false) {
+                Inspection::Sound(Record {
+                    manifest: Some(m), ..
+                }) if Some(m.as_str()) != ours.as_deref() => Some((f, m)),
+                _ => None,
+            }
+        })
+        .collect();
+    match foreign.first() {
+        None => Ok(()),
+        Some((_, other)) => Err(AnimError::Foreign {
+            dir: dir.to_path_buf(),
+            other: other.clone(),
+            frames: status::ranges(&foreign.iter().map(|(f, _)| *f).collect::<Vec<_>>()),
+            count: foreign.len(),
+        }),
+    }
+}
+
+/// Renders `frames` into `dir` (created if missing), in parallel, holding the folder's
+/// lock; temporaries that killed runs left are removed first. With `policy.resume`,
+/// frames that are up to date are skipped (and reported so); frames recorded by another
+/// manifest are refused unless `policy.force`.
 pub(crate) fn render_to_folder(
     anim: &Animation,
     frames: &[u32],
     dir: &Path,
-    resume: bool,
+    policy: &Policy,
     reporter: &dyn Reporter,
     stop: &AtomicUsize,
 ) -> Result<Summary, AnimError> {
@@ -105,14 +157,27 @@ pub(crate) fn render_to_folder(
         dir: dir.to_path_buf(),
         source,
     })?;
+    let lock = lock(dir, &anim.manifest.path)?;
+    if lock.alone() {
+        // No other run of this manifest is writing: every temporary is a killed run's.
+        let folder = |source| AnimError::Folder {
+            dir: dir.to_path_buf(),
+            source,
+        };
+        folder::remove(&folder::temporaries(anim, dir)).map_err(folder)?;
+    }
     let mut todo = Vec::with_capacity(frames.len());
     let mut done = Vec::new();
     for &f in frames {
-        if resume && status::frame_state(anim, dir, f) == FrameState::UpToDate {
+        if policy.resume && status::frame_state(anim, dir, f, policy.verify) == FrameState::UpToDate
+        {
             done.push(f);
         } else {
             todo.push(f);
         }
+    }
+    if !policy.force {
+        refuse_foreign(anim, dir, &todo)?;
     }
     reporter.event(Event::Started {
         total: frames.len(),
@@ -160,6 +225,7 @@ pub(crate) fn render_to_folder(
         })
         .fold(RayCount::default(), |a, b| a + b);
 
+    drop(lock);
     if let Some(e) = failure.into_inner().unwrap_or(None) {
         return Err(e);
     }

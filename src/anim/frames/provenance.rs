@@ -1,7 +1,8 @@
 //! What produced a frame (SPEC §8): a digest of everything that decides its pixels, and
 //! readable facts in the style of Blender's stamp, carried by the frame file itself —
 //! PNG `tEXt` chunks, a JPEG comment, PPM header comments — or, for RAW (no header), by a
-//! small file per frame in the folder's hidden `.whitted-record/`.
+//! small file per frame in the folder's hidden `.whitted-record/`, which also holds the
+//! SHA-256 of the pixels it describes (`inspect` checks a frame against its record).
 //!
 //! The digest is SHA-256 over the pixel version, the settings (`Settings`, serialized as
 //! JSON), and for each time the frame samples the scene's values after tracks (not the
@@ -113,7 +114,7 @@ pub fn digest(anim: &Animation, frame: u32) -> String {
     hex(&Sha256::digest(&bytes))
 }
 
-fn hex(bytes: &[u8]) -> String {
+pub(crate) fn hex(bytes: &[u8]) -> String {
     bytes.iter().map(|b| format!("{b:02x}")).collect()
 }
 
@@ -240,6 +241,9 @@ pub(crate) fn recorded_digest(frame_path: &Path, format: ImageFormat) -> Option<
         }
     }
 }
+
+mod inspect;
+pub(crate) use inspect::{inspect, pixels_line, Inspection, Record};
 
 #[cfg(test)]
 mod tests;

@@ -13,6 +13,31 @@ use std::io::Write;
 use std::path::PathBuf;
 use std::sync::atomic::AtomicUsize;
 
+/// How ffmpeg encodes a video (`--codec`, `--crf`, `--pix-fmt`); `None`s leave ffmpeg's
+/// choice for the container (libx264 for `.mp4`) and yuv420p.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Encoding {
+    /// ffmpeg's `-c:v`, e.g. `libx264`, `libx265`, `libvpx-vp9`.
+    pub codec: Option<String>,
+    /// ffmpeg's `-crf` (quality: lower is better; 0 to 63).
+    pub crf: Option<u8>,
+    /// ffmpeg's output `-pix_fmt`; yuv420p when not given.
+    pub pix_fmt: Option<String>,
+}
+
+/// What a run may keep or replace.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Policy {
+    /// Leave a folder's up-to-date frames as they are.
+    pub resume: bool,
+    /// With `resume`, decode each kept frame too (`status --verify`).
+    pub verify: bool,
+    /// Write over frames recorded by another manifest, and over an existing video.
+    pub force: bool,
+    /// How a video is encoded.
+    pub encoding: Encoding,
+}
+
 /// Where the frames of a run go.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Destination {
@@ -44,24 +69,24 @@ pub fn frames_of(
     Ok(select(anim.manifest.frames, list, shard)?)
 }
 
-/// Renders `frames` of `anim` to `destination` (a stream writes into `stream`). With
-/// `resume`, a folder's up-to-date frames are left as they are.
+/// Renders `frames` of `anim` to `destination` (a stream writes into `stream`), keeping
+/// and replacing what `policy` says.
 pub fn render(
     anim: &Animation,
     frames: &[u32],
     destination: &Destination,
-    resume: bool,
+    policy: &Policy,
     stream: &mut dyn Write,
     reporter: &dyn Reporter,
     stop: &AtomicUsize,
 ) -> Result<Summary, AnimError> {
     anim.check_cameras(frames)?;
     match destination {
-        Destination::Folder(dir) => render_to_folder(anim, frames, dir, resume, reporter, stop),
+        Destination::Folder(dir) => render_to_folder(anim, frames, dir, policy, reporter, stop),
         Destination::Stream(format) => {
             render_to_stream(anim, frames, stream, *format, reporter, stop)
         }
-        Destination::Video(file) => render_to_video(anim, frames, file, reporter, stop),
+        Destination::Video(file) => render_to_video(anim, frames, file, policy, reporter, stop),
     }
 }
 

@@ -1,10 +1,13 @@
 //! `animate status` (SPEC §8): which frames of a folder are up to date, stale or missing,
-//! read from the frames' recorded provenance, never from their pixels. A frame is up to
-//! date when its file exists, is complete, and records the digest the manifest now gives
-//! it; a file that is cut short, or whose record is absent, unreadable (foreign) or
-//! different, is stale.
+//! read from the frames' recorded provenance (`provenance::inspect`). A frame is up to
+//! date when its file is a regular file, whole (PNG: every chunk's CRC; RAW: the SHA-256
+//! of its bytes is the one its record names; JPEG, PPM: the end marker, the size), and
+//! records the digest the manifest now gives it; with `verify` its image must also
+//! decode. Anything else is stale. Files of frames past the end of the sequence (after
+//! `frames` was lowered) are listed apart (`folder::beyond`).
 
-use super::provenance::{complete, digest, recorded_digest};
+use super::folder::beyond;
+use super::provenance::{digest, inspect, Inspection};
 use crate::anim::project::Animation;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -14,25 +17,21 @@ use std::path::Path;
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "kebab-case")]
 pub enum FrameState {
-    /// The file is complete and records the digest the manifest now gives the frame.
+    /// The file is whole and records the digest the manifest now gives the frame.
     UpToDate,
-    /// The file exists but is cut short, or its record is absent, foreign or different.
+    /// The file exists but is damaged, cut short, not a regular file, or its record is
+    /// absent, foreign or different.
     Stale,
     /// No file of that name in the folder.
     Missing,
 }
 
-/// The state of frame `frame` in `dir`.
-pub(crate) fn frame_state(anim: &Animation, dir: &Path, frame: u32) -> FrameState {
+/// The state of frame `frame` in `dir`; `verify` decodes the image too.
+pub(crate) fn frame_state(anim: &Animation, dir: &Path, frame: u32, verify: bool) -> FrameState {
     let path = anim.frame_path(dir, frame);
-    if !path.exists() {
-        return FrameState::Missing;
-    }
-    let format = anim.format();
-    match recorded_digest(&path, format) {
-        Some(d) if d == digest(anim, frame) && complete(&path, format, anim.width, anim.height) => {
-            FrameState::UpToDate
-        }
+    match inspect(&path, anim.format(), anim.width, anim.height, verify) {
+        Inspection::Missing => FrameState::Missing,
+        Inspection::Sound(r) if r.digest == Some(digest(anim, frame)) => FrameState::UpToDate,
         _ => FrameState::Stale,
     }
 }
@@ -46,12 +45,15 @@ pub struct StatusReport {
     pub stale: Vec<u32>,
     /// Frames with no file, ascending.
     pub missing: Vec<u32>,
+    /// Frames past the end of the sequence that have a file in the folder, ascending.
+    pub beyond: Vec<u32>,
 }
 
 impl StatusReport {
     /// Whether every frame is up to date.
+    /// Whether every frame is up to date and no file of a frame past the end is left.
     pub fn complete(&self) -> bool {
-        self.stale.is_empty() && self.missing.is_empty()
+        self.stale.is_empty() && self.missing.is_empty() && self.beyond.is_empty()
     }
 
     fn rows(&self) -> [(&'static str, &Vec<u32>); 3] {
@@ -69,6 +71,15 @@ impl StatusReport {
         for (what, list) in self.rows() {
             out += &format!("{what:>11}: {:>7}  {}\n", list.len(), ranges(list));
         }
+        if !self.beyond.is_empty() {
+            let list = &self.beyond;
+            out += &format!(
+                "{:>11}: {:>7}  {}  (frames past the end of the sequence; `animate clean` removes them)\n",
+                "past end",
+                list.len(),
+                ranges(list)
+            );
+        }
         out
     }
 
@@ -84,17 +95,23 @@ impl StatusReport {
             doc[&key] = ranges(list).into();
             doc[format!("{key}_count")] = list.len().into();
         }
+        doc["past_end"] = ranges(&self.beyond).into();
+        doc["past_end_count"] = self.beyond.len().into();
         doc
     }
 }
 
-/// The state of every frame of `frames` in `dir`, read in parallel.
-pub fn status(anim: &Animation, dir: &Path, frames: &[u32]) -> StatusReport {
+/// The state of every frame of `frames` in `dir`, read in parallel, and the frames past
+/// the end of the sequence that have files there; `verify` decodes every image too.
+pub fn status(anim: &Animation, dir: &Path, frames: &[u32], verify: bool) -> StatusReport {
     let states: Vec<FrameState> = frames
         .par_iter()
-        .map(|&f| frame_state(anim, dir, f))
+        .map(|&f| frame_state(anim, dir, f, verify))
         .collect();
-    let mut report = StatusReport::default();
+    let mut report = StatusReport {
+        beyond: beyond(anim, dir).into_iter().map(|(f, _)| f).collect(),
+        ..StatusReport::default()
+    };
     for (&f, state) in frames.iter().zip(states) {
         match state {
             FrameState::UpToDate => report.up_to_date.push(f),
@@ -142,6 +159,7 @@ mod tests {
             up_to_date: vec![0, 1, 2],
             stale: vec![5],
             missing: vec![3, 4],
+            beyond: vec![],
         };
         let table = r.table(Path::new("f"));
         assert!(table.starts_with("f: 6 frame(s)\n"), "{table}");
@@ -153,6 +171,16 @@ mod tests {
             (Some("5"), Some(2))
         );
         assert_eq!(doc["complete"], false);
+        let past = StatusReport {
+            up_to_date: vec![0],
+            beyond: vec![1, 2],
+            ..StatusReport::default()
+        };
+        assert!(!past.complete());
+        assert!(past
+            .table(Path::new("f"))
+            .contains("   past end:       2  1-2  ("));
+        assert_eq!(past.json(Path::new("f"))["past_end"], "1-2");
     }
 
     #[test]

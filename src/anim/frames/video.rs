@@ -3,8 +3,13 @@
 //!
 //! ```text
 //! ffmpeg -y -loglevel error -f rawvideo -pix_fmt rgb24 -s WxH -r FPS -i - \
-//!        -vf pad=ceil(iw/2)*2:ceil(ih/2)*2 -pix_fmt yuv420p FILE
+//!        -vf pad=ceil(iw/2)*2:ceil(ih/2)*2 [-c:v CODEC] [-crf N] -pix_fmt yuv420p .FILE.XXXXXX.EXT
 //! ```
+//!
+//! ffmpeg writes a hidden temporary beside FILE, renamed onto FILE when it succeeds: an
+//! interrupted, killed or failing encode leaves the previous FILE as it was. An existing
+//! FILE is replaced only when forced. A signal ends the run within a second even when
+//! ffmpeg stopped reading (it is killed).
 //!
 //! yuv420p plays everywhere but needs even sizes, hence the one-pixel pad for odd ones.
 //! The container and codec follow FILE's extension, as ffmpeg decides. Before any frame
@@ -15,14 +20,21 @@
 
 use super::events::Reporter;
 use super::pipeline::{render_to_stream, Summary};
+use super::run::{Encoding, Policy};
 use crate::anim::error::AnimError;
 use crate::anim::project::Animation;
 use crate::output::ImageFormat;
 use std::io::Read;
 use std::path::Path;
 use std::process::{Child, ChildStdin, Command, Stdio};
-use std::sync::atomic::AtomicUsize;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::Mutex;
 use std::thread::JoinHandle;
+use std::time::Duration;
+
+/// How long a stop signal waits for the frames to stop flowing before ffmpeg is killed
+/// (a stopped or stalled ffmpeg would otherwise hold the run forever).
+const STOP_GRACE: Duration = Duration::from_millis(300);
 
 /// Renders `frames` into the video `file` through ffmpeg; on a failure upstream ffmpeg is
 /// stopped and the error returned.
@@ -30,27 +42,29 @@ pub fn render_to_video(
     anim: &Animation,
     frames: &[u32],
     file: &Path,
+    policy: &Policy,
     reporter: &dyn Reporter,
     stop: &AtomicUsize,
 ) -> Result<Summary, AnimError> {
-    check_target(file)?;
+    check_target(file, policy.force)?;
     let fps = anim.manifest.fps;
-    let mut ffmpeg = Ffmpeg::start(file, anim.width, anim.height, fps)?;
-    let result = ffmpeg
-        .input()
-        .and_then(|input| render_to_stream(anim, frames, input, ImageFormat::Raw, reporter, stop));
-    match result {
-        Ok(summary) => ffmpeg.finish().map(|()| summary),
-        Err(AnimError::Stream(e)) => Err(ffmpeg.failure(e)),
-        Err(e) => {
-            ffmpeg.abort();
-            Err(e)
-        }
+    let ffmpeg = Ffmpeg::start(file, anim.width, anim.height, fps, &policy.encoding)?;
+    ffmpeg.feed(stop, |input| {
+        render_to_stream(anim, frames, input, ImageFormat::Raw, reporter, stop)
+    })
+}
+
+/// The signal number held in `stop`, if any.
+fn stopped(stop: &AtomicUsize) -> Option<i32> {
+    match stop.load(Ordering::SeqCst) {
+        0 => None,
+        sig => Some(sig as i32),
     }
 }
 
-/// Refuses a video target whose folder is missing or whose kind ffmpeg cannot write.
-pub fn check_target(file: &Path) -> Result<(), AnimError> {
+/// Refuses a video target whose folder is missing, that exists (unless `force`), or
+/// whose kind ffmpeg cannot write.
+pub fn check_target(file: &Path, force: bool) -> Result<(), AnimError> {
     let refuse = |reason: String| AnimError::VideoTarget {
         path: file.to_path_buf(),
         reason,
@@ -67,6 +81,9 @@ pub fn check_target(file: &Path) -> Result<(), AnimError> {
     }
     if file.is_dir() {
         return Err(refuse("it is a folder".into()));
+    }
+    if !force && std::fs::symlink_metadata(file).is_ok() {
+        return Err(AnimError::VideoExists(file.to_path_buf()));
     }
     let ext = file.extension().and_then(|e| e.to_str()).unwrap_or("");
     let probe_dir = tempfile::tempdir().map_err(|e| refuse(e.to_string()))?;
@@ -115,26 +132,59 @@ fn spawn_error(e: std::io::Error) -> AnimError {
     }
 }
 
-/// A running ffmpeg that encodes what is written to its standard input.
+/// A running ffmpeg that encodes what is written to its standard input into a hidden
+/// temporary file beside the video (`.NAME.XXXXXX.EXT`, the extension kept so that ffmpeg
+/// picks the same container), renamed onto the video's name only once ffmpeg succeeded.
 pub(crate) struct Ffmpeg {
-    child: Child,
+    child: Mutex<Child>,
+    stdin: Option<ChildStdin>,
     stderr: Option<JoinHandle<String>>,
+    temp: tempfile::TempPath,
+    file: std::path::PathBuf,
 }
 
 impl Ffmpeg {
-    /// Starts ffmpeg writing `file` from `width`×`height` RGB frames at `fps`.
-    pub fn start(file: &Path, width: u32, height: u32, fps: f64) -> Result<Ffmpeg, AnimError> {
-        let mut child = Command::new("ffmpeg")
-            .args(["-y", "-nostdin", "-loglevel", "error", "-f", "rawvideo"])
+    /// Starts ffmpeg writing (a temporary beside) `file` from `width`×`height` RGB frames
+    /// at `fps`, encoded as `encoding` says.
+    pub fn start(
+        file: &Path,
+        width: u32,
+        height: u32,
+        fps: f64,
+        encoding: &Encoding,
+    ) -> Result<Ffmpeg, AnimError> {
+        let folder = match file.parent() {
+            Some(d) if !d.as_os_str().is_empty() => d,
+            _ => Path::new("."),
+        };
+        let name = file
+            .file_name()
+            .map_or("video".into(), |n| n.to_string_lossy());
+        let ext = file.extension().map_or("".into(), |e| e.to_string_lossy());
+        let temp = tempfile::Builder::new()
+            .prefix(&format!(".{name}."))
+            .suffix(&format!(".{ext}"))
+            .tempfile_in(folder)
+            .map_err(|e| AnimError::VideoTarget {
+                path: file.to_path_buf(),
+                reason: format!("cannot create a file in its folder: {e}"),
+            })?
+            .into_temp_path();
+        let mut cmd = Command::new("ffmpeg");
+        cmd.args(["-y", "-nostdin", "-loglevel", "error", "-f", "rawvideo"])
             .args(["-pix_fmt", "rgb24", "-s", &format!("{width}x{height}")])
             .args(["-r", &fps.to_string(), "-i", "-"])
-            .args([
-                "-vf",
-                "pad=ceil(iw/2)*2:ceil(ih/2)*2",
-                "-pix_fmt",
-                "yuv420p",
-            ])
-            .arg(file)
+            .args(["-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2"]);
+        if let Some(codec) = &encoding.codec {
+            cmd.args(["-c:v", codec]);
+        }
+        if let Some(crf) = encoding.crf {
+            cmd.args(["-crf", &crf.to_string()]);
+        }
+        let pix_fmt = encoding.pix_fmt.as_deref().unwrap_or("yuv420p");
+        let mut child = cmd
+            .args(["-pix_fmt", pix_fmt])
+            .arg(&temp)
             .stdin(Stdio::piped())
             .stdout(Stdio::null())
             .stderr(Stdio::piped())
@@ -147,15 +197,61 @@ impl Ffmpeg {
                 text
             })
         });
-        Ok(Ffmpeg { child, stderr })
+        Ok(Ffmpeg {
+            stdin: child.stdin.take(),
+            child: Mutex::new(child),
+            stderr,
+            temp,
+            file: file.to_path_buf(),
+        })
     }
 
-    /// The pipe into ffmpeg.
-    pub fn input(&mut self) -> Result<&mut ChildStdin, AnimError> {
-        self.child
-            .stdin
-            .as_mut()
-            .ok_or_else(|| AnimError::Ffmpeg("its input is closed".into()))
+    /// Runs `work` with the pipe into ffmpeg, then finishes the video. A signal in `stop`
+    /// ends it within `STOP_GRACE` whatever ffmpeg does: if the frames have not stopped
+    /// flowing by then (ffmpeg stopped or stalled), ffmpeg is killed, which ends the
+    /// write. On any failure the temporary file is removed and the video left as it was.
+    pub fn feed(
+        mut self,
+        stop: &AtomicUsize,
+        work: impl FnOnce(&mut ChildStdin) -> Result<Summary, AnimError>,
+    ) -> Result<Summary, AnimError> {
+        let done = AtomicBool::new(false);
+        let Some(mut input) = self.stdin.take() else {
+            return Err(AnimError::Ffmpeg("its input is closed".into()));
+        };
+        let child = &self.child;
+        let result = std::thread::scope(|s| {
+            s.spawn(|| {
+                while !done.load(Ordering::SeqCst) {
+                    if stopped(stop).is_some() {
+                        std::thread::sleep(STOP_GRACE);
+                        if !done.load(Ordering::SeqCst) {
+                            if let Ok(mut c) = child.lock() {
+                                let _ = c.kill();
+                            }
+                        }
+                        return;
+                    }
+                    std::thread::sleep(Duration::from_millis(20));
+                }
+            });
+            let result = work(&mut input);
+            done.store(true, Ordering::SeqCst);
+            result
+        });
+        drop(input);
+        match (result, stopped(stop)) {
+            (Ok(summary), None) => self.finish().map(|()| summary),
+            (_, Some(sig)) => {
+                self.abort();
+                Err(AnimError::Interrupted(sig))
+            }
+            (Err(AnimError::Stream(e)), None) => Err(self.failure(e)),
+            (Err(e), None) => {
+                self.abort();
+                Err(e)
+            }
+        }
     }
 
     /// What ffmpeg printed, once it has ended.
@@ -169,25 +265,34 @@ impl Ffmpeg {
         )
     }
 
-    /// Closes the input and waits for ffmpeg to finish the file.
-    pub fn finish(mut self) -> Result<(), AnimError> {
-        drop(self.child.stdin.take());
+    fn wait(&self) -> std::io::Result<std::process::ExitStatus> {
+        match self.child.lock() {
+            Ok(mut c) => c.wait(),
+            Err(_) => Err(std::io::Error::other("ffmpeg's handle was poisoned")),
+        }
+    }
+
+    /// Waits for ffmpeg to finish the file, then renames it onto the video's name.
+    fn finish(mut self) -> Result<(), AnimError> {
         let status = self
-            .child
             .wait()
             .map_err(|e| AnimError::Ffmpeg(format!("waiting for it: {e}")))?;
         let words = self.words();
-        if status.success() {
-            Ok(())
-        } else {
-            Err(AnimError::Ffmpeg(format!("{status}: {words}")))
+        if !status.success() {
+            return Err(AnimError::Ffmpeg(format!("{status}: {words}")));
         }
+        let file = self.file.clone();
+        self.temp
+            .persist(&file)
+            .map_err(|e| AnimError::VideoTarget {
+                path: file.clone(),
+                reason: format!("cannot rename the finished video onto it: {}", e.error),
+            })
     }
 
     /// The error when writing into ffmpeg failed: ffmpeg's own words if it has ended.
     fn failure(mut self, e: std::io::Error) -> AnimError {
-        drop(self.child.stdin.take());
-        let _ = self.child.wait();
+        let _ = self.wait();
         let words = self.words();
         if words.is_empty() {
             AnimError::Stream(e)
@@ -196,11 +301,13 @@ impl Ffmpeg {
         }
     }
 
-    /// Stops ffmpeg after a failure upstream, without waiting for a finished file.
-    pub fn abort(mut self) {
-        drop(self.child.stdin.take());
-        let _ = self.child.kill();
-        let _ = self.child.wait();
+    /// Stops ffmpeg after a failure upstream, without waiting for a finished file; the
+    /// temporary file goes with `self`.
+    fn abort(self) {
+        if let Ok(mut c) = self.child.lock() {
+            let _ = c.kill();
+            let _ = c.wait();
+        }
     }
 }
 

@@ -165,11 +165,15 @@ fn numbers_out_of_range_are_located() {
     let cases = [
         (
             "fps = 0",
-            "3:7: `fps` must be a finite number above 0, found 0",
+            "3:7: `fps` must be a number from 0.01 to 1000, found 0.0",
+        ),
+        (
+            "fps = 5e-324",
+            "3:7: `fps` must be a number from 0.01 to 1000, found 5e-324",
         ),
         (
             "fps = nan",
-            "3:7: `fps` must be a finite number above 0, found NaN",
+            "3:7: `fps` must be a number from 0.01 to 1000, found NaN",
         ),
         (
             "[output]\njpeg_quality = 101",

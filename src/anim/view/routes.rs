@@ -271,7 +271,7 @@ fn strip(ctx: &Context) -> Reply {
     };
     let dir = &p.manifest.output.dir;
     let frames: Vec<u32> = (0..p.manifest.frames).collect();
-    let report = status(&anim, dir, &frames);
+    let report = status(&anim, dir, &frames, false);
     let mut states = vec!["missing"; frames.len()];
     for &f in &report.up_to_date {
         states[f as usize] = "up-to-date";

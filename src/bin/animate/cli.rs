@@ -6,7 +6,7 @@ use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
 use whitted::anim::check::export::{Exporter, Html, Json, Junit, Sink, Table};
 use whitted::anim::check::Overrides;
-use whitted::anim::frames::run::Destination;
+use whitted::anim::frames::run::{Destination, Encoding, Policy};
 use whitted::anim::preview::{self, PreviewOptions};
 use whitted::anim::select::{process_env, SelectError, Shard};
 use whitted::anim::{AnimError, Manifest, Project};
@@ -61,6 +61,12 @@ pub enum Command {
     /// Print the predicted cost of the render per frame range and per shard, from a 1/8-size
     /// pre-pass, and the wall time expected on this machine from one timed frame.
     Estimate(EstimateArgs),
+    /// Encode a rendered frame folder into a video with ffmpeg, without rendering: the
+    /// folder must be complete and up to date. Exit 0 done, 1 ffmpeg failed, 2 not ready.
+    Encode(EncodeArgs),
+    /// Remove from the frame folder the files of frames past the end of the sequence (after
+    /// `frames` was lowered) and the temporary files that killed runs left.
+    Clean(CleanArgs),
     /// Write quick pictures for people into a folder: a looping GIF of every frame at 1/K
     /// size, a contact sheet of every N-th frame and a plot of the camera and tracked paths.
     Preview(PreviewArgs),
@@ -167,17 +173,25 @@ pub struct RenderArgs {
     /// the manifest now gives them; leave up-to-date files untouched.
     #[arg(long, conflicts_with_all = ["stdout", "video"])]
     pub resume: bool,
+    /// With --resume: decode every frame kept (as `status --verify`), so that damage the
+    /// default checks cannot see is rendered again.
+    #[arg(long, requires = "resume")]
+    pub verify: bool,
     /// Write the frames in order to standard output instead of files: raw (RGB bytes),
     /// ppm or png.
     #[arg(long, value_name = "FORMAT", value_parser = stream_format,
           conflicts_with_all = ["video", "out"])]
     pub stdout: Option<ImageFormat>,
-    /// With --stdout: write binary frames even when standard output is a terminal.
-    #[arg(long, requires = "stdout")]
+    /// Write over what a run otherwise refuses to: frames in the folder recorded by another
+    /// manifest, an existing --video file, binary --stdout frames on a terminal.
+    #[arg(long)]
     pub force: bool,
-    /// Pipe the frames into ffmpeg (from PATH) to make this video file.
+    /// Pipe the frames into ffmpeg (from PATH) to make this video file (written beside
+    /// it under a temporary name, renamed when ffmpeg succeeds).
     #[arg(long, value_name = "FILE", conflicts_with = "out")]
     pub video: Option<PathBuf>,
+    #[command(flatten)]
+    pub encoding: EncodingArgs,
     /// Report progress as JSON lines on standard error (for schedulers and scripts)
     /// instead of a progress bar.
     #[arg(long)]
@@ -188,7 +202,51 @@ pub struct RenderArgs {
     pub display: Option<whitted::display::Display>,
 }
 
+/// How ffmpeg encodes a video (`--video`, `animate encode`).
+#[derive(Args, Debug, Clone, Default)]
+pub struct EncodingArgs {
+    /// The video codec, ffmpeg's `-c:v` (e.g. libx264, libx265, libvpx-vp9; default:
+    /// ffmpeg's for the file's extension).
+    #[arg(long, value_name = "CODEC")]
+    pub codec: Option<String>,
+    /// The quality, ffmpeg's `-crf` (lower is better: 0 to 63; default: the codec's).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u8).range(0..=63))]
+    pub crf: Option<u8>,
+    /// The video's pixel format, ffmpeg's output `-pix_fmt` (default yuv420p, which plays
+    /// everywhere).
+    #[arg(long, value_name = "FORMAT")]
+    pub pix_fmt: Option<String>,
+}
+
+impl EncodingArgs {
+    pub fn encoding(&self) -> Encoding {
+        Encoding {
+            codec: self.codec.clone(),
+            crf: self.crf,
+            pix_fmt: self.pix_fmt.clone(),
+        }
+    }
+
+    fn given(&self) -> bool {
+        self.codec.is_some() || self.crf.is_some() || self.pix_fmt.is_some()
+    }
+}
+
 impl RenderArgs {
+    /// What the run may keep and replace.
+    pub fn policy(&self) -> Result<Policy, Usage> {
+        if self.encoding.given() && self.video.is_none() {
+            let why = "--codec, --crf and --pix-fmt apply to --video (and `animate encode`)";
+            return Err(Usage(why.into()));
+        }
+        Ok(Policy {
+            resume: self.resume,
+            verify: self.verify,
+            force: self.force,
+            encoding: self.encoding.encoding(),
+        })
+    }
+
     /// The shard of this task: `K/N`, or resolved from the scheduler's environment.
     pub fn shard(&self) -> Result<Option<(u32, u32)>, AnimError> {
         let resolve = |s: Shard| s.resolve(process_env, self.shards, "--shards");
@@ -298,6 +356,42 @@ pub struct StatusArgs {
     /// Print the states as JSON on standard output.
     #[arg(long)]
     pub json: bool,
+    /// Also decode every frame (slower): finds damage that the default checks (PNG chunk
+    /// CRCs, RAW pixel hashes, sizes and end markers) cannot, such as in a JPEG's data.
+    #[arg(long)]
+    pub verify: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct EncodeArgs {
+    /// The animation manifest (TOML) whose frames are encoded, at its fps.
+    pub manifest: PathBuf,
+    /// The frame folder, instead of the manifest's `[output] dir`.
+    #[arg(long, value_name = "DIR")]
+    pub dir: Option<PathBuf>,
+    /// The video file (default: the frame folder's path with .mp4).
+    #[arg(short, long, value_name = "VIDEO")]
+    pub out: Option<PathBuf>,
+    #[command(flatten)]
+    pub encoding: EncodingArgs,
+    /// Replace an existing video file.
+    #[arg(long)]
+    pub force: bool,
+    /// No progress bar and no summary.
+    #[arg(short, long)]
+    pub quiet: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct CleanArgs {
+    /// The animation manifest (TOML).
+    pub manifest: PathBuf,
+    /// The frame folder, instead of the manifest's `[output] dir`.
+    #[arg(short, long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Say what would be removed, and remove nothing.
+    #[arg(long)]
+    pub dry_run: bool,
 }
 
 #[derive(Args, Debug)]

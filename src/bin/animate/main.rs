@@ -9,15 +9,16 @@ mod report;
 use anyhow::Context;
 use clap::Parser;
 use cli::{
-    BlessArgs, CheckArgs, Cli, Command, EstimateArgs, JobArgs, PreviewArgs, RenderArgs, StatusArgs,
-    ViewArgs,
+    BlessArgs, CheckArgs, CleanArgs, Cli, Command, EncodeArgs, EstimateArgs, JobArgs, PreviewArgs,
+    RenderArgs, StatusArgs, ViewArgs,
 };
 use std::process::ExitCode;
 use std::time::Instant;
 use whitted::anim::check::{self, CheckOptions};
 use whitted::anim::frames::estimate::Estimate;
-use whitted::anim::frames::status::status;
-use whitted::anim::frames::{balance, run};
+use whitted::anim::frames::run::{self, Destination, Policy};
+use whitted::anim::frames::status::{ranges, status};
+use whitted::anim::frames::{balance, encode, folder, lock};
 use whitted::anim::job::{openjd_template, relative_to, Chunking};
 use whitted::anim::select::sorted;
 use whitted::anim::view::ViewOptions;
@@ -30,8 +31,15 @@ fn pool(threads: Option<u32>) -> anyhow::Result<rayon::ThreadPool> {
     whitted::process::pool(threads).context("cannot start the worker threads")
 }
 
+/// What an interrupted stream or video says: `--resume` does not apply to them.
+const STREAM_STOPPED: &str = "a stream or video cannot be resumed: run the command again, \
+or render into a folder (`--resume` completes that) and `animate encode` it";
+
 fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     let c = &args.common;
+    if args.stdout.is_some() && whitted::process::stdout_closed() {
+        return Err(AnimError::StdoutClosed.into());
+    }
     let project = c.load()?;
     let (m, mut anim) = (&project.manifest, Animation::new(&project)?);
     if let Some(Display::Tev(addr)) = &args.display {
@@ -43,10 +51,17 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
         false => run::frames_of(&anim, c.frames.as_deref(), args.shard()?)?,
     };
     let destination = args.destination(m)?;
+    let policy = args.policy()?;
     if !c.quiet {
         report::announce(&anim, frames.len(), args.stdout == Some(ImageFormat::Raw));
     }
     let (stop, pool) = (whitted::process::watch_signals(), pool(c.threads)?);
+    if matches!(destination, Destination::Stream(_)) {
+        // A reader that stops reading would hold a write, and the run, forever.
+        whitted::process::exit_when_stuck(stop.clone(), |sig| {
+            format!("animate: interrupted by signal {sig}\nanimate: hint: {STREAM_STOPPED}")
+        });
+    }
     let bar = report::Bar::new(frames.len(), c.quiet || args.events);
     let reporter: &dyn Reporter = if args.events {
         &report::JsonLines
@@ -60,16 +75,89 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
             &anim,
             &frames,
             &destination,
-            args.resume,
+            &policy,
             &mut out,
             reporter,
             &stop,
         )
-    })?;
+    });
     bar.finish();
+    let summary = match (summary, &destination) {
+        (Err(AnimError::Interrupted(sig)), Destination::Stream(_) | Destination::Video(_)) => {
+            eprintln!("animate: interrupted by signal {sig}");
+            eprintln!("animate: hint: {STREAM_STOPPED}");
+            return Ok(Outcome::Interrupted(sig));
+        }
+        (summary, _) => summary?,
+    };
     if !c.quiet {
         report::summary(&summary, start, &destination.describe());
     }
+    Ok(Outcome::Success)
+}
+
+fn encode_command(args: EncodeArgs) -> anyhow::Result<Outcome> {
+    let project = whitted::anim::Project::load(&args.manifest)?;
+    let (m, anim) = (&project.manifest, Animation::new(&project)?);
+    let dir = args.dir.clone().unwrap_or_else(|| m.output.dir.clone());
+    let video = args
+        .out
+        .clone()
+        .unwrap_or_else(|| encode::default_video(&dir));
+    let policy = Policy {
+        force: args.force,
+        encoding: args.encoding.encoding(),
+        ..Policy::default()
+    };
+    let stop = whitted::process::watch_signals();
+    let bar = report::Bar::new(m.frames as usize, args.quiet);
+    let start = Instant::now();
+    let summary = encode::encode(&anim, &dir, &video, &policy, &bar, &stop);
+    bar.finish();
+    let summary = summary?;
+    if !args.quiet {
+        let secs = start.elapsed().as_secs_f64();
+        eprintln!(
+            "animate: encoded {} frames of {} at {} fps in {secs:.2} s -> {}",
+            summary.rendered,
+            dir.display(),
+            m.fps,
+            video.display()
+        );
+    }
+    Ok(Outcome::Success)
+}
+
+fn clean_command(args: CleanArgs) -> anyhow::Result<Outcome> {
+    let project = whitted::anim::Project::load(&args.manifest)?;
+    let (m, anim) = (&project.manifest, Animation::new(&project)?);
+    let dir = args.out.clone().unwrap_or_else(|| m.output.dir.clone());
+    if args.dry_run {
+        let past: Vec<u32> = folder::beyond(&anim, &dir).iter().map(|f| f.0).collect();
+        println!(
+            "{}: would remove {} frame(s) past the end ({}) and {} temporary file(s)",
+            dir.display(),
+            past.len(),
+            ranges(&past),
+            folder::temporaries(&anim, &dir).len()
+        );
+        return Ok(Outcome::Success);
+    }
+    let held = lock::lock(&dir, &m.path)?;
+    if !held.alone() {
+        let why =
+            "another run of this manifest is writing into the folder: clean when it has ended";
+        return Err(anyhow::anyhow!("{}: {why}", dir.display()));
+    }
+    let cleaned =
+        folder::clean(&anim, &dir).with_context(|| format!("cleaning {}", dir.display()))?;
+    println!(
+        "{}: removed {} frame(s) past the end ({}) and {} temporary file(s)",
+        dir.display(),
+        cleaned.beyond.len(),
+        ranges(&cleaned.beyond),
+        cleaned.temporaries
+    );
     Ok(Outcome::Success)
 }
 
@@ -154,7 +242,7 @@ fn status_command(args: StatusArgs) -> anyhow::Result<Outcome> {
     let frames = sorted(&run::frames_of(&anim, c.frames.as_deref(), None)?);
     let dir = args.out.clone().unwrap_or_else(|| m.output.dir.clone());
     let pool = pool(c.threads)?;
-    let report = pool.install(|| status(&anim, &dir, &frames));
+    let report = pool.install(|| status(&anim, &dir, &frames, args.verify));
     match args.json {
         true => {
             let mut doc = report.json(&dir);
@@ -264,6 +352,8 @@ fn main() -> ExitCode {
         Some(Command::Preview(args)) => preview(args),
         Some(Command::Job(args)) => job(args),
         Some(Command::Estimate(args)) => estimate(args),
+        Some(Command::Encode(args)) => encode_command(args),
+        Some(Command::Clean(args)) => clean_command(args),
         Some(Command::View(args)) => view(args),
     };
     match result {

@@ -206,6 +206,10 @@ pub fn hint(e: &AnimError) -> Option<&'static str> {
         AnimError::Interrupted(_) => Some("`--resume` completes the run"),
         AnimError::Reference(_) => Some("`animate bless` writes the references"),
         AnimError::FfmpegMissing => Some("or pipe `--stdout raw` into an encoder"),
+        AnimError::Foreign { .. } => {
+            Some("`--force` writes over them; `-o DIR` renders into another folder")
+        }
+        AnimError::VideoExists(_) => Some("`--force` replaces it; `-o` names another file"),
         _ => None,
     }
 }

@@ -100,7 +100,7 @@ fn row(f: &FrameReport, flip: bool) -> String {
     let mut row = format!(
         "<tr class=\"{class}\"><td><a href=\"#{}\">{}</a></td><td>{}</td><td>{}</td>\
          <td>{:.3}</td><td>{:.4}</td><td>{}</td>",
-        escape(&f.name),
+        escape(&url(&f.name)),
         f.frame,
         c.max_diff,
         f.max_at(),
@@ -159,8 +159,20 @@ fn legends(flip: bool) -> String {
     html
 }
 
+/// A file name as it goes into a link: every byte but letters, digits and `-._~`
+/// percent-encoded, so that `?`, `#`, `%` and spaces in a frame's name do not break it.
+fn url(name: &str) -> String {
+    const KEEP: &percent_encoding::AsciiSet = &percent_encoding::NON_ALPHANUMERIC
+        .remove(b'-')
+        .remove(b'.')
+        .remove(b'_')
+        .remove(b'~');
+    percent_encoding::utf8_percent_encode(name, KEEP).to_string()
+}
+
 fn pictures(f: &FrameReport, width: u32) -> String {
-    let name = escape(&f.name);
+    let id = escape(&f.name);
+    let name = escape(&url(&f.name));
     let figure = |kind: &str, caption: &str| {
         format!(
             "<figure><img class=\"frame\" src=\"{name}.{kind}.png\" style=\"width:{width}px\" \
@@ -168,7 +180,7 @@ fn pictures(f: &FrameReport, width: u32) -> String {
         )
     };
     let mut html = format!(
-        "<h2 id=\"{name}\">Frame {} failed ({})</h2>\n<p>{}</p>\n<div class=\"pictures\">",
+        "<h2 id=\"{id}\">Frame {} failed ({})</h2>\n<p>{}</p>\n<div class=\"pictures\">",
         f.frame,
         f.failed_names(),
         escape(&f.figures())
@@ -236,6 +248,13 @@ impl Exporter for Html {
 mod tests {
     use super::*;
     use crate::anim::check::report::tests::sample;
+
+    #[test]
+    fn names_in_links_are_percent_encoded() {
+        assert_eq!(url("frame_0001"), "frame_0001");
+        assert_eq!(url("a?b#c d%"), "a%3Fb%23c%20d%25");
+        assert_eq!(url("日"), "%E6%97%A5");
+    }
 
     /// Every `src="…"` of the page.
     fn sources(html: &str) -> Vec<&str> {

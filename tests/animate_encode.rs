@@ -1,0 +1,215 @@
+//! Videos that are never lost and folders encoded without rendering again, through the
+//! built `animate` and a real ffmpeg: `--video` writes a temporary beside its file and
+//! renames it on success, refuses to replace a video unless `--force`, takes `--codec`
+//! and `--crf`, and ends within a second of a signal even when ffmpeg is stopped;
+//! `animate encode` checks the folder is complete and up to date first. Without ffmpeg
+//! these tests say "skipped" and pass, except under CI.
+
+mod support;
+
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+use support::*;
+
+fn have_ffmpeg() -> bool {
+    let found = Command::new("ffprobe").arg("-version").output().is_ok()
+        && Command::new("ffmpeg").arg("-version").output().is_ok();
+    if !found {
+        assert!(std::env::var_os("CI").is_none(), "CI must install ffmpeg");
+        eprintln!("skipped: ffmpeg/ffprobe not installed");
+    }
+    found
+}
+
+/// `codec_name,nb_read_frames` of the video's first stream, as ffprobe counts them.
+fn probe(file: &std::path::Path) -> String {
+    let out = Command::new("ffprobe")
+        .args(["-v", "error", "-select_streams", "v:0", "-count_frames"])
+        .args([
+            "-show_entries",
+            "stream=codec_name,nb_read_frames",
+            "-of",
+            "csv=p=0",
+        ])
+        .arg(file)
+        .output()
+        .unwrap();
+    String::from_utf8_lossy(&out.stdout).trim().to_string()
+}
+
+/// The child processes of `pid` (from /proc).
+fn children(pid: u32) -> Vec<u32> {
+    let text =
+        std::fs::read_to_string(format!("/proc/{pid}/task/{pid}/children")).unwrap_or_default();
+    text.split_whitespace()
+        .filter_map(|p| p.parse().ok())
+        .collect()
+}
+
+fn hidden(dir: &std::path::Path) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .filter(|n| n.starts_with('.') && n.contains(".mp4."))
+        .collect()
+}
+
+#[test]
+fn an_interrupted_or_stopped_video_leaves_the_previous_one_whole() {
+    if !have_ffmpeg() {
+        return;
+    }
+    let (dir, manifest) = project(&circle_manifest(""));
+    let video = dir.path().join("v.mp4");
+    animate()
+        .arg(&manifest)
+        .arg("--video")
+        .arg(&video)
+        .arg("-q")
+        .assert()
+        .success();
+    let good = std::fs::read(&video).unwrap();
+    // Not replaced without --force, and nothing rendered.
+    let out = animate()
+        .arg(&manifest)
+        .arg("--video")
+        .arg(&video)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("exists and would be replaced") && err.contains("--force"),
+        "{err}"
+    );
+    let long = dir.path().join("long.toml");
+    std::fs::write(
+        &long,
+        circle_manifest("").replace("frames = 12", "frames = 100000"),
+    )
+    .unwrap();
+    for (sig, code, stop_ffmpeg) in [("INT", 130, false), ("TERM", 143, true)] {
+        let mut child = Command::new(assert_cmd::cargo::cargo_bin("animate"))
+            .arg(&long)
+            .arg("--video")
+            .arg(&video)
+            .args(["--force", "-q"])
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        std::thread::sleep(Duration::from_millis(800));
+        if stop_ffmpeg {
+            for c in children(child.id()) {
+                assert!(Command::new("kill")
+                    .args(["-s", "STOP", &c.to_string()])
+                    .status()
+                    .unwrap()
+                    .success());
+            }
+            std::thread::sleep(Duration::from_millis(300));
+        }
+        let sent = Instant::now();
+        assert!(Command::new("kill")
+            .args(["-s", sig, &child.id().to_string()])
+            .status()
+            .unwrap()
+            .success());
+        while child.try_wait().unwrap().is_none() && sent.elapsed() < Duration::from_secs(5) {
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        let took = sent.elapsed();
+        let _ = child.kill();
+        let status = child.wait().unwrap();
+        let mut err = String::new();
+        std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+        assert_eq!(status.code(), Some(code), "SIG{sig}: {err}");
+        assert!(
+            took < Duration::from_secs(1),
+            "SIG{sig} (ffmpeg stopped: {stop_ffmpeg}): {took:?}"
+        );
+        assert!(
+            err.contains("cannot be resumed") && !err.contains("completes the run"),
+            "{err}"
+        );
+        assert_eq!(
+            std::fs::read(&video).unwrap(),
+            good,
+            "SIG{sig}: the previous video changed"
+        );
+        assert_eq!(hidden(dir.path()), Vec::<String>::new(), "SIG{sig}");
+    }
+}
+
+#[test]
+fn encode_checks_the_folder_then_makes_the_video_with_the_options() {
+    if !have_ffmpeg() {
+        return;
+    }
+    let (dir, manifest) = project(&circle_manifest(""));
+    animate()
+        .arg(&manifest)
+        .args(["--frames", "0-5", "-q"])
+        .assert()
+        .success();
+    let video = dir.path().join("frames.mp4");
+    let out = animate().arg("encode").arg(&manifest).output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("not ready to encode: frames missing 6-11"),
+        "{err}"
+    );
+    assert!(!video.exists());
+    animate()
+        .arg(&manifest)
+        .args(["--resume", "-q"])
+        .assert()
+        .success();
+    animate()
+        .arg("encode")
+        .arg(&manifest)
+        .args(["--codec", "libx264", "--crf", "30", "-q"])
+        .assert()
+        .success();
+    assert_eq!(probe(&video), "h264,12");
+    let first = std::fs::read(&video).unwrap();
+    animate().arg("encode").arg(&manifest).assert().code(2);
+    // Another codec, forced over the first video.
+    animate()
+        .arg("encode")
+        .arg(&manifest)
+        .args(["--codec", "mpeg4", "--force", "-q"])
+        .assert()
+        .success();
+    assert_eq!(probe(&video), "mpeg4,12");
+    assert_ne!(std::fs::read(&video).unwrap(), first);
+    // A stale frame is refused.
+    let png = dir.path().join("frames/frame_0004.png");
+    let mut bytes = std::fs::read(&png).unwrap();
+    let n = bytes.len();
+    bytes[n / 2] ^= 1;
+    std::fs::write(&png, bytes).unwrap();
+    let out = animate()
+        .arg("encode")
+        .arg(&manifest)
+        .arg("--force")
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("frames stale 4"), "{err}");
+    // The same options on --video.
+    let other = dir.path().join("crf.mkv");
+    animate()
+        .arg(&manifest)
+        .arg("--video")
+        .arg(&other)
+        .args(["--codec", "libx264", "--crf", "40", "-q"])
+        .assert()
+        .success();
+    assert_eq!(probe(&other), "h264,12");
+    animate()
+        .arg(&manifest)
+        .args(["--crf", "20"])
+        .assert()
+        .code(2);
+}
