@@ -17,6 +17,8 @@
 //! radius = 12.0
 //! height = 3.0
 //! look_at = "sphere 2"             # optional: a point [x, y, z] or an object to follow
+//! fov = 30.0                       # optional: vertical field of view, degrees, 0 < fov < 180
+//! roll = 0.0                       # optional: degrees, positive banks the camera right
 //!
 //! [[track]]                        # any number; see `tracks`
 //! target = "light 1 intensity"
@@ -53,6 +55,7 @@ mod tracks;
 pub use tracks::LookAt;
 
 use crate::anim::timeline::{CameraPath, MotionBlur, TrackSpec};
+use crate::camera::Lens;
 use crate::fileloc::FileLoc;
 use crate::limits::MAX_FRAMES;
 use crate::output::ImageFormat;
@@ -152,6 +155,8 @@ pub struct Manifest {
     /// An object the camera follows (`look_at = "sphere 2"`), or, without a path, a
     /// fixed point.
     pub look_at: Option<LookAt>,
+    /// `[camera] fov` and `roll`: the framing of every frame (the report's by default).
+    pub lens: Lens,
     /// The `[[track]]` tables, in file order.
     pub tracks: Vec<TrackSpec>,
     /// `[output]`: where and how frames are written.
@@ -266,7 +271,7 @@ impl Manifest {
 }
 
 /// What a `[camera]` table becomes: the path, and an object followed (or a still point).
-type CameraParts = (Option<CameraPath>, Option<LookAt>);
+type CameraParts = (Option<CameraPath>, Option<LookAt>, Lens);
 
 /// The manifest text and where it came from: turns spans into located errors.
 struct Source<'a> {
@@ -343,9 +348,9 @@ impl Source<'_> {
             Some(v) => *v.get_ref(),
             None => DEFAULT_FPS,
         };
-        let (camera, look_at) = match raw.camera {
+        let (camera, look_at, lens) = match raw.camera {
             Some(c) => camera(self, c, frames)?,
-            None => (None, None),
+            None => (None, None, Lens::default()),
         };
         Ok(Manifest {
             path: self.path.to_path_buf(),
@@ -355,6 +360,7 @@ impl Source<'_> {
             fps,
             camera,
             look_at,
+            lens,
             tracks: self.tracks(raw.track.unwrap_or_default(), frames)?,
             output: self.output(raw.output)?,
             render: self.render(raw.render)?,

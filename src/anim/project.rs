@@ -11,7 +11,7 @@ use super::error::AnimError;
 use super::manifest::Manifest;
 use super::timeline::{MotionBlur, Snapshot, Timeline};
 use crate::accel::Accel;
-use crate::camera::Camera;
+use crate::camera::{Camera, VIEW_HEIGHT, VIEW_WIDTH};
 use crate::limits::size_ok;
 use crate::output::ImageFormat;
 use crate::render::{render, render_add, Frame};
@@ -67,6 +67,10 @@ pub struct Settings {
     pub format: ImageFormat,
     /// `PIXEL_VERSION` of the library that drew it.
     pub pixel_version: u32,
+    /// The view plane's width and height and the roll, when they are not the report's
+    /// (left out of the record then, so frames of the report's framing keep their digest).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub view: Option<[f64; 3]>,
 }
 
 /// A project ready to draw any of its frames at a size.
@@ -123,7 +127,19 @@ impl<'p> Animation<'p> {
 
     /// The camera of a frame state, `None` when the eye is on the point it looks at.
     fn camera(&self, state: &Snapshot) -> Option<Camera> {
-        Camera::new(state.eye, state.look_at, self.width, self.height)
+        let native = (self.timeline.base.width, self.timeline.base.height);
+        let size = (self.width, self.height);
+        Camera::framed(state.eye, state.look_at, native, size, &self.manifest.lens)
+    }
+
+    /// The view plane (width, height) and roll when they are not the report's 0.5 × 0.35
+    /// unrolled plane (a size of another shape than the scene's, a `fov`, a `roll`).
+    pub fn view(&self) -> Option<[f64; 3]> {
+        let lens = &self.manifest.lens;
+        let native = (self.timeline.base.width, self.timeline.base.height);
+        let (w, h) = lens.plane(native, (self.width, self.height));
+        let report = (w, h) == (VIEW_WIDTH, VIEW_HEIGHT) && lens.roll == 0.0;
+        (!report).then_some([w, h, lens.roll])
     }
 
     /// Refuses, before anything renders, a frame whose camera (at any of its sample
@@ -181,6 +197,7 @@ impl<'p> Animation<'p> {
             motion_blur: self.timeline.blur,
             format: self.format(),
             pixel_version: PIXEL_VERSION,
+            view: self.view(),
         }
     }
 

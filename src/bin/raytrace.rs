@@ -1,4 +1,4 @@
-//! `raytrace [SCENE] [-o OUT] [--size WxH] [--samples N] [--threads N]`: one image from a
+//! `raytrace [SCENE] [-o OUT] [--size WxH] [--fov DEG] [--roll DEG] [--samples N] [--threads N]`: one image from a
 //! Scene.txt, the report's main(). It parses the command line and calls the library;
 //! exit statuses follow `whitted::exit` (2 bad input, 1 a failed write, 130/143 stopped by
 //! SIGINT/SIGTERM).
@@ -7,6 +7,7 @@ use anyhow::Context;
 use clap::Parser;
 use std::path::PathBuf;
 use std::process::ExitCode;
+use whitted::camera::{Camera, Lens};
 use whitted::exit::Outcome;
 use whitted::output::{check_target, write_atomic, ImageFormat, OutputError};
 use whitted::{render, trace::Tracer, Scene, SceneError};
@@ -29,10 +30,18 @@ struct Args {
     /// The image to write (its extension picks the format); defaults to SCENE with .png.
     #[arg(short, long, value_name = "OUT")]
     out: Option<PathBuf>,
-    /// Render at this size instead of the scene's resolution: WIDTHxHEIGHT, e.g. 160x120
-    /// (the view keeps the report's 0.5 × 0.35 plane).
+    /// Render at this size instead of the scene's resolution: WIDTHxHEIGHT, e.g. 160x120.
+    /// A size of the scene's shape keeps the report's 0.5 × 0.35 view; another shape keeps
+    /// the view's height and widens or narrows it with square pixels (no stretching).
     #[arg(long, value_name = "WxH", value_parser = parse_size)]
     size: Option<(u32, u32)>,
+    /// Vertical field of view in degrees (0 < DEG < 180), square pixels; default: the
+    /// report's view.
+    #[arg(long, value_name = "DEG", value_parser = parse_fov)]
+    fov: Option<f64>,
+    /// Roll about the viewing direction in degrees; positive banks the camera right.
+    #[arg(long, value_name = "DEG", default_value_t = 0.0, allow_negative_numbers = true, value_parser = parse_roll)]
+    roll: f64,
     /// Anti-aliasing: an N×N stratified grid of samples per pixel (1 = the report's).
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=16))]
     samples: u32,
@@ -53,16 +62,40 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
         .ok_or_else(bad)
 }
 
+fn parse_fov(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v > 0.0 && v < 180.0 => Ok(v),
+        _ => Err(format!(
+            "expected a vertical field of view in degrees between 0 and 180 (both excluded), found {s:?}"
+        )),
+    }
+}
+
+fn parse_roll(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v.abs() <= 360_000.0 => Ok(v),
+        _ => Err(format!("expected a roll in degrees, found {s:?}")),
+    }
+}
+
 fn run(args: Args) -> anyhow::Result<()> {
     whitted::process::exit_on_signals();
     let out = args.out.unwrap_or_else(|| args.scene.with_extension("png"));
     let format = ImageFormat::from_path(&out)?;
     let mut scene = Scene::load(&args.scene)?;
     check_target(&out)?;
-    (scene.width, scene.height) = args.size.unwrap_or((scene.width, scene.height));
+    let native = (scene.width, scene.height);
+    (scene.width, scene.height) = args.size.unwrap_or(native);
     let pool = whitted::process::pool(args.threads).context("cannot start the worker threads")?;
     let start = std::time::Instant::now();
-    let (camera, tracer) = (scene.camera(), Tracer::new(&scene));
+    let lens = Lens {
+        fov: args.fov,
+        roll: args.roll,
+    };
+    let size = (scene.width, scene.height);
+    let camera = Camera::framed(scene.eye, scene.look_at, native, size, &lens)
+        .expect("the parser refuses an eye placed on its look-at point");
+    let tracer = Tracer::new(&scene);
     let (frame, rays) =
         pool.install(|| render(&tracer, &camera, scene.width, scene.height, args.samples));
     let traced = start.elapsed().as_secs_f64();
