@@ -14,7 +14,7 @@ use crate::accel::Accel;
 use crate::camera::{Camera, VIEW_HEIGHT, VIEW_WIDTH};
 use crate::limits::size_ok;
 use crate::output::ImageFormat;
-use crate::render::{render, render_add, Frame};
+use crate::render::{control, render, render_add, Frame};
 use crate::scene::{Scene, SceneError};
 use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
@@ -166,6 +166,16 @@ impl<'p> Animation<'p> {
     /// its camera; with motion blur the mean of its sub-frames (each sample clamped, all
     /// averaged, then rounded).
     pub fn render(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
+        let _drawing = control::frame_in_progress();
+        let drawn = self.draw(frame)?;
+        // A signal stopped the row loops: the frame is incomplete and must not be kept.
+        match control::cancelled() {
+            Some(sig) => Err(AnimError::Interrupted(sig)),
+            None => Ok(drawn),
+        }
+    }
+
+    fn draw(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
         let (w, h, n) = (self.width, self.height, self.samples);
         let times = self.timeline.times(frame);
         if let [t] = times[..] {
@@ -176,11 +186,24 @@ impl<'p> Animation<'p> {
         let mut sum = vec![Color::ZERO; w as usize * h as usize];
         let mut rays = RayCount::default();
         for &t in &times {
+            if control::cancelled().is_some() {
+                break; // the frame is discarded: no need to set up further sub-frames
+            }
             let state = self.timeline.at(t);
             let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
             rays = rays + render_add(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
         }
         Ok((Frame::from_sum(&sum, times.len() as u32, w, h), rays))
+    }
+
+    /// The rows of pixels one frame draws: its height, times its motion-blur sub-frames
+    /// (the unit of `render::control::rows_done`).
+    pub fn rows_per_frame(&self) -> u64 {
+        let subframes = self
+            .timeline
+            .blur
+            .map_or(1, |b| u64::from(b.samples.max(1)));
+        u64::from(self.height) * subframes
     }
 
     /// The image format of the frame files.

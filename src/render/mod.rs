@@ -11,6 +11,8 @@ use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
 
+pub mod control;
+
 /// An 8-bit RGB image, rows top to bottom.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Frame {
@@ -54,10 +56,14 @@ pub fn render(
         .enumerate()
         .map(|(j, row)| {
             let mut count = RayCount::default();
+            if control::stop_row() {
+                return count; // cancelled: the caller discards the frame
+            }
             for (i, px) in row.chunks_exact_mut(3).enumerate() {
                 let c = pixel(tracer, view, camera, i as f64, j as f64, n, &mut count);
                 px.copy_from_slice(&[to_byte(c.x), to_byte(c.y), to_byte(c.z)]);
             }
+            control::row_done();
             count
         })
         .reduce(RayCount::default, |a, b| a + b);
@@ -89,10 +95,14 @@ pub fn render_add(
         .enumerate()
         .map(|(j, row)| {
             let mut count = RayCount::default();
+            if control::stop_row() {
+                return count; // cancelled: the caller discards the frame
+            }
             for (i, acc) in row.iter_mut().enumerate() {
                 let c = pixel(tracer, view, camera, i as f64, j as f64, n, &mut count);
                 *acc += c.clamp(Color::ZERO, Color::ONE);
             }
+            control::row_done();
             count
         })
         .reduce(RayCount::default, |a, b| a + b)

@@ -31,8 +31,8 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     if !c.quiet {
         report::announce(&anim, frames.len(), args.stdout == Some(ImageFormat::Raw));
     }
-    let (stop, pool) = (whitted::process::watch_signals(), pool(c.threads)?);
-    let bar = report::Bar::new(frames.len(), c.quiet || args.events);
+    let (stop, pool) = (whitted::process::watch_signals("animate"), pool(c.threads)?);
+    let bar = report::RowBar::new(frames.len(), anim.rows_per_frame(), c.quiet || args.events);
     let reporter: &dyn Reporter = if args.events {
         &report::JsonLines
     } else {
