@@ -14,7 +14,7 @@ use crate::accel::Accel;
 use crate::camera::{Camera, VIEW_HEIGHT, VIEW_WIDTH};
 use crate::limits::size_ok;
 use crate::output::ImageFormat;
-use crate::render::{control, render, render_add, Frame};
+use crate::render::{control, estimate, render, render_add, Frame};
 use crate::scene::{Scene, SceneError};
 use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
@@ -194,6 +194,38 @@ impl<'p> Animation<'p> {
             rays = rays + render_add(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
         }
         Ok((Frame::from_sum(&sum, times.len() as u32, w, h), rays))
+    }
+
+    /// The camera rays `frames` frames cast (`render::estimate::camera_rays`).
+    pub fn camera_rays(&self, frames: usize) -> u64 {
+        let subframes = self.timeline.blur.map_or(1, |b| b.samples);
+        estimate::camera_rays(
+            self.width,
+            self.height,
+            self.samples,
+            subframes,
+            frames as u64,
+        )
+    }
+
+    /// The seconds `frames` frames are predicted to take, from frame `frame` drawn at
+    /// 1/`SAMPLE_DIVISOR` of each side on the current pool.
+    pub fn predict_seconds(&self, frame: u32, frames: usize) -> Result<f64, AnimError> {
+        let k = estimate::SAMPLE_DIVISOR;
+        let small = Animation {
+            width: (self.width / k).max(1),
+            height: (self.height / k).max(1),
+            shared: self.shared.clone(),
+            ..*self
+        };
+        let start = std::time::Instant::now();
+        small.draw(frame)?;
+        let took = start.elapsed().as_secs_f64();
+        Ok(estimate::predict(
+            self.camera_rays(frames),
+            small.camera_rays(1),
+            took,
+        ))
     }
 
     /// The rows of pixels one frame draws: its height, times its motion-blur sub-frames

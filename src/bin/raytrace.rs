@@ -5,11 +5,14 @@
 
 use anyhow::Context;
 use clap::Parser;
+use indicatif::{ProgressBar, ProgressStyle};
+use std::io::IsTerminal;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use whitted::camera::{Camera, Lens};
 use whitted::exit::Outcome;
 use whitted::output::{check_target, write_atomic, ImageFormat, OutputError};
+use whitted::render::{control, estimate};
 use whitted::{render, trace::Tracer, Scene, SceneError};
 
 const AFTER_HELP: &str = "\
@@ -78,6 +81,28 @@ fn parse_roll(s: &str) -> Result<f64, String> {
     }
 }
 
+/// A bar of the image's rows on a terminal (hidden otherwise, or with `--quiet`), moved by
+/// a watcher thread from the rows-done counter until it is finished.
+fn progress(rows: u32, quiet: bool) -> ProgressBar {
+    if quiet || !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
+    }
+    let bar = ProgressBar::new(u64::from(rows));
+    let style = ProgressStyle::with_template(
+        "{elapsed_precise} [{wide_bar}] {pos}/{len} rows  {per_sec}  ETA {eta}",
+    )
+    .unwrap_or_else(|_| ProgressStyle::default_bar());
+    bar.set_style(style.progress_chars("=> "));
+    let (watch, base) = (bar.clone(), control::rows_done());
+    std::thread::spawn(move || {
+        while !watch.is_finished() {
+            watch.set_position(control::rows_done().saturating_sub(base));
+            std::thread::sleep(std::time::Duration::from_millis(200));
+        }
+    });
+    bar
+}
+
 fn run(args: Args) -> anyhow::Result<()> {
     whitted::process::exit_on_signals();
     let out = args.out.unwrap_or_else(|| args.scene.with_extension("png"));
@@ -87,7 +112,6 @@ fn run(args: Args) -> anyhow::Result<()> {
     let native = (scene.width, scene.height);
     (scene.width, scene.height) = args.size.unwrap_or(native);
     let pool = whitted::process::pool(args.threads).context("cannot start the worker threads")?;
-    let start = std::time::Instant::now();
     let lens = Lens {
         fov: args.fov,
         roll: args.roll,
@@ -96,8 +120,28 @@ fn run(args: Args) -> anyhow::Result<()> {
     let camera = Camera::framed(scene.eye, scene.look_at, native, size, &lens)
         .expect("the parser refuses an eye placed on its look-at point");
     let tracer = Tracer::new(&scene);
+    let (w, h) = size;
+    let rays = estimate::camera_rays(w, h, args.samples, 1, 1);
+    if !args.quiet && rays > estimate::ENORMOUS {
+        let k = estimate::SAMPLE_DIVISOR;
+        let small = ((w / k).max(1), (h / k).max(1));
+        let cam = Camera::framed(scene.eye, scene.look_at, native, small, &lens).expect("a camera");
+        let t = std::time::Instant::now();
+        pool.install(|| render(&tracer, &cam, small.0, small.1, args.samples));
+        let sample = estimate::camera_rays(small.0, small.1, args.samples, 1, 1);
+        let s = estimate::predict(rays, sample, t.elapsed().as_secs_f64());
+        eprintln!(
+            "raytrace: warning: {rays} camera rays ({w}×{h}, {} sample(s)/px); a short sample predicts about {} on {} thread(s) (Ctrl-C stops)",
+            args.samples * args.samples,
+            estimate::words(s),
+            pool.current_num_threads()
+        );
+    }
+    let bar = progress(h, args.quiet);
+    let start = std::time::Instant::now();
     let (frame, rays) =
         pool.install(|| render(&tracer, &camera, scene.width, scene.height, args.samples));
+    bar.finish_and_clear();
     let traced = start.elapsed().as_secs_f64();
     write_atomic(&out, &frame, format)?;
     if !args.quiet {

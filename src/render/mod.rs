@@ -12,6 +12,7 @@ use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
 
 pub mod control;
+pub mod estimate;
 
 /// An 8-bit RGB image, rows top to bottom.
 #[derive(Clone, Debug, PartialEq, Eq)]

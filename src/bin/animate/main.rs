@@ -32,6 +32,9 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
         report::announce(&anim, frames.len(), args.stdout == Some(ImageFormat::Raw));
     }
     let (stop, pool) = (whitted::process::watch_signals("animate"), pool(c.threads)?);
+    if !c.quiet {
+        pool.install(|| report::warn_if_enormous(&anim, &frames));
+    }
     let bar = report::RowBar::new(frames.len(), anim.rows_per_frame(), c.quiet || args.events);
     let reporter: &dyn Reporter = if args.events {
         &report::JsonLines

@@ -14,7 +14,7 @@ use whitted::anim::preview::{PreviewError, PreviewSummary};
 use whitted::anim::select::SelectError;
 use whitted::anim::{AnimError, Animation, Event, Reporter};
 use whitted::exit::Outcome;
-use whitted::render::control;
+use whitted::render::{control, estimate};
 
 /// The progress bar: frames done (skipped ones count as done), frames/s, ETA.
 pub struct Bar(ProgressBar);
@@ -196,6 +196,28 @@ pub fn announce(anim: &Animation, frames: usize, raw: bool) {
             ffmpeg_raw_input(anim)
         );
     }
+}
+
+/// Before a request of more than `ENORMOUS` camera rays: a warning with the count and the
+/// time a 1/8-size sample of its first frame predicts on the current pool.
+pub fn warn_if_enormous(anim: &Animation, frames: &[u32]) {
+    let rays = anim.camera_rays(frames.len());
+    let Some(&first) = frames.first() else { return };
+    if rays <= estimate::ENORMOUS {
+        return;
+    }
+    let threads = rayon::current_num_threads();
+    let when = match anim.predict_seconds(first, frames.len()) {
+        Ok(s) => format!("about {} on {threads} thread(s)", estimate::words(s)),
+        Err(_) => "a long time".into(),
+    };
+    eprintln!(
+        "animate: warning: {rays} camera rays ({} frame(s) of {}×{}, {} sample(s)/px); a short sample predicts {when} (Ctrl-C stops, --resume continues)",
+        frames.len(),
+        anim.width,
+        anim.height,
+        anim.camera_rays(1) / (u64::from(anim.width) * u64::from(anim.height)).max(1),
+    );
 }
 
 /// The one-line summary: frames, wall time, frames/s, rays/s, where they went.
