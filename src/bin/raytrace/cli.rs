@@ -1,0 +1,72 @@
+//! `raytrace`'s command line (clap): the image to write, its size, framing, samples and
+//! threads. Kept apart from `main` so that the tests can parse the command lines the
+//! documentation quotes.
+
+use clap::Parser;
+use std::path::PathBuf;
+
+const AFTER_HELP: &str = "\
+Formats, by OUT's extension: .png, .jpg/.jpeg (quality 90), .ppm (binary P6), .raw (the
+report's headerless RGB bytes, rows top to bottom). OUT defaults to the scene's path with
+.png, beside the scene file (raytrace sub/t.txt writes sub/t.png).
+Exit status: 0 success; 2 nothing was rendered (bad arguments or scene, an output path
+that cannot be used); 1 the image could not be written; 130/143 stopped by SIGINT/SIGTERM
+(no image is written). Scene.txt: docs/scene-format.md.";
+
+/// Render one Scene.txt to an image.
+#[derive(Parser, Debug)]
+#[command(name = "raytrace", version, about, after_help = AFTER_HELP)]
+pub struct Args {
+    /// The scene file.
+    #[arg(default_value = "Scene.txt")]
+    pub scene: PathBuf,
+    /// The image to write (its extension picks the format); defaults to SCENE with .png.
+    #[arg(short, long, value_name = "OUT")]
+    pub out: Option<PathBuf>,
+    /// Render at this size instead of the scene's resolution: WIDTHxHEIGHT, e.g. 160x120.
+    /// A size of the scene's shape keeps the report's 0.5 × 0.35 view; another shape keeps
+    /// the view's height and widens or narrows it with square pixels (no stretching).
+    #[arg(long, value_name = "WxH", value_parser = parse_size)]
+    pub size: Option<(u32, u32)>,
+    /// Vertical field of view in degrees (0 < DEG < 180), square pixels; default: the
+    /// report's view.
+    #[arg(long, value_name = "DEG", value_parser = parse_fov)]
+    pub fov: Option<f64>,
+    /// Roll about the viewing direction in degrees; positive banks the camera right.
+    #[arg(long, value_name = "DEG", default_value_t = 0.0, allow_negative_numbers = true, value_parser = parse_roll)]
+    pub roll: f64,
+    /// Anti-aliasing: an N×N stratified grid of samples per pixel (1 = the report's).
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=16))]
+    pub samples: u32,
+    /// Worker threads (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub threads: Option<u32>,
+    /// Print nothing on success.
+    #[arg(short, long)]
+    pub quiet: bool,
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("expected WIDTHxHEIGHT within 16384 a side and 2^26 pixels, found {s:?}");
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    let (w, h): (u32, u32) = (w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
+    whitted::limits::size_ok(w.into(), h.into())
+        .then_some((w, h))
+        .ok_or_else(bad)
+}
+
+fn parse_fov(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v > 0.0 && v < 180.0 => Ok(v),
+        _ => Err(format!(
+            "expected a vertical field of view in degrees between 0 and 180 (both excluded), found {s:?}"
+        )),
+    }
+}
+
+fn parse_roll(s: &str) -> Result<f64, String> {
+    match s.parse::<f64>() {
+        Ok(v) if v.abs() <= 360_000.0 => Ok(v),
+        _ => Err(format!("expected a roll in degrees, found {s:?}")),
+    }
+}
