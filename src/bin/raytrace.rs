@@ -44,6 +44,9 @@ fn run(args: Args) -> anyhow::Result<()> {
     whitted::process::exit_on_signals();
     let out = args.out.unwrap_or_else(|| args.scene.with_extension("png"));
     let format = ImageFormat::from_path(&out)?;
+    if args.scene.extension().is_some_and(|e| e == "toml") {
+        return Err(NotAScene(args.scene.display().to_string()).into());
+    }
     let mut scene = Scene::load(&args.scene)?;
     check_target(&out)?;
     let native = (scene.width, scene.height);
@@ -94,6 +97,14 @@ fn run(args: Args) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// A TOML file given to `raytrace`: an animation manifest, which `animate` renders.
+#[derive(Debug, thiserror::Error)]
+#[error(
+    "{0} looks like an animation manifest (TOML), not a Scene.txt: render it with `animate {0}` \
+     (or one frame: `animate {0} --frames 0`)"
+)]
+struct NotAScene(String);
+
 fn main() -> ExitCode {
     if let Err(e) = whitted::process::check_cpu() {
         eprintln!("raytrace: {e}");
@@ -108,6 +119,7 @@ fn main() -> ExitCode {
                 e.downcast_ref::<OutputError>(),
             ) {
                 (Some(_), _) => Outcome::BadInput,
+                _ if e.downcast_ref::<NotAScene>().is_some() => Outcome::BadInput,
                 (_, Some(o)) => o.outcome(),
                 _ => Outcome::Failed,
             };

@@ -26,7 +26,8 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     let c = &args.common;
     let project = c.load()?;
     let (m, anim) = (&project.manifest, Animation::new(&project)?);
-    let frames = run::frames_of(&anim, c.frames.as_deref(), args.shard()?)?;
+    let shard = args.shard()?;
+    let frames = run::frames_of(&anim, c.frames.as_deref(), shard)?;
     let destination = args.destination(m)?;
     if !c.quiet {
         report::announce(&anim, frames.len(), args.stdout == Some(ImageFormat::Raw));
@@ -56,7 +57,12 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     })?;
     bar.finish();
     if !c.quiet {
-        report::summary(&summary, start, &destination.describe());
+        let place = match shard {
+            // The shard named in the summary, so that a farm's logs say whose it is.
+            Some((k, n)) => format!("{} (shard {k}/{n})", destination.describe()),
+            None => destination.describe(),
+        };
+        report::summary(&summary, start, &place);
     }
     Ok(Outcome::Success)
 }
