@@ -52,9 +52,10 @@ mod schema;
 mod sections;
 mod tracks;
 
-pub use tracks::LookAt;
+pub use crate::anim::refusal::ManifestError;
+pub use crate::anim::timeline::LookAt;
 
-use crate::anim::timeline::{CameraPath, MotionBlur, TrackSpec};
+use crate::anim::timeline::{CameraPath, MotionBlur, Sequence, TrackSpec};
 use crate::camera::Lens;
 use crate::fileloc::FileLoc;
 use crate::limits::MAX_FRAMES;
@@ -165,53 +166,6 @@ pub struct Manifest {
     pub render: RenderSpec,
     /// `[check]`, when the manifest has one.
     pub check: Option<CheckSpec>,
-}
-
-/// Why a manifest could not be loaded.
-#[derive(Debug, thiserror::Error)]
-pub enum ManifestError {
-    /// The file cannot be opened or read.
-    #[error("{path}: cannot read the manifest: {source}")]
-    Io {
-        /// The manifest's path as given.
-        path: String,
-        /// The system's reason.
-        #[source]
-        source: std::io::Error,
-    },
-    /// The manifest is not TOML, not UTF-8, or a value has the wrong type or is out of
-    /// its bounds.
-    #[error("{loc}: {message}")]
-    Invalid {
-        /// Where the offending value (or table) is.
-        loc: FileLoc,
-        /// What is wrong and what was expected.
-        message: String,
-    },
-    /// Every unknown key or table of the manifest, in file order (at least one): one
-    /// `path:line:column: message` line each.
-    #[error("{}", lines(.0))]
-    Unknown(Vec<(FileLoc, String)>),
-}
-
-/// One `loc: message` line per entry.
-fn lines(found: &[(FileLoc, String)]) -> String {
-    let lines: Vec<String> = found
-        .iter()
-        .map(|(loc, message)| format!("{loc}: {message}"))
-        .collect();
-    lines.join("\n")
-}
-
-impl ManifestError {
-    /// The location of an `Invalid` error, or of the first unknown name.
-    pub fn loc(&self) -> Option<&FileLoc> {
-        match self {
-            ManifestError::Invalid { loc, .. } => Some(loc),
-            ManifestError::Unknown(found) => found.first().map(|(loc, _)| loc),
-            ManifestError::Io { .. } => None,
-        }
-    }
 }
 
 impl Manifest {
@@ -382,3 +336,17 @@ fn in_toml_words(message: &str) -> String {
 mod refusal_tests;
 #[cfg(test)]
 mod tests;
+
+impl<'a> From<&'a Manifest> for Sequence<'a> {
+    /// What the timeline binds to a scene: the frame count, camera, look-at, tracks and
+    /// motion blur the manifest gives.
+    fn from(m: &'a Manifest) -> Sequence<'a> {
+        Sequence {
+            frames: m.frames,
+            camera: m.camera.as_ref(),
+            look_at: m.look_at.as_ref(),
+            tracks: &m.tracks,
+            blur: m.render.motion_blur,
+        }
+    }
+}

@@ -1,6 +1,7 @@
 //! The animation pipeline of SPEC §5-§11, one home per idea:
 //!
-//! - `manifest`: the TOML manifest, read and checked, every refusal located;
+//! - `manifest`: the TOML manifest, read and checked, every refusal located (`refusal`:
+//!   the error both `manifest` and `timeline` raise, so that neither imports the other);
 //! - `timeline`: values over time — camera paths (circle, spline), tracks, easing, motion
 //!   blur — answering "what is frame t?" with a scene and a camera;
 //! - `project`: a manifest with its scene and timeline, loaded once (`Project::load`), and
@@ -10,6 +11,8 @@
 //! - checking frames: `check` (`animate check` and `bless`: idiff metrics, FLIP, one
 //!   report value and its exporters: table, JSON, JUnit, HTML);
 //! - `preview`: quick pictures for people (a GIF, a contact sheet, a plot of the paths);
+//! - `view`: `animate view`, a page that shows the animation while it is made (live
+//!   reload, picking, the folder's state);
 //! - `error`: why a run stopped, and its exit status.
 
 pub mod check;
@@ -18,7 +21,9 @@ pub mod frames;
 pub mod manifest;
 pub mod preview;
 pub mod project;
+pub mod refusal;
 pub mod timeline;
+pub mod view;
 
 pub use error::AnimError;
 pub use frames::events::{Event, Reporter};

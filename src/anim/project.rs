@@ -87,7 +87,12 @@ pub struct Animation<'p> {
     pub samples: u32,
     /// The acceleration structure every frame shares, when no track moves geometry.
     shared: Option<Arc<Accel>>,
+    /// Told of every frame drawn (a live display such as tev), if any.
+    observer: Option<FrameObserver>,
 }
+
+/// A callback told of each frame as it is drawn: its number and pixels.
+pub type FrameObserver = Arc<dyn Fn(u32, &Frame) + Send + Sync>;
 
 impl<'p> Animation<'p> {
     /// The project at the manifest's size (`[render]` overrides, else the scene's).
@@ -122,7 +127,14 @@ impl<'p> Animation<'p> {
             height,
             samples: project.manifest.render.samples.max(1),
             shared,
+            observer: None,
         })
+    }
+
+    /// This animation, telling `observer` of every frame it draws (`--display tev`).
+    pub fn observed(mut self, observer: FrameObserver) -> Animation<'p> {
+        self.observer = Some(observer);
+        self
     }
 
     /// The camera of a frame state, `None` when the eye is on the point it looks at.
@@ -169,10 +181,13 @@ impl<'p> Animation<'p> {
         let _drawing = control::frame_in_progress();
         let drawn = self.draw(frame)?;
         // A signal stopped the row loops: the frame is incomplete and must not be kept.
-        match control::cancelled() {
-            Some(sig) => Err(AnimError::Interrupted(sig)),
-            None => Ok(drawn),
+        if let Some(sig) = control::cancelled() {
+            return Err(AnimError::Interrupted(sig));
         }
+        if let Some(observe) = &self.observer {
+            observe(frame, &drawn.0);
+        }
+        Ok(drawn)
     }
 
     fn draw(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
@@ -216,6 +231,7 @@ impl<'p> Animation<'p> {
             width: (self.width / k).max(1),
             height: (self.height / k).max(1),
             shared: self.shared.clone(),
+            observer: None,
             ..*self
         };
         let start = std::time::Instant::now();

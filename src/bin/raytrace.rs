@@ -1,4 +1,4 @@
-//! `raytrace [SCENE] [-o OUT] [--size WxH] [--fov DEG] [--roll DEG] [--samples N] [--threads N]`: one image from a
+//! `raytrace [SCENE] [-o OUT] [--size WxH] [--fov DEG] [--roll DEG] [--samples N] [--threads N] [--display tev]`: one image from a
 //! Scene.txt, the report's main(). It parses the command line and calls the library;
 //! exit statuses follow `whitted::exit` (2 bad input, 1 a failed write, 130/143 stopped by
 //! SIGINT/SIGTERM).
@@ -13,11 +13,15 @@ use indicatif::{ProgressBar, ProgressStyle};
 use std::io::IsTerminal;
 use std::process::ExitCode;
 use whitted::camera::{Camera, Lens};
+use whitted::display::{Display, Tev};
 use whitted::exit::Outcome;
 use whitted::output::{check_target, write_atomic, ImageFormat, OutputError};
-use whitted::render::{control, estimate};
+use whitted::render::{control, estimate, render_observed};
 use whitted::{render, trace::Tracer, Scene, SceneError};
 
+/// Rows per band streamed to tev: a band is a few milliseconds of work at the report's
+/// sizes, so the picture fills in smoothly.
+const STREAM_BAND: u32 = 16;
 /// A bar of the image's rows on a terminal (hidden otherwise, or with `--quiet`), moved by
 /// a watcher thread from the rows-done counter until it is finished.
 fn progress(rows: u32, quiet: bool) -> ProgressBar {
@@ -79,8 +83,18 @@ fn run(args: Args) -> anyhow::Result<()> {
     }
     let bar = progress(h, args.quiet);
     let start = std::time::Instant::now();
-    let (frame, rays) =
-        pool.install(|| render(&tracer, &camera, scene.width, scene.height, args.samples));
+    let (n, w, h) = (args.samples, scene.width, scene.height);
+    let (frame, rays) = match &args.display {
+        None => pool.install(|| render(&tracer, &camera, w, h, n)),
+        Some(Display::Tev(addr)) => {
+            let tev = Tev::connect_stderr(addr, "raytrace");
+            let name = format!("raytrace: {}", out.display());
+            tev.create(&name, w, h);
+            let band = STREAM_BAND;
+            let send = |y0: u32, rows: &[u8]| tev.rows(&name, w, y0, rows);
+            pool.install(|| render_observed(&tracer, &camera, w, h, n, band, &send))
+        }
+    };
     bar.finish_and_clear();
     let traced = start.elapsed().as_secs_f64();
     write_atomic(&out, &frame, format)?;

@@ -5,6 +5,10 @@
 //! n×n stratified grid of sub-pixel centres, each sample clamped before averaging (see
 //! docs/decisions.md); n = 1 samples the pixel centre, as the report does.
 
+mod stream;
+
+pub use stream::render_observed;
+
 use crate::accel::TileView;
 use crate::camera::Camera;
 use crate::texture::Color;

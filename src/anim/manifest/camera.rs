@@ -20,8 +20,8 @@
 //! ```
 
 use super::raw::{RawCircle, RawSpline, RawStill, Vec3};
-use super::tracks::LookAt;
 use super::{CameraParts, ManifestError, Source};
+use crate::anim::timeline::LookAt;
 use crate::anim::timeline::{coord_ok, CameraPath, Circle, Key, Spline, SplineError};
 use crate::camera::Lens;
 use crate::limits::{MAX_COORD, MAX_TURNS};

@@ -18,25 +18,12 @@
 
 use super::raw::{PointOrObject, RawBlur, RawTrack, RawTrackKey};
 use super::{ManifestError, Source};
-use crate::anim::timeline::{Ease, Interpolation, Kind, Motion, MotionBlur, TrackKey, TrackSpec};
-use crate::fileloc::FileLoc;
+use crate::anim::timeline::{
+    Ease, Interpolation, Kind, LookAt, Motion, MotionBlur, TrackKey, TrackSpec,
+};
 use crate::limits::{MAX_BLUR_SAMPLES, MAX_COORD};
 use glam::DVec3;
 use toml::Spanned;
-
-/// `look_at` as the manifest gives it.
-#[derive(Clone, Debug, PartialEq)]
-pub enum LookAt {
-    /// `[x, y, z]`: a fixed point.
-    Point(DVec3),
-    /// `"sphere 2"`, resolved against the scene by the timeline.
-    Object {
-        /// The text as written, `KIND N`.
-        name: String,
-        /// Where it is written, for errors found when resolving it.
-        loc: FileLoc,
-    },
-}
 
 impl Source<'_> {
     /// A number or `[x, y, z]` of a track key (integers are numbers too).

@@ -21,7 +21,7 @@ pub use spline::{coord_ok, Key, Spline, SplineError};
 pub use target::{Field, Kind, Target};
 pub use track::{Motion, Track, TrackKey, TrackSpec};
 
-use crate::anim::manifest::{LookAt, Manifest, ManifestError};
+use crate::anim::refusal::ManifestError;
 use crate::fileloc::FileLoc;
 use crate::scene::Scene;
 use glam::DVec3;
@@ -51,6 +51,36 @@ impl MotionBlur {
         (0..self.samples.max(1))
             .map(move |k| f64::from(frame) + self.shutter * ((f64::from(k) + 0.5) / n - 0.5))
     }
+}
+
+/// What the camera looks at, as the manifest gives it (`look_at`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum LookAt {
+    /// `[x, y, z]`: a fixed point.
+    Point(DVec3),
+    /// `"sphere 2"`, resolved against the scene by the timeline.
+    Object {
+        /// The text as written, `KIND N`.
+        name: String,
+        /// Where it is written, for errors found when resolving it.
+        loc: FileLoc,
+    },
+}
+
+/// What a timeline binds to a scene, as a manifest gives it (`From<&Manifest>`): the
+/// sequence's length, the camera path and its gaze, the tracks and the motion blur.
+#[derive(Clone, Copy, Debug)]
+pub struct Sequence<'a> {
+    /// The frame count.
+    pub frames: u32,
+    /// The camera's path; `None` keeps the scene file's eye.
+    pub camera: Option<&'a CameraPath>,
+    /// An object followed or, without a path, a point looked at.
+    pub look_at: Option<&'a LookAt>,
+    /// The tracks as written.
+    pub tracks: &'a [TrackSpec],
+    /// The motion blur, if any.
+    pub blur: Option<MotionBlur>,
 }
 
 /// What the camera looks at when the path does not say.
@@ -99,10 +129,14 @@ fn invalid(loc: &FileLoc, message: String) -> ManifestError {
 }
 
 impl Timeline {
-    /// Binds the manifest's camera and tracks to `base`, and checks every value they
-    /// produce at every sampled time.
-    pub fn new(base: Scene, manifest: &Manifest) -> Result<Timeline, ManifestError> {
-        let gaze = match &manifest.look_at {
+    /// Binds the manifest's camera and tracks (`Sequence::from(&manifest)`) to `base`, and
+    /// checks every value they produce at every sampled time.
+    pub fn new<'a>(
+        base: Scene,
+        sequence: impl Into<Sequence<'a>>,
+    ) -> Result<Timeline, ManifestError> {
+        let manifest: Sequence<'a> = sequence.into();
+        let gaze = match manifest.look_at {
             None => Gaze::Path,
             Some(LookAt::Point(p)) => Gaze::Point(*p),
             Some(LookAt::Object { name, loc }) => {
@@ -128,9 +162,9 @@ impl Timeline {
         let timeline = Timeline {
             base,
             frames: manifest.frames,
-            camera: manifest.camera.clone(),
+            camera: manifest.camera.cloned(),
             tracks,
-            blur: manifest.render.motion_blur,
+            blur: manifest.blur,
             gaze,
         };
         timeline.check_values()?;

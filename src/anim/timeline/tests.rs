@@ -1,4 +1,5 @@
 use super::*;
+use crate::anim::manifest::Manifest;
 use std::path::Path;
 
 const SCENE: &str = "8 6  0 2 10  0 1 0  1 30  2 1 0 1

@@ -58,6 +58,25 @@ pub enum Command {
     /// Write quick pictures for people into a folder: a looping GIF of every frame at 1/K
     /// size, a contact sheet of every N-th frame and a plot of the camera and tracked paths.
     Preview(PreviewArgs),
+    /// Serve a page that shows the animation while you edit it: the current frame (a
+    /// quarter size first, then whole), a timeline, play and step keys, the output
+    /// folder's state, picking, and live reload of the manifest and scene. Ctrl-C stops.
+    View(ViewArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct ViewArgs {
+    /// The animation manifest (TOML).
+    pub manifest: PathBuf,
+    /// The port to listen on (0: any free port; the URL printed says which).
+    #[arg(long, default_value_t = whitted::anim::view::DEFAULT_PORT)]
+    pub port: u16,
+    /// The address to listen on; loopback unless told otherwise.
+    #[arg(long, value_name = "ADDR", default_value = "127.0.0.1")]
+    pub bind: std::net::IpAddr,
+    /// Worker threads for rendering (default: all cores).
+    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub threads: Option<u32>,
 }
 
 #[derive(Args, Debug)]
@@ -152,6 +171,10 @@ pub struct RenderArgs {
     /// instead of a progress bar.
     #[arg(long)]
     pub events: bool,
+    /// Also show each frame as it finishes in a running tev viewer: `tev` (at
+    /// 127.0.0.1:14158) or `tev=HOST:PORT`. A missing viewer is a warning.
+    #[arg(long, value_name = "tev[=HOST:PORT]")]
+    pub display: Option<whitted::display::Display>,
 }
 
 impl RenderArgs {

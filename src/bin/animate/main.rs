@@ -1,6 +1,6 @@
 //! `animate MANIFEST.toml`: renders the frames of an animation manifest into a folder,
-//! or streams them to standard output or ffmpeg; `status`, `preview`, `check` and `bless`
-//! are subcommands. This file turns the command line (`cli`) into library calls and their
+//! or streams them to standard output or ffmpeg; `status`, `preview`, `check`, `bless` and
+//! `view` are subcommands. This file turns the command line (`cli`) into library calls and their
 //! outcome into an exit status (`whitted::exit`); `report` shows progress and results.
 
 mod cli;
@@ -8,13 +8,15 @@ mod report;
 
 use anyhow::Context;
 use clap::Parser;
-use cli::{BlessArgs, CheckArgs, Cli, Command, PreviewArgs, RenderArgs, StatusArgs};
+use cli::{BlessArgs, CheckArgs, Cli, Command, PreviewArgs, RenderArgs, StatusArgs, ViewArgs};
 use std::process::ExitCode;
 use std::time::Instant;
 use whitted::anim::check::{self, CheckOptions};
 use whitted::anim::frames::run;
 use whitted::anim::frames::status::status;
+use whitted::anim::view::ViewOptions;
 use whitted::anim::{preview, AnimError, Animation, Reporter};
+use whitted::display::{Display, Tev};
 use whitted::exit::Outcome;
 use whitted::output::ImageFormat;
 
@@ -25,7 +27,11 @@ fn pool(threads: Option<u32>) -> anyhow::Result<rayon::ThreadPool> {
 fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     let c = &args.common;
     let project = c.load()?;
-    let (m, anim) = (&project.manifest, Animation::new(&project)?);
+    let (m, mut anim) = (&project.manifest, Animation::new(&project)?);
+    if let Some(Display::Tev(addr)) = &args.display {
+        let observer = tev_observer(addr, &anim);
+        anim = anim.observed(observer);
+    }
     let shard = args.shard()?;
     let frames = run::frames_of(&anim, c.frames.as_deref(), shard)?;
     let destination = args.destination(m)?;
@@ -65,6 +71,41 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
         report::summary(&summary, start, &place);
     }
     Ok(Outcome::Success)
+}
+
+/// Sends every finished frame to tev as image `animate: MANIFEST`, replaced frame after
+/// frame (a missing viewer: one warning).
+fn tev_observer(addr: &str, anim: &Animation) -> whitted::anim::project::FrameObserver {
+    let tev = Tev::connect_stderr(addr, "animate");
+    let name = format!("animate: {}", anim.manifest.path.display());
+    if tev.connected() {
+        tev.create(&name, anim.width, anim.height);
+    }
+    std::sync::Arc::new(move |_, frame| {
+        if tev.connected() {
+            tev.rows(&name, frame.width, 0, &frame.pixels);
+        }
+    })
+}
+
+fn view(args: ViewArgs) -> anyhow::Result<Outcome> {
+    let options = ViewOptions {
+        manifest: args.manifest.clone(),
+        bind: args.bind,
+        port: args.port,
+    };
+    let stop = whitted::process::watch_signals("animate");
+    let pool = pool(args.threads)?;
+    let sig = pool.install(|| {
+        whitted::anim::view::serve(&options, &stop, &|url| {
+            eprintln!(
+                "animate: view of {} at {url} (Ctrl-C to stop)",
+                args.manifest.display()
+            );
+            whitted::anim::view::print_url(url);
+        })
+    })?;
+    Ok(Outcome::Interrupted(sig))
 }
 
 fn bless(args: BlessArgs) -> anyhow::Result<Outcome> {
@@ -147,6 +188,7 @@ fn main() -> ExitCode {
         Some(Command::Check(args)) => check_command(args),
         Some(Command::Status(args)) => status_command(args),
         Some(Command::Preview(args)) => preview(args),
+        Some(Command::View(args)) => view(args),
     };
     match result {
         Ok(outcome) => ExitCode::from(outcome.code()),

@@ -249,6 +249,8 @@ pub fn outcome(e: &anyhow::Error) -> Outcome {
         e.outcome()
     } else if let Some(e) = e.downcast_ref::<PreviewError>() {
         e.outcome()
+    } else if let Some(e) = e.downcast_ref::<whitted::anim::view::ViewError>() {
+        e.outcome()
     } else {
         Outcome::Failed
     }

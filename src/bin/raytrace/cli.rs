@@ -4,6 +4,7 @@
 
 use clap::Parser;
 use std::path::PathBuf;
+use whitted::display::Display;
 
 const AFTER_HELP: &str = "\
 Formats, by OUT's extension: .png, .jpg/.jpeg (quality 90), .ppm (binary P6), .raw (the
@@ -44,6 +45,10 @@ pub struct Args {
     /// Print nothing on success.
     #[arg(short, long)]
     pub quiet: bool,
+    /// Also stream the rows to a running tev viewer as they finish: `tev` (at
+    /// 127.0.0.1:14158) or `tev=HOST:PORT`. A missing viewer is a warning.
+    #[arg(long, value_name = "tev[=HOST:PORT]")]
+    pub display: Option<Display>,
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {

@@ -1,0 +1,153 @@
+//! Frames for the page: frame n of the live project at 1/scale of its size, drawn by
+//! `Animation::render` (the very call `animate` writes its frames with, so the whole
+//! frame's pixels are the written frame's pixels) and encoded as PNG (`output::encode`,
+//! without the provenance chunks a frame file carries) or as the raw RGB bytes.
+//!
+//! - At most one render per client at a time: each client (the page's random id) has a
+//!   slot; a request takes a ticket, waits for the slot, and renders only if no newer
+//!   request of that client came meanwhile (else it answers "superseded"), so scrubbing
+//!   never queues stale work.
+//! - Recent frames are kept, up to `CACHE_BYTES`, for the current generation only:
+//!   playing a loop again, or sharpening a frame already drawn, costs nothing.
+
+use super::live::Loaded;
+use crate::anim::error::AnimError;
+use crate::anim::project::{Animation, Project};
+use crate::output::{encode, ImageFormat};
+use std::collections::{HashMap, VecDeque};
+use std::sync::atomic::{AtomicU64, Ordering};
+use std::sync::{Arc, Mutex};
+
+/// The bytes of encoded frames kept.
+pub const CACHE_BYTES: usize = 48 << 20;
+/// Clients remembered (each a few bytes); past this the idle ones are forgotten.
+pub const MAX_CLIENTS: usize = 256;
+
+/// How a frame is sent.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Encoding {
+    /// A PNG of the pixels.
+    Png,
+    /// width·height·3 bytes, RGB, rows top to bottom (`.raw`).
+    Raw,
+}
+
+/// What a frame request gives.
+pub enum Drawn {
+    /// The encoded frame, its size.
+    Frame(Arc<Vec<u8>>, u32, u32),
+    /// A newer request of the same client came first.
+    Superseded,
+}
+
+#[derive(Default)]
+struct Slot {
+    latest: AtomicU64,
+    busy: Mutex<()>,
+}
+
+type Key = (u64, u32, u32, Encoding);
+/// A cached frame: its key, bytes and size.
+type Entry = (Key, Arc<Vec<u8>>, u32, u32);
+
+/// The frame service: client slots and the cache.
+#[derive(Default)]
+pub struct Frames {
+    clients: Mutex<HashMap<String, Arc<Slot>>>,
+    cache: Mutex<VecDeque<Entry>>,
+}
+
+/// The size of a project's frames at 1/scale (at least one pixel a side).
+pub fn scaled_size(project: &Project, scale: u32) -> (u32, u32) {
+    let m = &project.manifest;
+    let w = m.render.width.unwrap_or(project.timeline.base.width);
+    let h = m.render.height.unwrap_or(project.timeline.base.height);
+    ((w / scale).max(1), (h / scale).max(1))
+}
+
+/// Draws frame `frame` of `project` at 1/scale, encoded.
+pub fn draw(
+    project: &Project,
+    frame: u32,
+    scale: u32,
+    encoding: Encoding,
+) -> Result<(Vec<u8>, u32, u32), AnimError> {
+    let (w, h) = scaled_size(project, scale);
+    let anim = if scale == 1 {
+        Animation::new(project)?
+    } else {
+        Animation::with_size(project, w, h)?
+    };
+    anim.check_cameras(&[frame])?;
+    let (image, _) = anim.render(frame)?;
+    let bytes = match encoding {
+        Encoding::Raw => image.pixels,
+        Encoding::Png => {
+            let mut out = Vec::new();
+            encode(&image, ImageFormat::Png, &mut out)
+                .map_err(|e| AnimError::Write { frame, source: e })?;
+            out
+        }
+    };
+    Ok((bytes, anim.width, anim.height))
+}
+
+impl Frames {
+    fn slot(&self, client: &str) -> Arc<Slot> {
+        let mut clients = self.clients.lock().unwrap_or_else(|e| e.into_inner());
+        if clients.len() >= MAX_CLIENTS && !clients.contains_key(client) {
+            // Forget the clients nobody is rendering for.
+            clients.retain(|_, s| Arc::strong_count(s) > 1);
+        }
+        Arc::clone(clients.entry(client.to_string()).or_default())
+    }
+
+    fn cached(&self, key: &Key) -> Option<(Arc<Vec<u8>>, u32, u32)> {
+        let cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
+        cache
+            .iter()
+            .find(|(k, ..)| k == key)
+            .map(|(_, b, w, h)| (Arc::clone(b), *w, *h))
+    }
+
+    fn keep(&self, key: Key, bytes: Arc<Vec<u8>>, w: u32, h: u32) {
+        let mut cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
+        cache.retain(|(k, ..)| k.0 == key.0);
+        cache.push_back((key, bytes, w, h));
+        let mut total: usize = cache.iter().map(|(_, b, ..)| b.len()).sum();
+        while total > CACHE_BYTES && cache.len() > 1 {
+            if let Some((_, b, ..)) = cache.pop_front() {
+                total -= b.len();
+            }
+        }
+    }
+
+    /// Frame `frame` at 1/scale for `client`, from the cache or drawn.
+    pub fn get(
+        &self,
+        loaded: &Loaded,
+        project: &Project,
+        client: &str,
+        frame: u32,
+        scale: u32,
+        encoding: Encoding,
+    ) -> Result<Drawn, AnimError> {
+        let key = (loaded.generation, frame, scale, encoding);
+        let slot = self.slot(client);
+        let ticket = slot.latest.fetch_add(1, Ordering::SeqCst) + 1;
+        if let Some((b, w, h)) = self.cached(&key) {
+            return Ok(Drawn::Frame(b, w, h));
+        }
+        let _busy = slot.busy.lock().unwrap_or_else(|e| e.into_inner());
+        if slot.latest.load(Ordering::SeqCst) != ticket {
+            return Ok(Drawn::Superseded);
+        }
+        if let Some((b, w, h)) = self.cached(&key) {
+            return Ok(Drawn::Frame(b, w, h));
+        }
+        let (bytes, w, h) = draw(project, frame, scale, encoding)?;
+        let bytes = Arc::new(bytes);
+        self.keep(key, Arc::clone(&bytes), w, h);
+        Ok(Drawn::Frame(bytes, w, h))
+    }
+}

@@ -1,0 +1,109 @@
+//! `render` with an observer: the image is drawn in bands of whole rows, the rows of a
+//! band in parallel as `render` draws them, and each finished band is handed to the
+//! observer (a tev display, say) before the next starts. Every pixel goes through the
+//! same `pixel` and `to_byte` as `render`'s, so the frame, and every band streamed, is
+//! exactly `render`'s bytes.
+//!
+//! ```text
+//! render_observed(&tracer, &camera, w, h, samples, 16, &|y0, rows| tev.rows("img", w, y0, rows))
+//! ```
+
+use super::{pixel, to_byte, Frame};
+use crate::accel::TileView;
+use crate::camera::Camera;
+use crate::trace::{RayCount, Tracer};
+use rayon::prelude::*;
+
+/// Renders as `render` does, `band` rows at a time (at least 1), calling
+/// `observe(first_row, band_pixels)` with each finished band, top to bottom.
+pub fn render_observed(
+    tracer: &Tracer,
+    camera: &Camera,
+    width: u32,
+    height: u32,
+    samples: u32,
+    band: u32,
+    observe: &dyn Fn(u32, &[u8]),
+) -> (Frame, RayCount) {
+    let row_len = width as usize * 3;
+    let mut pixels = vec![0u8; row_len * height as usize];
+    let n = samples.max(1);
+    let view = TileView::new(camera, width, height, &tracer.scene().objects);
+    let view = view.as_ref();
+    let band = band.max(1) as usize;
+    let mut count = RayCount::default();
+    if row_len == 0 {
+        return (
+            Frame {
+                width,
+                height,
+                pixels,
+            },
+            count,
+        );
+    }
+    for (b, rows) in pixels.chunks_mut(row_len * band).enumerate() {
+        let j0 = b * band;
+        count = count
+            + rows
+                .par_chunks_mut(row_len)
+                .enumerate()
+                .map(|(dj, row)| {
+                    let mut count = RayCount::default();
+                    if super::control::stop_row() {
+                        return count; // cancelled: the caller discards the frame
+                    }
+                    let j = (j0 + dj) as f64;
+                    for (i, px) in row.chunks_exact_mut(3).enumerate() {
+                        let c = pixel(tracer, view, camera, i as f64, j, n, &mut count);
+                        px.copy_from_slice(&[to_byte(c.x), to_byte(c.y), to_byte(c.z)]);
+                    }
+                    super::control::row_done();
+                    count
+                })
+                .reduce(RayCount::default, |a, b| a + b);
+        observe(j0 as u32, rows);
+    }
+    (
+        Frame {
+            width,
+            height,
+            pixels,
+        },
+        count,
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::sync::Mutex;
+
+    #[test]
+    fn the_bands_are_the_frame() {
+        let scene = crate::Scene::parse(
+            "7 5  0 0 5  0 0 0  2 9  1 1 0 1\n\
+             1 0 0 0  1 1 0 0  0.5 0.3 0 1 0 0\n\
+             0 -1 0  0 1 0  2 1 1 1 1 0 0 0 0 0 0  1 0 0 1 0 0\n\
+             0 5 5  1 1 1  1",
+            "t.txt",
+        )
+        .unwrap();
+        let tracer = Tracer::new(&scene);
+        let camera = scene.camera();
+        for (samples, band) in [(1, 2), (2, 1), (1, 100)] {
+            let (want, rays) = super::super::render(&tracer, &camera, 7, 5, samples);
+            let seen = Mutex::new(vec![0u8; 7 * 5 * 3]);
+            let starts = Mutex::new(Vec::new());
+            let (got, counted) = render_observed(&tracer, &camera, 7, 5, samples, band, &|y, p| {
+                seen.lock().unwrap()[y as usize * 21..][..p.len()].copy_from_slice(p);
+                starts.lock().unwrap().push(y);
+            });
+            assert_eq!(got, want);
+            assert_eq!(counted, rays);
+            assert_eq!(seen.into_inner().unwrap(), want.pixels);
+            let bands: Vec<u32> = (0..5).step_by(band as usize).collect();
+            assert_eq!(starts.into_inner().unwrap(), bands);
+        }
+    }
+}
