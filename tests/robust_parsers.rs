@@ -18,7 +18,7 @@ mod shipped;
 
 use proptest::prelude::*;
 use proptest::sample::Index;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::sync::mpsc;
 use std::time::Duration;
 use whitted::object::Object;
