@@ -10,6 +10,9 @@
 # 10,000 sphere scenes of benches/gen_spheres.py (the latter at 320x240 to keep the linear
 # reference build bearable); each at 1 sample/px, and orbit + edge also at 2x2 samples and
 # with one thread. Output is .raw (the report's format), so nothing but pixels is compared.
+# When BIN writes EXR (`--passes`), orbit_0 and edge are also rendered as .exr with every
+# pass (half and float, 1 and 2 threads, 2x2 samples) and compared byte for byte: the
+# layered path must be as deterministic as the default one.
 set -euo pipefail
 mode=${1:?make or check}; ref=${2:?REFDIR}; bin=${3:?BIN}
 here=$(cd "$(dirname "$0")" && pwd)
@@ -33,16 +36,17 @@ python3 "$here/gen_spheres.py" 10000 320 240 > "$work/spheres10000.txt"
 scenes+=("$work/spheres10.txt" "$work/spheres10000.txt")
 
 fail=0
+ext=raw
 run() { # name scene args...
   local name=$1 scene=$2; shift 2
-  local out="$work/$name.raw"
+  local out="$work/$name.$ext"
   "$bin" "$scene" -o "$out" -q "$@"
   if [ "$mode" = make ]; then
-    cp "$out" "$ref/$name.raw"; echo "made  $name"
-  elif cmp -s "$out" "$ref/$name.raw"; then
-    echo "same  $name"
+    cp "$out" "$ref/$name.$ext"; echo "made  $name.$ext"
+  elif cmp -s "$out" "$ref/$name.$ext"; then
+    echo "same  $name.$ext"
   else
-    echo "DIFF  $name: $(cmp -l "$out" "$ref/$name.raw" | wc -l) bytes differ"; fail=1
+    echo "DIFF  $name.$ext: $(cmp -l "$out" "$ref/$name.$ext" | wc -l) bytes differ"; fail=1
   fi
 }
 for s in "${scenes[@]}"; do
@@ -53,4 +57,16 @@ for s in "${scenes[@]}"; do
     run "${n}_t1" "$s" --threads 1;;
   esac
 done
+if [ "$mode" = check ] && [ ! -e "$ref/orbit_0_passes.exr" ]; then
+  echo "skip  EXR: the references were made by a binary without EXR"
+elif "$bin" --help | grep -q -- --passes; then
+  ext=exr
+  for s in "$work/orbit_0.txt" "$here/scenes/edge.txt"; do
+    [ -e "$s" ] || continue
+    n=$(basename "$s" .txt)
+    run "${n}_passes" "$s" --passes all
+    run "${n}_passes_t1" "$s" --passes all --threads 1 --exr-depth float
+    run "${n}_passes_s2" "$s" --passes all --samples 2 --exr-depth float
+  done
+fi
 exit $fail

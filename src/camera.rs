@@ -139,6 +139,13 @@ impl Camera {
         self.eye
     }
 
+    /// The camera's unit axes: right (D), up (H') and forward (U).
+    pub fn basis(&self) -> (DVec3, DVec3, DVec3) {
+        let right = self.step_x.normalize();
+        let up = self.step_y.normalize();
+        (right, up, up.cross(right))
+    }
+
     /// The primary ray through the image point (x, y) in pixel units: (i + 0.5, j + 0.5)
     /// is the centre of pixel (i, j).
     #[inline]

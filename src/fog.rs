@@ -35,6 +35,7 @@ impl Fog {
     }
 
     /// The colour `c` seen through the fog at distance `d`.
+    #[inline]
     pub fn apply(&self, c: Color, d: f64) -> Color {
         if let Fog::None = self {
             return c;

@@ -44,6 +44,7 @@ pub mod noise;
 pub mod object;
 pub mod optics;
 pub mod output;
+pub mod passes;
 pub mod pick;
 pub mod process;
 pub mod render;

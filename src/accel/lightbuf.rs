@@ -107,7 +107,7 @@ impl LightBuffer {
     /// looked up from it, so that the lookup need not wait for the square root and the
     /// division of the normalisation (the octahedral map ignores length, and the two
     /// directions differ by a few ulps, far inside the cells' angular margin).
-    #[inline]
+    #[inline(always)]
     pub fn transmission(
         &self,
         light: usize,

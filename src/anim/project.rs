@@ -14,7 +14,10 @@ use crate::accel::Accel;
 use crate::camera::{Camera, VIEW_HEIGHT, VIEW_WIDTH};
 use crate::limits::size_ok;
 use crate::output::ImageFormat;
-use crate::render::{control, estimate, render, render_add, Frame};
+use crate::passes::record::{finish, PixelSum};
+use crate::passes::{Layers, PassSet};
+use crate::render::layers::camera_matrices;
+use crate::render::{control, estimate, render, render_add, render_layers_add, Frame};
 use crate::scene::{Scene, SceneError};
 use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
@@ -254,6 +257,42 @@ impl<'p> Animation<'p> {
         u64::from(self.height) * subframes
     }
 
+    /// Draws frame `frame` as a frame of layers: the unclamped beauty (the mean of every
+    /// sample of every sub-frame) and `passes`, from one trace per sample. The header's
+    /// camera is the one at the frame's own time.
+    pub fn render_layers(
+        &self,
+        frame: u32,
+        passes: PassSet,
+    ) -> Result<(Layers, RayCount), AnimError> {
+        let (w, h, n) = (self.width, self.height, self.samples);
+        let times = self.timeline.times(frame);
+        let mut sums = vec![PixelSum::default(); w as usize * h as usize];
+        let mut rays = RayCount::default();
+        for &t in &times {
+            let state = self.timeline.at(t);
+            let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
+            let tracer = self.tracer(&state.scene);
+            rays = rays + render_layers_add(&tracer, &camera, w, h, n, passes, &mut sums);
+        }
+        let state = self.timeline.at(f64::from(frame));
+        let matrices = self.camera(&state).map(|c| camera_matrices(&c));
+        let count = n * n * times.len() as u32;
+        let layers = finish(&sums, count, w, h, passes, &state.scene, matrices);
+        Ok((layers, rays))
+    }
+
+    /// The 8-bit picture of frame `frame` as its files hold it: `render`, or for a layered
+    /// format (EXR) its beauty through the clamp-and-round of SPEC §2 (what a preview or a
+    /// video shows of an EXR frame).
+    pub fn render_picture(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
+        if self.format().is_layered() {
+            let (layers, rays) = self.render_layers(frame, PassSet::NONE)?;
+            return Ok((layers.to_frame(), rays));
+        }
+        self.render(frame)
+    }
+
     /// The image format of the frame files.
     pub fn format(&self) -> ImageFormat {
         self.manifest.output.format
@@ -275,7 +314,13 @@ impl<'p> Animation<'p> {
     /// How many frames may be in flight at once: `per_thread` per worker thread, but no
     /// more than fit in `FRAME_MEMORY` (at least one), whatever `--threads` says.
     pub fn window(&self, per_thread: usize) -> usize {
-        let frame_bytes = (self.width as usize * self.height as usize * 3).max(1);
+        // A layered frame keeps per-pixel sums (`PixelSum`) and float channels.
+        let per_pixel = if self.format().is_layered() {
+            std::mem::size_of::<PixelSum>() + 4 * 64
+        } else {
+            3
+        };
+        let frame_bytes = (self.width as usize * self.height as usize * per_pixel).max(1);
         // Motion blur adds a float accumulator of 24 bytes a pixel per frame in flight.
         let blur = if self.timeline.blur.is_some() { 9 } else { 1 };
         let fit = (FRAME_MEMORY / (2 * blur * frame_bytes)).max(1);

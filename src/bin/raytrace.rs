@@ -1,5 +1,6 @@
-//! `raytrace [SCENE] [-o OUT] [--size WxH] [--fov DEG] [--roll DEG] [--samples N] [--threads N] [--display tev]`: one image from a
-//! Scene.txt, the report's main(). It parses the command line and calls the library;
+//! `raytrace [SCENE] [-o OUT] [--size WxH] [--fov DEG] [--roll DEG] [--samples N] [--threads N]
+//! [--display tev] [--passes LIST] [--pass NAME] [--exr-depth half|float]`: one image from a
+//! Scene.txt, the report's main(). It parses the command line (`cli`) and calls the library;
 //! exit statuses follow `whitted::exit` (2 bad input, 1 a failed write, 130/143 stopped by
 //! SIGINT/SIGTERM).
 
@@ -15,13 +16,15 @@ use std::process::ExitCode;
 use whitted::camera::{Camera, Lens};
 use whitted::display::{Display, Tev};
 use whitted::exit::Outcome;
-use whitted::output::{check_target, write_atomic, ImageFormat, OutputError};
-use whitted::render::{control, estimate, render_observed};
+use whitted::output::{check_target, write_atomic, write_atomic_layers, ImageFormat, OutputError};
+use whitted::passes::{visible::picture, PassSet};
+use whitted::render::{control, estimate, render_layers, render_observed};
 use whitted::{render, trace::Tracer, Scene, SceneError};
 
 /// Rows per band streamed to tev: a band is a few milliseconds of work at the report's
 /// sizes, so the picture fills in smoothly.
 const STREAM_BAND: u32 = 16;
+
 /// A bar of the image's rows on a terminal (hidden otherwise, or with `--quiet`), moved by
 /// a watcher thread from the rows-done counter until it is finished.
 fn progress(rows: u32, quiet: bool) -> ProgressBar {
@@ -44,10 +47,34 @@ fn progress(rows: u32, quiet: bool) -> ProgressBar {
     bar
 }
 
+/// The format of OUT with the EXR options, refusing options its format cannot carry.
+fn out_format(args: &Args, out: &std::path::Path) -> Result<ImageFormat, OutputError> {
+    let refuse = |reason: &str| OutputError::Target {
+        path: out.to_path_buf(),
+        reason: reason.into(),
+    };
+    match ImageFormat::from_path(out)? {
+        ImageFormat::Exr(mut o) => {
+            if args.pass.is_some() {
+                return Err(refuse("--pass writes an 8-bit picture (.png, .jpg, .ppm, .raw); an .exr takes --passes"));
+            }
+            o.passes = args.passes.unwrap_or_default();
+            o.depth = args.exr_depth.unwrap_or_default();
+            Ok(ImageFormat::Exr(o))
+        }
+        _ if args.passes.is_some() => Err(refuse("--passes needs an .exr image")),
+        _ if args.exr_depth.is_some() => Err(refuse("--exr-depth needs an .exr image")),
+        other => Ok(other),
+    }
+}
+
 fn run(args: Args) -> anyhow::Result<()> {
     whitted::process::exit_on_signals();
-    let out = args.out.unwrap_or_else(|| args.scene.with_extension("png"));
-    let format = ImageFormat::from_path(&out)?;
+    let out = args
+        .out
+        .clone()
+        .unwrap_or_else(|| args.scene.with_extension("png"));
+    let format = out_format(&args, &out)?;
     if args.scene.extension().is_some_and(|e| e == "toml") {
         return Err(NotAScene(args.scene.display().to_string()).into());
     }
@@ -60,44 +87,58 @@ fn run(args: Args) -> anyhow::Result<()> {
         fov: args.fov,
         roll: args.roll,
     };
-    let size = (scene.width, scene.height);
-    let camera = Camera::framed(scene.eye, scene.look_at, native, size, &lens)
+    let (w, h, n) = (scene.width, scene.height, args.samples);
+    let camera = Camera::framed(scene.eye, scene.look_at, native, (w, h), &lens)
         .expect("the parser refuses an eye placed on its look-at point");
     let tracer = Tracer::new(&scene);
-    let (w, h) = size;
-    let rays = estimate::camera_rays(w, h, args.samples, 1, 1);
-    if !args.quiet && rays > estimate::ENORMOUS {
+    let camera_rays = estimate::camera_rays(w, h, n, 1, 1);
+    if !args.quiet && camera_rays > estimate::ENORMOUS {
         let k = estimate::SAMPLE_DIVISOR;
         let small = ((w / k).max(1), (h / k).max(1));
         let cam = Camera::framed(scene.eye, scene.look_at, native, small, &lens).expect("a camera");
         let t = std::time::Instant::now();
-        pool.install(|| render(&tracer, &cam, small.0, small.1, args.samples));
-        let sample = estimate::camera_rays(small.0, small.1, args.samples, 1, 1);
-        let s = estimate::predict(rays, sample, t.elapsed().as_secs_f64());
+        pool.install(|| render(&tracer, &cam, small.0, small.1, n));
+        let sample = estimate::camera_rays(small.0, small.1, n, 1, 1);
+        let s = estimate::predict(camera_rays, sample, t.elapsed().as_secs_f64());
         eprintln!(
-            "raytrace: warning: {rays} camera rays ({w}×{h}, {} sample(s)/px); a short sample predicts about {} on {} thread(s) (Ctrl-C stops)",
-            args.samples * args.samples,
+            "raytrace: warning: {camera_rays} camera rays ({w}×{h}, {} sample(s)/px); a short sample predicts about {} on {} thread(s) (Ctrl-C stops)",
+            n * n,
             estimate::words(s),
             pool.current_num_threads()
         );
     }
     let bar = progress(h, args.quiet);
     let start = std::time::Instant::now();
-    let (n, w, h) = (args.samples, scene.width, scene.height);
-    let (frame, rays) = match &args.display {
-        None => pool.install(|| render(&tracer, &camera, w, h, n)),
-        Some(Display::Tev(addr)) => {
-            let tev = Tev::connect_stderr(addr, "raytrace");
-            let name = format!("raytrace: {}", out.display());
-            tev.create(&name, w, h);
-            let band = STREAM_BAND;
-            let send = |y0: u32, rows: &[u8]| tev.rows(&name, w, y0, rows);
-            pool.install(|| render_observed(&tracer, &camera, w, h, n, band, &send))
-        }
+    let (frame, rays) = if format.is_layered() || args.pass.is_some() {
+        let passes = args.pass.map_or(format.passes(), |p| PassSet::of(&[p]));
+        let (layers, rays) = pool.install(|| render_layers(&tracer, &camera, w, h, n, passes));
+        let frame = match args.pass {
+            Some(p) => picture(&layers, p).context("the pass was not drawn")?,
+            None => {
+                write_atomic_layers(&out, &layers, format, &[])?;
+                layers.to_frame()
+            }
+        };
+        (Some(frame).filter(|_| args.pass.is_some()), rays)
+    } else {
+        let (frame, rays) = match &args.display {
+            None => pool.install(|| render(&tracer, &camera, w, h, n)),
+            Some(Display::Tev(addr)) => {
+                let tev = Tev::connect_stderr(addr, "raytrace");
+                let name = format!("raytrace: {}", out.display());
+                tev.create(&name, w, h);
+                let band = STREAM_BAND;
+                let send = |y0: u32, rows: &[u8]| tev.rows(&name, w, y0, rows);
+                pool.install(|| render_observed(&tracer, &camera, w, h, n, band, &send))
+            }
+        };
+        (Some(frame), rays)
     };
     bar.finish_and_clear();
     let traced = start.elapsed().as_secs_f64();
-    write_atomic(&out, &frame, format)?;
+    if let Some(frame) = &frame {
+        write_atomic(&out, frame, format)?;
+    }
     if !args.quiet {
         let (n, mrays) = (
             args.samples * args.samples,
@@ -105,7 +146,7 @@ fn run(args: Args) -> anyhow::Result<()> {
         );
         eprintln!(
             "raytrace: wrote {} ({}×{}, {n} sample(s)/px) in {traced:.3} s: {} rays, {mrays:.2} Mrays/s",
-            out.display(), frame.width, frame.height, rays.total()
+            out.display(), w, h, rays.total()
         );
     }
     Ok(())

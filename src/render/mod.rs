@@ -17,6 +17,8 @@ use rayon::prelude::*;
 
 pub mod control;
 pub mod estimate;
+pub mod layers;
+pub use layers::{render_layers, render_layers_add};
 
 /// An 8-bit RGB image, rows top to bottom.
 #[derive(Clone, Debug, PartialEq, Eq)]

@@ -130,6 +130,48 @@ pub fn compare(reference: &Frame, rendered: &Frame, tol: Tolerance) -> Compariso
     }
 }
 
+/// Compares two float beauties (EXR frames, rows top to bottom, `width` wide) on the same
+/// rules with float limits: differences are measured in levels of 1/255 without rounding
+/// or clamping (so `fail = 2` fails a channel off by more than 2/255 = 0.00784), the
+/// PSNR's peak is 1.0, and `max_diff` reports the largest difference in levels rounded up
+/// (255 at most: a difference of several whole units is off the 8-bit scale).
+pub fn compare_float(
+    reference: &[[f32; 3]],
+    rendered: &[[f32; 3]],
+    width: u32,
+    tol: Tolerance,
+) -> Comparison {
+    let (mut max, mut max_at) = (0.0f64, None);
+    let (mut failing, mut abs_sum, mut sq_sum) = (0u64, 0.0f64, 0.0f64);
+    let width = width.max(1) as usize;
+    for (i, (a, b)) in reference.iter().zip(rendered).enumerate() {
+        let mut pixel_fails = false;
+        for c in 0..3 {
+            let d = (f64::from(a[c]) - f64::from(b[c])).abs() * 255.0;
+            let d = if d.is_nan() { f64::INFINITY } else { d };
+            abs_sum += d;
+            sq_sum += d * d;
+            pixel_fails |= d > f64::from(tol.fail);
+            if d > max {
+                max = d;
+                max_at = Some(((i % width) as u32, (i / width) as u32, c));
+            }
+        }
+        failing += pixel_fails as u64;
+    }
+    let pixels = reference.len().max(1) as f64;
+    let mse = sq_sum / (pixels * 3.0);
+    Comparison {
+        // A hard failure is any difference above `hard_fail` levels, fractions included.
+        max_diff: max.ceil().min(255.0) as u8,
+        max_at,
+        failing_pixels: failing,
+        failing_percent: 100.0 * failing as f64 / pixels,
+        mean_error: abs_sum / (pixels * 3.0),
+        psnr: (mse > 0.0).then(|| 10.0 * libm::log10(255.0f64 * 255.0 / mse)),
+    }
+}
+
 /// The heat-map colour of a largest channel difference `d` (0..255), on a fixed
 /// logarithmic scale: t = log2(1 + d) / 8, so 1 level is t = 1/8, 3 levels 1/4, 15 levels
 /// 1/2, 255 levels 1; then black -> red -> yellow -> white as t goes 0 -> 1/3 -> 2/3 -> 1.
@@ -194,6 +236,25 @@ mod tests {
             height: h,
             pixels: vec![v; (w * h * 3) as usize],
         }
+    }
+
+    #[test]
+    fn float_beauties_compare_in_levels_of_1_over_255() {
+        // One channel off by 3/255 + 1e-4 (fails `fail` = 2, not `hard_fail`), one by
+        // 10 (an HDR value: off the 8-bit scale, max_diff 255), of two pixels.
+        let a = [[0.5f32, 0.5, 0.5], [2.0, 0.0, 0.0]];
+        let b = [[0.5f32 + 3.0 / 255.0 + 1e-4, 0.5, 0.5], [2.0, 0.0, 0.0]];
+        let c = compare_float(&a, &b, 2, TOL);
+        assert_eq!(
+            (c.max_diff, c.max_at, c.failing_pixels),
+            (4, Some((0, 0, 0)), 1)
+        );
+        assert_eq!(c.failing_percent, 50.0);
+        assert!(compare_float(&a, &a, 2, TOL).psnr.is_none());
+        let hdr = [[0.5f32, 0.5, 0.5], [12.0, 0.0, 0.0]];
+        let c = compare_float(&a, &hdr, 2, TOL);
+        assert_eq!((c.max_diff, c.max_at), (255, Some((1, 0, 0))));
+        assert!(!TOL.failed(&c, None).is_empty());
     }
 
     #[test]

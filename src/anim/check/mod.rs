@@ -8,7 +8,10 @@
 //! the FLIP map into a report folder; stale report images of frames that now pass are
 //! removed, so the folder shows failures only. The result is one [`CheckReport`]
 //! (`report.rs`) that the exporters of `export/` turn into a table, JSON, JUnit XML or an
-//! HTML page. References are named by the manifest's `[output] name` pattern with `.png`.
+//! HTML page. References are named by the manifest's `[output] name` pattern with `.png`;
+//! for EXR frames (`format = "exr"`) with `.exr`, holding the float beauty, which check
+//! compares as floats (`diff::compare_float`); its report images are the beauty's
+//! clamp-and-round.
 //!
 //! Options come from the manifest's `[check]` (frames, references, fail, fail_percent,
 //! hard_fail, flip), each overridden by the caller's [`Overrides`].
@@ -185,10 +188,66 @@ fn stem(anim: &Animation, frame: u32) -> String {
 
 /// Where the reference of `frame` lives.
 pub fn reference_path(anim: &Animation, refs: &Path, frame: u32) -> PathBuf {
-    refs.join(format!("{}.png", stem(anim, frame)))
+    let ext = if anim.format().is_layered() {
+        "exr"
+    } else {
+        "png"
+    };
+    refs.join(format!("{}.{ext}", stem(anim, frame)))
 }
 
-fn load_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<Frame, AnimError> {
+/// A reference: its 8-bit picture and, for an EXR frame, its float beauty.
+type Reference = (Frame, Option<Vec<[f32; 3]>>);
+
+/// A frame as check compares it: the picture, and the float beauty of an EXR frame.
+fn draw(anim: &Animation, frame: u32) -> Result<Reference, AnimError> {
+    if !anim.format().is_layered() {
+        return Ok((anim.render(frame)?.0, None));
+    }
+    let (layers, _) = anim.render_layers(frame, crate::passes::PassSet::NONE)?;
+    let floats = layers
+        .beauty
+        .iter()
+        .map(|c| [c.x as f32, c.y as f32, c.z as f32])
+        .collect();
+    Ok((layers.to_frame(), Some(floats)))
+}
+
+fn load_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<Reference, AnimError> {
+    if anim.format().is_layered() {
+        let path = reference_path(anim, refs, frame);
+        if !path.exists() {
+            return Err(AnimError::Reference(format!(
+                "frame {frame}: the reference {} is missing (run `animate bless` first)",
+                path.display()
+            )));
+        }
+        let (w, h, beauty) = crate::output::exr::read_beauty(&path).map_err(|e| {
+            AnimError::Reference(format!("{}: cannot read it: {e}", path.display()))
+        })?;
+        if (w, h) != (anim.width, anim.height) {
+            return Err(AnimError::Reference(format!(
+                "frame {frame}: the reference {} is {w}×{h}, the frame is {}×{}",
+                path.display(),
+                anim.width,
+                anim.height
+            )));
+        }
+        let bytes = beauty
+            .iter()
+            .flat_map(|c| c.map(|v| crate::render::to_byte(f64::from(v))))
+            .collect();
+        let picture = Frame {
+            width: w,
+            height: h,
+            pixels: bytes,
+        };
+        return Ok((picture, Some(beauty)));
+    }
+    load_picture(anim, refs, frame).map(|f| (f, None))
+}
+
+fn load_picture(anim: &Animation, refs: &Path, frame: u32) -> Result<Frame, AnimError> {
     let path = reference_path(anim, refs, frame);
     if !path.exists() {
         return Err(AnimError::Reference(format!(
@@ -229,10 +288,20 @@ pub fn bless(anim: &Animation, frames: &[u32], refs: &Path) -> Result<Vec<PathBu
     frames
         .par_iter()
         .map(|&frame| {
-            let (image, _) = anim.render(frame)?;
             let path = reference_path(anim, refs, frame);
-            write_atomic(&path, &image, ImageFormat::Png)
-                .map_err(|source| AnimError::Write { frame, source })?;
+            let written = if anim.format().is_layered() {
+                // The float beauty, losslessly: EXR float, ZIP.
+                let (layers, _) = anim.render_layers(frame, crate::passes::PassSet::NONE)?;
+                let exr = ImageFormat::Exr(crate::output::ExrOptions {
+                    depth: crate::output::ExrDepth::Float,
+                    ..Default::default()
+                });
+                crate::output::write_atomic_layers(&path, &layers, exr, &[])
+            } else {
+                let (image, _) = anim.render(frame)?;
+                write_atomic(&path, &image, ImageFormat::Png)
+            };
+            written.map_err(|source| AnimError::Write { frame, source })?;
             Ok(path)
         })
         .collect()
@@ -246,7 +315,7 @@ pub fn check(anim: &Animation, opts: &CheckOptions) -> Result<CheckReport, AnimE
         .frames
         .iter()
         .map(|&f| load_reference(anim, refs, f))
-        .collect::<Result<Vec<Frame>, AnimError>>()?;
+        .collect::<Result<Vec<Reference>, AnimError>>()?;
     let frames = opts
         .frames
         .par_iter()
@@ -269,12 +338,15 @@ fn check_frame(
     anim: &Animation,
     opts: &CheckOptions,
     frame: u32,
-    reference: &Frame,
+    (reference, ref_floats): &Reference,
 ) -> Result<FrameReport, AnimError> {
     let start = Instant::now();
-    let (image, _) = anim.render(frame)?;
+    let (image, floats) = draw(anim, frame)?;
     let tol = opts.tolerance;
-    let comparison = compare(reference, &image, tol);
+    let comparison = match (ref_floats, &floats) {
+        (Some(a), Some(b)) => diff::compare_float(a, b, anim.width, tol),
+        _ => compare(reference, &image, tol),
+    };
     let flip = tol.flip.map(|_| flip::flip(reference, &image));
     let failed = tol.failed(&comparison, flip.as_ref().map(|f| f.mean));
     let name = stem(anim, frame);

@@ -18,7 +18,7 @@ use super::provenance::{self, raw_record_path};
 use super::status::{self, FrameState};
 use crate::anim::error::AnimError;
 use crate::anim::project::Animation;
-use crate::output::{encode, temp_beside, write_atomic_with, ImageFormat};
+use crate::output::{encode, temp_beside, write_atomic_layers, write_atomic_with, ImageFormat};
 use crate::trace::RayCount;
 use rayon::prelude::*;
 use std::io::Write;
@@ -50,12 +50,21 @@ fn stopped(stop: &AtomicUsize) -> Option<i32> {
 
 /// Renders frame `frame` and writes it with its provenance under its final name.
 fn write_frame(anim: &Animation, dir: &Path, frame: u32) -> Result<RayCount, AnimError> {
-    let (image, rays) = anim.render(frame)?;
     let path = anim.frame_path(dir, frame);
     let digest = provenance::digest(anim, frame);
     let stamp = provenance::stamp(anim, frame, digest);
     let write = |source| AnimError::Write { frame, source };
-    write_atomic_with(&path, &image, anim.format(), &stamp).map_err(write)?;
+    let format = anim.format();
+    let rays = if format.is_layered() {
+        // EXR: the beauty unclamped and the passes, provenance in the header.
+        let (layers, rays) = anim.render_layers(frame, format.passes())?;
+        write_atomic_layers(&path, &layers, format, &stamp).map_err(write)?;
+        rays
+    } else {
+        let (image, rays) = anim.render(frame)?;
+        write_atomic_with(&path, &image, format, &stamp).map_err(write)?;
+        rays
+    };
     if anim.format() == ImageFormat::Raw {
         write_raw_record(&path, &stamp).map_err(|source| AnimError::Write {
             frame,
@@ -190,7 +199,7 @@ pub(crate) fn render_to_stream(
             .par_iter()
             .map(|&frame| {
                 let start = Instant::now();
-                let (image, rays) = anim.render(frame)?;
+                let (image, rays) = anim.render_picture(frame)?;
                 let mut bytes = Vec::with_capacity(image.pixels.len() + 32);
                 encode(&image, format, &mut bytes)
                     .map_err(|source| AnimError::Write { frame, source })?;

@@ -181,6 +181,7 @@ pub fn complete(frame_path: &Path, format: ImageFormat, width: u32, height: u32)
             bytes.ends_with(&[0, 0, 0, 0, b'I', b'E', b'N', b'D', 0xAE, 0x42, 0x60, 0x82])
         }
         ImageFormat::Jpeg { .. } => bytes.ends_with(&[0xFF, 0xD9]),
+        ImageFormat::Exr(_) => crate::output::exr::complete(frame_path, width, height),
         ImageFormat::Raw => bytes.len() == pixels,
         ImageFormat::Ppm => {
             bytes.len() >= pixels && {
@@ -208,17 +209,9 @@ pub(crate) fn recorded_digest(frame_path: &Path, format: ImageFormat) -> Option<
             .find_map(|l| l.strip_prefix(prefix).map(|d| d.trim().to_string()))
     };
     match format {
-        ImageFormat::Png => {
-            let file = std::fs::File::open(frame_path).ok()?;
-            let decoder = png::Decoder::new(std::io::BufReader::new(file));
-            let reader = decoder.read_info().ok()?;
-            let info = reader.info();
-            let chunk = info
-                .uncompressed_latin1_text
-                .iter()
-                .find(|c| c.keyword == DIGEST_KEY)?;
-            Some(chunk.text.clone())
-        }
+        // tEXt, or iTXt when a name in the stamp is not Latin-1.
+        ImageFormat::Png => crate::output::png::read_text(frame_path, DIGEST_KEY),
+        ImageFormat::Exr(_) => crate::output::exr::read_text(frame_path, DIGEST_KEY),
         ImageFormat::Jpeg { .. } => {
             let bytes = head(70_000)?;
             if bytes.len() < 6 || bytes[..4] != [0xFF, 0xD8, 0xFF, 0xFE] {

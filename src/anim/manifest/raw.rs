@@ -134,6 +134,9 @@ pub(super) struct RawOutput {
     pub name: Option<Spanned<String>>,
     pub format: Option<Spanned<String>>,
     pub jpeg_quality: Option<Spanned<i64>>,
+    pub exr_depth: Option<Spanned<String>>,
+    pub exr_compression: Option<Spanned<String>>,
+    pub passes: Option<Spanned<Vec<Spanned<String>>>>,
 }
 
 #[derive(Deserialize)]

@@ -90,7 +90,7 @@ fn wrong_types_are_located() {
     assert!(refusal(&src).starts_with("10:36: camera.keys[1].position[1]: invalid type: boolean"));
     assert_eq!(
         refusal(&with("[output]\nformat = \"gif\"")),
-        "4:10: unknown format `gif`, expected one of png, jpeg, jpg, ppm, raw"
+        "4:10: unknown format `gif`, expected one of png, jpeg, jpg, ppm, raw, exr"
     );
 }
 

@@ -137,6 +137,9 @@ const OUTPUT: Place = Place {
         ("name", Value),
         ("format", Value),
         ("jpeg_quality", Value),
+        ("exr_depth", Value),
+        ("exr_compression", Value),
+        ("passes", Value),
     ]],
 };
 
@@ -323,7 +326,7 @@ mod tests {
         assert_eq!(
             found[2].1,
             "output: unknown key `fromat` (did you mean `format`?); [output] takes `dir`, \
-             `name`, `format`, `jpeg_quality`"
+             `name`, `format`, `jpeg_quality`, `exr_depth`, `exr_compression`, `passes`"
         );
     }
 

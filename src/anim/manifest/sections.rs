@@ -6,6 +6,9 @@
 //! name = "frame_####"       # default "frame_####"; a file name: no / or \, not empty
 //! format = "png"            # png | jpeg | ppm | raw; default png
 //! jpeg_quality = 90         # 1..=100; default 90
+//! exr_depth = "half"        # exr only: half | float; default half
+//! exr_compression = "zip"   # exr only: none | rle | zips | zip | piz; default zip
+//! passes = ["depth", "normal", "crypto_object"]   # exr only; default none (crate::passes)
 //!
 //! [render]
 //! width = 1280              # 1..=16384 each, width·height <= 2^26 when both are given
@@ -24,7 +27,8 @@
 use super::raw::{RawCheck, RawOutput, RawRender};
 use super::{CheckSpec, ManifestError, OutputSpec, RenderSpec, Source};
 use crate::limits::{MAX_PIXELS, MAX_SAMPLES, MAX_SIDE};
-use crate::output::ImageFormat;
+use crate::output::{ExrCompression, ExrDepth, ExrOptions, ImageFormat};
+use crate::passes::{Pass, PassSet};
 use std::collections::HashSet;
 use std::path::Path;
 use toml::Spanned;
@@ -36,12 +40,15 @@ impl Source<'_> {
             name: None,
             format: None,
             jpeg_quality: None,
+            exr_depth: None,
+            exr_compression: None,
+            passes: None,
         });
         let dir = match &raw.dir {
             Some(dir) => self.resolve(dir, "dir")?,
             None => default_dir(self.path),
         };
-        let name = match raw.name {
+        let name = match raw.name.clone() {
             Some(name) => self.file_name_pattern(name)?,
             None => "frame_####".to_string(),
         };
@@ -66,7 +73,68 @@ impl Source<'_> {
             }
             (None, _) => format,
         };
+        let format = self.exr_options(&raw, format)?;
         Ok(OutputSpec { dir, name, format })
+    }
+
+    /// `exr_depth`, `exr_compression` and `passes`: checked whatever the format (so a typo
+    /// is caught before the format changes), refused with a reason when the format is not
+    /// EXR (no other format can carry them).
+    fn exr_options(
+        &self,
+        raw: &RawOutput,
+        format: ImageFormat,
+    ) -> Result<ImageFormat, ManifestError> {
+        let mut options = ExrOptions::default();
+        let named = |v: &Spanned<String>, what: &str, names: &[&str]| {
+            self.error(
+                v.span(),
+                format!(
+                    "unknown {what} `{}`, expected one of {}",
+                    v.get_ref(),
+                    names.join(", ")
+                ),
+            )
+        };
+        if let Some(v) = &raw.exr_depth {
+            options.depth = ExrDepth::from_name(v.get_ref())
+                .ok_or_else(|| named(v, "exr_depth", &ExrDepth::NAMES))?;
+        }
+        if let Some(v) = &raw.exr_compression {
+            options.compression = ExrCompression::from_name(v.get_ref())
+                .ok_or_else(|| named(v, "exr_compression", &ExrCompression::NAMES))?;
+        }
+        if let Some(list) = &raw.passes {
+            let all: Vec<&str> = Pass::ALL.iter().map(|p| p.name()).collect();
+            let mut passes = Vec::new();
+            for v in list.get_ref() {
+                let pass = Pass::from_name(v.get_ref()).ok_or_else(|| named(v, "pass", &all))?;
+                if passes.contains(&pass) {
+                    return Err(self.error(v.span(), format!("pass `{pass}` is listed twice")));
+                }
+                passes.push(pass);
+            }
+            options.passes = PassSet::of(&passes);
+        }
+        match format {
+            ImageFormat::Exr(_) => Ok(ImageFormat::Exr(options)),
+            _ => {
+                let given = [
+                    raw.exr_depth.as_ref().map(|v| ("exr_depth", v.span())),
+                    raw.exr_compression
+                        .as_ref()
+                        .map(|v| ("exr_compression", v.span())),
+                    raw.passes.as_ref().map(|v| ("passes", v.span())),
+                ];
+                match given.into_iter().flatten().next() {
+                    Some((key, span)) => Err(self.error(
+                        span,
+                        format!("`{key}` needs `format = \"exr\"` (only EXR frames carry it)"),
+                    )),
+                    None => Ok(format),
+                }
+            }
+        }
     }
 
     /// A file name pattern; ffmpeg's `%04d` (or `%d`) is taken for Blender's `####`.

@@ -104,7 +104,7 @@ impl Source {
 
 /// Draws frame `frame` of the preview-sized animation.
 pub fn draw(anim: &Animation, frame: u32) -> Result<Frame, AnimError> {
-    anim.render(frame).map(|(image, _)| image)
+    anim.render_picture(frame).map(|(image, _)| image)
 }
 
 /// `frames` frame numbers when there are at most `max`, otherwise `max` of them spread

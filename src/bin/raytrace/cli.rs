@@ -5,11 +5,17 @@
 use clap::Parser;
 use std::path::PathBuf;
 use whitted::display::Display;
+use whitted::output::ExrDepth;
+use whitted::passes::{Pass, PassSet};
 
 const AFTER_HELP: &str = "\
 Formats, by OUT's extension: .png, .jpg/.jpeg (quality 90), .ppm (binary P6), .raw (the
-report's headerless RGB bytes, rows top to bottom). OUT defaults to the scene's path with
-.png, beside the scene file (raytrace sub/t.txt writes sub/t.png).
+report's headerless RGB bytes, rows top to bottom), .exr (OpenEXR: the beauty unclamped,
+half unless --exr-depth float, and the --passes asked for; docs/exr.md). OUT defaults to
+the scene's path with .png, beside the scene file (raytrace sub/t.txt writes sub/t.png).
+--pass NAME writes one pass as the picture: depth as near/z (the nearest point white, twice
+as far half grey, no hit black); normals as (N+1)/2 in RGB; positions as 0.5+0.5·x/(1+|x|)
+per axis; colours clamped and rounded; Cryptomatte ids as flat colours.
 Exit status: 0 success; 2 nothing was rendered (bad arguments or scene, an output path
 that cannot be used); 1 the image could not be written; 130/143 stopped by SIGINT/SIGTERM
 (no image is written). Scene.txt: docs/scene-format.md.";
@@ -42,6 +48,17 @@ pub struct Args {
     /// Worker threads (default: all cores).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     pub threads: Option<u32>,
+    /// Passes to store beside the beauty in an .exr: comma-separated names (depth,
+    /// position, normal, albedo, ambient, diffuse, specular, reflection, transmission,
+    /// fog, crypto_object, crypto_material) or `all`.
+    #[arg(long, value_name = "LIST", value_parser = parse_passes)]
+    pub passes: Option<PassSet>,
+    /// Write this pass as the picture instead of the beauty (an 8-bit OUT: .png, …).
+    #[arg(long, value_name = "NAME", value_parser = parse_pass)]
+    pub pass: Option<Pass>,
+    /// The sample type of an .exr beauty.
+    #[arg(long, value_name = "DEPTH", value_parser = parse_depth)]
+    pub exr_depth: Option<ExrDepth>,
     /// Print nothing on success.
     #[arg(short, long)]
     pub quiet: bool,
@@ -74,4 +91,25 @@ fn parse_roll(s: &str) -> Result<f64, String> {
         Ok(v) if v.abs() <= 360_000.0 => Ok(v),
         _ => Err(format!("expected a roll in degrees, found {s:?}")),
     }
+}
+
+fn pass_names() -> String {
+    Pass::ALL.map(|p| p.name()).join(", ")
+}
+
+fn parse_pass(s: &str) -> Result<Pass, String> {
+    Pass::from_name(s)
+        .ok_or_else(|| format!("unknown pass {s:?}, expected one of {}", pass_names()))
+}
+
+fn parse_passes(s: &str) -> Result<PassSet, String> {
+    if s == "all" {
+        return Ok(PassSet::of(&Pass::ALL));
+    }
+    let list: Result<Vec<Pass>, String> = s.split(',').map(|p| parse_pass(p.trim())).collect();
+    Ok(PassSet::of(&list?))
+}
+
+fn parse_depth(s: &str) -> Result<ExrDepth, String> {
+    ExrDepth::from_name(s).ok_or_else(|| format!("expected half or float, found {s:?}"))
 }

@@ -1,0 +1,366 @@
+//! Image files (SPEC §3, §12), chosen by extension, one file per format behind one
+//! interface (`encode_layers`: a frame of layers in, each format takes what it can carry):
+//!
+//! | format | module | pixels | metadata |
+//! |---|---|---|---|
+//! | `.raw` | `raw` | 8-bit RGB, no header (the report's) | none (a record beside it) |
+//! | `.ppm` | `ppm` | binary P6, maxval 255 | `# key: text` header comments |
+//! | `.png` | `png` | 8-bit RGB, fast deflate | `tEXt` / `iTXt` chunks |
+//! | `.jpg`/`.jpeg` | `jpeg` | baseline JPEG, quality 90 unless set | one COM comment |
+//! | `.exr` | `exr` | half/float beauty unclamped, float passes | string attributes |
+//!
+//! The 8-bit formats take the beauty through the clamp-and-round of §2 (`Layers::to_frame`,
+//! which `render` does directly for the default path) and drop the passes.
+//!
+//! `write_atomic` writes to a temporary file in the destination folder and renames it into
+//! place, so a file under its final name is always complete.
+
+pub mod exr;
+mod jpeg;
+pub(crate) mod png;
+mod ppm;
+mod raw;
+
+use crate::passes::{Layers, PassSet};
+use crate::render::Frame;
+use std::io::{BufWriter, Write};
+use std::path::{Path, PathBuf};
+
+/// JPEG quality when none is given.
+pub const DEFAULT_JPEG_QUALITY: u8 = 90;
+
+/// An output image format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ImageFormat {
+    /// The report's `.raw`: width·height·3 RGB bytes, rows top to bottom, no header.
+    Raw,
+    /// `.png`: 8-bit RGB, lossless.
+    Png,
+    /// `.jpg`/`.jpeg`: baseline JPEG.
+    Jpeg {
+        /// Encoder quality, 1 (smallest) to 100 (best); `DEFAULT_JPEG_QUALITY` unless set.
+        quality: u8,
+    },
+    /// `.ppm`: binary P6, maxval 255.
+    Ppm,
+    /// `.exr`: OpenEXR, the beauty unclamped and the passes asked for.
+    Exr(ExrOptions),
+}
+
+/// How an EXR frame is written (`[output] exr_depth`, `exr_compression`, `passes`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct ExrOptions {
+    /// The beauty's sample type.
+    pub depth: ExrDepth,
+    /// The compression of every block.
+    pub compression: ExrCompression,
+    /// The passes beside the beauty.
+    pub passes: PassSet,
+}
+
+/// The beauty's sample type in an EXR frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ExrDepth {
+    /// 16-bit half (the default, as Blender's "Half").
+    #[default]
+    Half,
+    /// 32-bit float.
+    Float,
+}
+
+impl ExrDepth {
+    /// The names a manifest accepts.
+    pub const NAMES: [&'static str; 2] = ["half", "float"];
+
+    /// The depth a name gives.
+    pub fn from_name(name: &str) -> Option<ExrDepth> {
+        match name {
+            "half" => Some(ExrDepth::Half),
+            "float" => Some(ExrDepth::Float),
+            _ => None,
+        }
+    }
+}
+
+/// The compression of an EXR frame's blocks.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ExrCompression {
+    /// None.
+    None,
+    /// Run-length.
+    Rle,
+    /// Deflate, one line a block.
+    Zips,
+    /// Deflate, 16 lines a block (the default).
+    #[default]
+    Zip,
+    /// Wavelet (PIZ), lossless.
+    Piz,
+}
+
+impl ExrCompression {
+    /// The names a manifest accepts.
+    pub const NAMES: [&'static str; 5] = ["none", "rle", "zips", "zip", "piz"];
+
+    /// The compression a name gives.
+    pub fn from_name(name: &str) -> Option<ExrCompression> {
+        match name {
+            "none" => Some(ExrCompression::None),
+            "rle" => Some(ExrCompression::Rle),
+            "zips" => Some(ExrCompression::Zips),
+            "zip" => Some(ExrCompression::Zip),
+            "piz" => Some(ExrCompression::Piz),
+            _ => None,
+        }
+    }
+}
+
+/// Why an image could not be written.
+#[derive(Debug, thiserror::Error)]
+pub enum OutputError {
+    /// The path's extension names no format this module writes (bad input).
+    #[error("{path}: unknown image extension (use .png, .jpg, .jpeg, .ppm, .raw or .exr)")]
+    UnknownExtension {
+        /// The image path as given.
+        path: PathBuf,
+    },
+    /// The path cannot take an image: its folder is missing, or it is a folder (bad
+    /// input, found before rendering).
+    #[error("cannot write {path}: {reason}")]
+    Target {
+        /// The image path as given.
+        path: PathBuf,
+        /// Why, e.g. "the folder out does not exist".
+        reason: String,
+    },
+    /// Creating, writing or renaming the file failed while writing (a failed run).
+    #[error("{path}: {source}")]
+    Io {
+        /// The file's final name (never the hidden temporary one).
+        path: PathBuf,
+        /// The system's reason.
+        #[source]
+        source: std::io::Error,
+    },
+    /// The encoder refused the image.
+    #[error("cannot encode the image: {0}")]
+    Encode(#[from] image::ImageError),
+    /// Writing to a stream (standard output, a pipe) failed.
+    #[error("cannot write the image: {0}")]
+    Stream(#[from] std::io::Error),
+}
+
+impl OutputError {
+    /// The row of the exit-status table: a target that cannot be used is bad input,
+    /// found before anything renders; a failure while writing is a failed run.
+    pub fn outcome(&self) -> crate::exit::Outcome {
+        match self {
+            OutputError::UnknownExtension { .. } | OutputError::Target { .. } => {
+                crate::exit::Outcome::BadInput
+            }
+            _ => crate::exit::Outcome::Failed,
+        }
+    }
+}
+
+/// Refuses, before anything renders, an image path whose folder does not exist or that
+/// is itself a folder.
+pub fn check_target(path: &Path) -> Result<(), OutputError> {
+    let refuse = |reason: String| {
+        Err(OutputError::Target {
+            path: path.to_path_buf(),
+            reason,
+        })
+    };
+    let folder = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    if !folder.is_dir() {
+        return refuse(format!("the folder {} does not exist", folder.display()));
+    }
+    if path.is_dir() {
+        return refuse("it is a folder".into());
+    }
+    Ok(())
+}
+
+impl ImageFormat {
+    /// The format named by a path's extension (case-insensitive).
+    pub fn from_path(path: &Path) -> Result<ImageFormat, OutputError> {
+        path.extension()
+            .and_then(|e| e.to_str())
+            .and_then(ImageFormat::from_name)
+            .ok_or_else(|| OutputError::UnknownExtension {
+                path: path.to_path_buf(),
+            })
+    }
+
+    /// The names a manifest or `--stdout` accepts, in the order messages list them.
+    pub const NAMES: [&'static str; 6] = ["png", "jpeg", "jpg", "ppm", "raw", "exr"];
+
+    /// The format a name gives (`png`, `jpeg` or `jpg`, `ppm`, `raw`, `exr`; JPEG at the
+    /// default quality, EXR half with ZIP and no pass), case-insensitively.
+    pub fn from_name(name: &str) -> Option<ImageFormat> {
+        match name.to_ascii_lowercase().as_str() {
+            "png" => Some(ImageFormat::Png),
+            "jpg" | "jpeg" => Some(ImageFormat::Jpeg {
+                quality: DEFAULT_JPEG_QUALITY,
+            }),
+            "ppm" => Some(ImageFormat::Ppm),
+            "raw" => Some(ImageFormat::Raw),
+            "exr" => Some(ImageFormat::Exr(ExrOptions::default())),
+            _ => None,
+        }
+    }
+
+    /// The usual file extension.
+    pub fn extension(&self) -> &'static str {
+        match self {
+            ImageFormat::Raw => "raw",
+            ImageFormat::Png => "png",
+            ImageFormat::Jpeg { .. } => "jpg",
+            ImageFormat::Ppm => "ppm",
+            ImageFormat::Exr(_) => "exr",
+        }
+    }
+
+    /// The passes this format is asked to carry (none but for EXR).
+    pub fn passes(&self) -> PassSet {
+        match self {
+            ImageFormat::Exr(o) => o.passes,
+            _ => PassSet::NONE,
+        }
+    }
+
+    /// Whether frames in this format are drawn as layers (unclamped floats) rather than
+    /// 8-bit pictures.
+    pub fn is_layered(&self) -> bool {
+        matches!(self, ImageFormat::Exr(_))
+    }
+}
+
+/// Encodes `frame` in `format` into `out`.
+pub fn encode(frame: &Frame, format: ImageFormat, out: &mut dyn Write) -> Result<(), OutputError> {
+    encode_with(frame, format, &[], out)
+}
+
+/// Encodes the 8-bit `frame` with text metadata, `(keyword, text)` pairs (keywords of 1 to
+/// 79 ASCII characters, no line breaks in either), each format as its module says. An EXR
+/// target gets the frame's bytes as its beauty (values k/255), without passes.
+pub fn encode_with(
+    frame: &Frame,
+    format: ImageFormat,
+    meta: &[(String, String)],
+    out: &mut dyn Write,
+) -> Result<(), OutputError> {
+    match format {
+        ImageFormat::Raw => raw::encode(frame, out),
+        ImageFormat::Ppm => ppm::encode(frame, meta, out),
+        ImageFormat::Png => png::encode(frame, meta, out),
+        ImageFormat::Jpeg { quality } => jpeg::encode(frame, quality, meta, out),
+        ImageFormat::Exr(options) => {
+            let layers = Layers {
+                width: frame.width,
+                height: frame.height,
+                beauty: frame
+                    .pixels
+                    .chunks_exact(3)
+                    .map(|p| {
+                        crate::texture::Color::new(p[0].into(), p[1].into(), p[2].into()) / 255.0
+                    })
+                    .collect(),
+                channels: Vec::new(),
+                crypto: Vec::new(),
+                camera: None,
+            };
+            exr::encode(&layers, options, meta, out)
+        }
+    }
+}
+
+/// Encodes a frame of layers: EXR keeps them all, the other formats take the beauty's
+/// clamp-and-round.
+pub fn encode_layers(
+    layers: &Layers,
+    format: ImageFormat,
+    meta: &[(String, String)],
+    out: &mut dyn Write,
+) -> Result<(), OutputError> {
+    match format {
+        ImageFormat::Exr(options) => exr::encode(layers, options, meta, out),
+        other => encode_with(&layers.to_frame(), other, meta, out),
+    }
+}
+
+/// A hidden temporary file (`.NAME.XXXXXX.tmp`) in `path`'s folder, to be renamed onto
+/// `path` once complete. It gets the permissions of an ordinary new file (0666 less the
+/// umask), not tempfile's private 0600, so renamed frames are readable as usual.
+pub fn temp_beside(path: &Path) -> std::io::Result<tempfile::NamedTempFile> {
+    let dir = match path.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d,
+        _ => Path::new("."),
+    };
+    let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("image");
+    let prefix = format!(".{name}.");
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(&prefix).suffix(".tmp");
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        builder.permissions(std::fs::Permissions::from_mode(0o666));
+    }
+    builder.tempfile_in(dir)
+}
+
+/// Writes `frame` to `path` atomically: a temporary file beside it, then a rename. On any
+/// error the temporary file is removed and nothing appears under `path`.
+pub fn write_atomic(path: &Path, frame: &Frame, format: ImageFormat) -> Result<(), OutputError> {
+    write_atomic_with(path, frame, format, &[])
+}
+
+/// `write_atomic` with text metadata (see `encode_with`).
+pub fn write_atomic_with(
+    path: &Path,
+    frame: &Frame,
+    format: ImageFormat,
+    meta: &[(String, String)],
+) -> Result<(), OutputError> {
+    write_atomic_by(path, |w| encode_with(frame, format, meta, w))
+}
+
+/// Writes a frame of layers to `path` atomically (see `encode_layers`).
+pub fn write_atomic_layers(
+    path: &Path,
+    layers: &Layers,
+    format: ImageFormat,
+    meta: &[(String, String)],
+) -> Result<(), OutputError> {
+    write_atomic_by(path, |w| encode_layers(layers, format, meta, w))
+}
+
+fn write_atomic_by(
+    path: &Path,
+    encode: impl FnOnce(&mut dyn Write) -> Result<(), OutputError>,
+) -> Result<(), OutputError> {
+    let io = |source| OutputError::Io {
+        path: path.to_path_buf(),
+        source,
+    };
+    // tempfile names its hidden file in its errors; the user knows only `path`.
+    let tmp = temp_beside(path).map_err(|e| io(std::io::Error::from(e.kind())))?;
+    {
+        let mut w = BufWriter::new(tmp.as_file());
+        encode(&mut w)?;
+        w.flush().map_err(io)?;
+    }
+    tmp.persist(path)
+        .map_err(|e| io(std::io::Error::from(e.error.kind())))?;
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,202 @@
+//! Recording passes: `Sample` hears one camera ray (`trace::Record`), `PixelSum` adds the
+//! samples of a pixel (over its n×n grid and every motion-blur sub-frame), and `finish`
+//! turns the sums of a frame into its `Layers`.
+//!
+//! The light split: the tracer's colour at a hit is ambient + Σ lights (diffuse +
+//! specular, each times the light's shadow transmission) + reflection + transmission, and
+//! fog makes the beauty `colour·(1 − f) + white·f`. Each of the five terms is stored times
+//! (1 − f) and the `fog` layer is `f·white`, so the six layers sum to the beauty (to
+//! rounding, 1e-5 relative being the contract). A ray that hits nothing has only fog.
+
+use super::crypto::{self, Ranked};
+use super::{CameraMatrices, Channel, CryptoHeader, Layers, Pass, PassSet};
+use crate::scene::Scene;
+use crate::texture::Color;
+use crate::trace::Record;
+use glam::DVec3;
+
+/// What one camera ray told: zeroed for every sample.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Sample {
+    /// The object hit (file order) and the distance to it.
+    pub hit: Option<(usize, f64)>,
+    /// The hit point.
+    pub p: DVec3,
+    /// The shading normal.
+    pub n: DVec3,
+    /// The texture colour.
+    pub albedo: Color,
+    /// ambient, diffuse, specular, reflection, transmission, before fog.
+    pub terms: [Color; 5],
+    /// The fog fraction.
+    pub fog: f64,
+}
+
+impl Record for Sample {
+    const ACTIVE: bool = true;
+    fn object(&mut self, index: usize, t: f64) {
+        self.hit = Some((index, t));
+    }
+    fn surface(&mut self, p: DVec3, n: DVec3, albedo: Color) {
+        (self.p, self.n, self.albedo) = (p, n, albedo);
+    }
+    fn ambient(&mut self, c: Color) {
+        self.terms[0] += c;
+    }
+    fn light(&mut self, diffuse: Color, specular: Color) {
+        self.terms[1] += diffuse;
+        self.terms[2] += specular;
+    }
+    fn reflection(&mut self, c: Color) {
+        self.terms[3] += c;
+    }
+    fn transmission(&mut self, c: Color) {
+        self.terms[4] += c;
+    }
+    fn fog(&mut self, f: f64) {
+        self.fog = f;
+    }
+}
+
+/// The sums of one pixel's samples.
+#[derive(Clone, Debug, Default)]
+pub struct PixelSum {
+    /// Σ unclamped beauty.
+    pub beauty: Color,
+    /// Σ depth (+∞ once any sample missed).
+    pub depth: f64,
+    /// Σ position.
+    pub p: DVec3,
+    /// Σ normal.
+    pub n: DVec3,
+    /// Σ albedo.
+    pub albedo: Color,
+    /// Σ of the light split's six layers.
+    pub light: [Color; 6],
+    /// (object index, samples) for each object seen, when a Cryptomatte is asked for.
+    pub objects: Vec<(usize, u32)>,
+}
+
+impl PixelSum {
+    /// Adds one sample: its beauty `c` and what it recorded; `forward` is the camera's
+    /// view axis and `dir` the ray's direction (depth = t·dir·forward).
+    #[inline]
+    pub fn add(&mut self, c: Color, s: &Sample, dir: DVec3, forward: DVec3, crypto: bool) {
+        self.beauty += c;
+        let keep = 1.0 - s.fog;
+        for (sum, term) in self.light.iter_mut().zip(s.terms) {
+            *sum += term * keep;
+        }
+        self.light[5] += Color::splat(s.fog);
+        match s.hit {
+            Some((index, t)) => {
+                self.depth += t * dir.dot(forward);
+                self.p += s.p;
+                self.n += s.n;
+                self.albedo += s.albedo;
+                if crypto {
+                    match self.objects.iter_mut().find(|(i, _)| *i == index) {
+                        Some((_, k)) => *k += 1,
+                        None => self.objects.push((index, 1)),
+                    }
+                }
+            }
+            None => self.depth = f64::INFINITY,
+        }
+    }
+}
+
+/// The layers of a frame from its pixels' sums over `samples` samples each.
+pub fn finish(
+    sums: &[PixelSum],
+    samples: u32,
+    width: u32,
+    height: u32,
+    passes: PassSet,
+    scene: &Scene,
+    camera: Option<CameraMatrices>,
+) -> Layers {
+    let k = f64::from(samples.max(1));
+    let beauty = sums.iter().map(|s| s.beauty / k).collect();
+    let mut channels = Vec::new();
+    let push3 = |channels: &mut Vec<Channel>, pass: Pass, get: &dyn Fn(&PixelSum) -> DVec3| {
+        let vals: Vec<DVec3> = sums.iter().map(|s| get(s) / k).collect();
+        for (axis, name) in pass.channels().into_iter().enumerate() {
+            let values = vals.iter().map(|v| v[axis] as f32).collect();
+            channels.push(Channel { name, values });
+        }
+    };
+    let light_index = |p: Pass| Pass::LIGHT.iter().position(|&q| q == p).unwrap_or(0);
+    let mut crypto_headers = Vec::new();
+    let mut crypto_channels = Vec::new();
+    for pass in passes.iter() {
+        match pass {
+            Pass::Depth => channels.push(Channel {
+                name: "Z".into(),
+                values: sums.iter().map(|s| (s.depth / k) as f32).collect(),
+            }),
+            Pass::Position => push3(&mut channels, pass, &|s| s.p),
+            Pass::Normal => push3(&mut channels, pass, &|s| s.n),
+            Pass::Albedo => push3(&mut channels, pass, &|s| s.albedo),
+            Pass::CryptoObject | Pass::CryptoMaterial => {
+                let names = if pass == Pass::CryptoObject {
+                    crypto::object_names(scene)
+                } else {
+                    crypto::material_names(scene)
+                };
+                let ids: Vec<u32> = names.iter().map(|n| crypto::id(n)).collect();
+                let ranked = sums.iter().map(|s| {
+                    let cover = s.objects.iter().map(|&(i, n)| (ids[i], n));
+                    Ranked::of(cover, samples.max(1))
+                });
+                crypto_channels.extend(crypto::channels(pass.name(), ranked));
+                crypto_headers.push(CryptoHeader {
+                    name: pass.name().into(),
+                    manifest: crypto::manifest(&names),
+                });
+            }
+            light => {
+                let i = light_index(light);
+                push3(&mut channels, light, &|s| s.light[i]);
+            }
+        }
+    }
+    channels.extend(crypto_channels);
+    Layers {
+        width,
+        height,
+        beauty,
+        channels,
+        crypto: crypto_headers,
+        camera,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fogged_terms_and_fog_sum_to_the_fogged_colour() {
+        // Terms 0.1..0.5 (sum 1.5) at fog f = 0.25: beauty 1.5·0.75 + 0.25 = 1.375.
+        let s = Sample {
+            hit: Some((0, 2.0)),
+            terms: [0.1, 0.2, 0.3, 0.4, 0.5].map(Color::splat),
+            fog: 0.25,
+            ..Default::default()
+        };
+        let mut sum = PixelSum::default();
+        let beauty = Color::splat(1.375);
+        let dir = DVec3::new(0.6, 0.0, 0.8);
+        sum.add(beauty, &s, dir, DVec3::Z, true);
+        let total: Color = sum.light.iter().copied().sum();
+        assert!((total - beauty).abs().max_element() < 1e-15, "{total}");
+        // Depth along the view axis: t·(dir·forward) = 2·0.8.
+        assert!((sum.depth - 1.6).abs() < 1e-15);
+        assert_eq!(sum.objects, [(0, 1)]);
+        // A second sample that misses: depth becomes +inf; the object is still counted once.
+        sum.add(Color::ONE, &Sample::default(), dir, DVec3::Z, true);
+        assert_eq!(sum.depth, f64::INFINITY);
+        assert_eq!(sum.objects, [(0, 1)]);
+    }
+}

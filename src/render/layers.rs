@@ -1,0 +1,168 @@
+//! The layered render: the beauty and the passes asked for, from one trace per sample
+//! (the tracer's `primary_rec` with a `passes::record::Sample` listening), in parallel
+//! over rows like `render`. The beauty here is the mean of the unclamped samples (SPEC
+//! §12); with one sample and no motion blur it is exactly the colour `render` rounds.
+
+use crate::accel::TileView;
+use crate::camera::{Camera, VIEW_DISTANCE, VIEW_HEIGHT, VIEW_WIDTH};
+use crate::passes::record::{finish, PixelSum, Sample};
+use crate::passes::{CameraMatrices, Layers, Pass, PassSet};
+use crate::trace::{RayCount, Tracer};
+use rayon::prelude::*;
+
+/// Adds every pixel's `samples`² samples into `sums` (width·height, rows top to bottom):
+/// one sub-frame of a frame of layers. `passes` says whether Cryptomatte coverage is
+/// kept; the rest is cheap enough to record always.
+pub fn render_layers_add(
+    tracer: &Tracer,
+    camera: &Camera,
+    width: u32,
+    height: u32,
+    samples: u32,
+    passes: PassSet,
+    sums: &mut [PixelSum],
+) -> RayCount {
+    let n = samples.max(1);
+    let crypto = passes.has(Pass::CryptoObject) || passes.has(Pass::CryptoMaterial);
+    let forward = camera.basis().2;
+    let view = TileView::new(camera, width, height, &tracer.scene().objects);
+    let view = view.as_ref();
+    let step = 1.0 / n as f64;
+    sums.par_chunks_mut(width.max(1) as usize)
+        .take(height as usize)
+        .enumerate()
+        .map(|(j, row)| {
+            let mut count = RayCount::default();
+            for (i, sum) in row.iter_mut().enumerate() {
+                let hint = view.map(|v| v.hint(i as u32, j as u32));
+                for b in 0..n {
+                    for a in 0..n {
+                        let (x, y) = if n == 1 {
+                            (i as f64 + 0.5, j as f64 + 0.5)
+                        } else {
+                            (
+                                i as f64 + (a as f64 + 0.5) * step,
+                                j as f64 + (b as f64 + 0.5) * step,
+                            )
+                        };
+                        let ray = camera.ray(x, y);
+                        let mut s = Sample::default();
+                        let c = tracer.primary_rec(hint, &ray, &mut count, &mut s);
+                        sum.add(c, &s, ray.dir, forward, crypto);
+                    }
+                }
+            }
+            count
+        })
+        .reduce(RayCount::default, |a, b| a + b)
+}
+
+/// Renders the beauty and `passes` of the tracer's scene through `camera`.
+pub fn render_layers(
+    tracer: &Tracer,
+    camera: &Camera,
+    width: u32,
+    height: u32,
+    samples: u32,
+    passes: PassSet,
+) -> (Layers, RayCount) {
+    let mut sums = vec![PixelSum::default(); width as usize * height as usize];
+    let rays = render_layers_add(tracer, camera, width, height, samples, passes, &mut sums);
+    let n = samples.max(1);
+    let layers = finish(
+        &sums,
+        n * n,
+        width,
+        height,
+        passes,
+        tracer.scene(),
+        Some(camera_matrices(camera)),
+    );
+    (layers, rays)
+}
+
+/// The header matrices of `camera` (see `CameraMatrices`).
+pub fn camera_matrices(camera: &Camera) -> CameraMatrices {
+    let (r, u, f) = camera.basis();
+    let e = camera.eye();
+    let w2c = [
+        [r.x, u.x, f.x, 0.0],
+        [r.y, u.y, f.y, 0.0],
+        [r.z, u.z, f.z, 0.0],
+        [-e.dot(r), -e.dot(u), -e.dot(f), 1.0],
+    ];
+    // x_ndc = x·(2d/W)/z, y_ndc = y·(2d/H)/z, z_ndc = (z − near)/z, w = z.
+    let near = crate::optics::T_MIN;
+    let proj = [
+        [2.0 * VIEW_DISTANCE / VIEW_WIDTH, 0.0, 0.0, 0.0],
+        [0.0, 2.0 * VIEW_DISTANCE / VIEW_HEIGHT, 0.0, 0.0],
+        [0.0, 0.0, 1.0, 1.0],
+        [0.0, 0.0, -near, 0.0],
+    ];
+    let mut ndc = [[0.0f64; 4]; 4];
+    for (i, row) in ndc.iter_mut().enumerate() {
+        for (j, v) in row.iter_mut().enumerate() {
+            *v = (0..4).map(|k| w2c[i][k] * proj[k][j]).sum();
+        }
+    }
+    let flat = |m: [[f64; 4]; 4]| {
+        let mut out = [0.0f32; 16];
+        for (k, v) in m.iter().flatten().enumerate() {
+            out[k] = *v as f32;
+        }
+        out
+    };
+    CameraMatrices {
+        world_to_camera: flat(w2c),
+        world_to_ndc: flat(ndc),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::render::render;
+    use crate::texture::Color;
+
+    const SCENE: &str = "8 6  0 1 6  0 0 0  1 20  2 1 0 1\n\
+        1 0 0 0  1 1 0 0  0.5 0.3 0.2 1.5 0 0\n\
+        1.5 2 0 -1  1 0.2 0.8 0.2  1 0 0 1 0 0\n\
+        0 -1 0  0 1 0  2 1 1 1 1 0 0 0 0 0 0  0.6 0.4 0 1 0 0\n\
+        3 5 5  1 1 1  1";
+
+    #[test]
+    fn one_sample_beauty_is_the_pictures_colour_and_the_split_sums_to_it() {
+        let scene = crate::Scene::parse(SCENE, "t.txt").unwrap();
+        let tracer = Tracer::new(&scene);
+        let camera = scene.camera();
+        let all = PassSet::of(&Pass::ALL);
+        let (layers, rays) = render_layers(&tracer, &camera, 8, 6, 1, all);
+        let (frame, plain_rays) = render(&tracer, &camera, 8, 6, 1);
+        assert_eq!(layers.to_frame(), frame);
+        assert_eq!(rays, plain_rays, "one trace per sample");
+        for (k, b) in layers.beauty.iter().enumerate() {
+            let sum: Color = Pass::LIGHT
+                .iter()
+                .map(|p| {
+                    let [r, g, bl] = p.channels().map(|c| layers.channel(&c).unwrap().values[k]);
+                    Color::new(r.into(), g.into(), bl.into())
+                })
+                .sum();
+            let err = (sum - *b).abs().max_element() / b.abs().max_element().max(1e-3);
+            assert!(err < 1e-5, "pixel {k}: {sum} vs {b}");
+        }
+    }
+
+    #[test]
+    fn world_to_camera_puts_the_look_at_point_straight_ahead() {
+        let cam = Camera::new(glam::DVec3::new(0.0, 0.0, 5.0), glam::DVec3::ZERO, 4, 3).unwrap();
+        let m = camera_matrices(&cam);
+        // Row-vector convention: the origin maps to the last row plus nothing: (0, 0, 5).
+        let w = m.world_to_camera;
+        assert_eq!([w[12], w[13], w[14], w[15]], [0.0, 0.0, 5.0, 1.0]);
+        // NDC of the origin: x = y = 0, z = (5 − 0.01)/5, w = 5.
+        let n = m.world_to_ndc;
+        assert_eq!((n[12], n[13], n[15]), (0.0, 0.0, 5.0));
+        assert!((n[14] / n[15] - (5.0 - 0.01) / 5.0).abs() < 1e-6);
+    }
+}
