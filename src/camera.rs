@@ -1,10 +1,23 @@
-//! The report's pinhole camera (III.2), fixed by SPEC §2.
+//! The report's pinhole camera (III.2), with a framing for other sizes, a field of view
+//! and a roll.
 //!
 //! U = normalize(look_at − eye); world up H = (0,1,0), or (0,0,1) when U is parallel to
 //! it; D = normalize(U × H) points right and H' = D × U up. The view plane sits at
-//! distance 1.0 and is 0.5 wide (`LargVue`) by 0.35 high (`LongVue`) whatever the
-//! resolution, so pixels are not square unless ResX/ResY = 0.5/0.35, as in the report.
-//! Pixel (i, j) has i to the right and j downwards; its centre is (i + 0.5, j + 0.5).
+//! distance 1.0. At the scene file's own size, and at any size of the same shape
+//! (ResX:ResY), it is the report's 0.5 wide (`LargVue`) by 0.35 high (`LongVue`), so the
+//! report's pictures keep every pixel. At a size of another shape the view's height
+//! 0.35 holds and its width follows the picture with square pixels (0.35·W/H), so a
+//! 1920×1080 frame shows round spheres instead of stretching the report's plane. A
+//! `Lens` may set a vertical field of view (degrees: the plane is 2·tan(fov/2) high,
+//! square pixels at any size) and a roll (degrees: positive banks the camera to the
+//! right, so the picture turns counter-clockwise). Pixel (i, j) has i to the right and
+//! j downwards; its centre is (i + 0.5, j + 0.5).
+//!
+//! ```toml
+//! [camera]
+//! fov = 30.0     # vertical, degrees, 0 < fov < 180 (default: the report's plane)
+//! roll = 10.0    # degrees (default 0)
+//! ```
 
 use crate::optics::Ray;
 use glam::DVec3;
@@ -15,6 +28,38 @@ pub const VIEW_DISTANCE: f64 = 1.0;
 pub const VIEW_WIDTH: f64 = 0.5;
 /// Height of the view plane (`LongVue`).
 pub const VIEW_HEIGHT: f64 = 0.35;
+
+/// The framing of a camera beyond its eye and look-at point: a vertical field of view
+/// and a roll, both in degrees. The default is the report's plane with no roll.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Lens {
+    /// The vertical field of view in degrees, 0 < fov < 180; `None`: the report's plane.
+    pub fov: Option<f64>,
+    /// The roll about the viewing direction in degrees; positive banks to the right.
+    pub roll: f64,
+}
+
+impl Lens {
+    /// The view plane's width and height (at distance 1.0) for an image of `size`
+    /// pixels of a scene whose own size is `native`: the report's 0.5 × 0.35 at the
+    /// native shape without a field of view, else square pixels, 0.35 (or the field of
+    /// view's 2·tan(fov/2)) high.
+    pub fn plane(&self, native: (u32, u32), size: (u32, u32)) -> (f64, f64) {
+        let (w, h) = (u64::from(size.0.max(1)), u64::from(size.1.max(1)));
+        let (nw, nh) = (u64::from(native.0.max(1)), u64::from(native.1.max(1)));
+        let height = match self.fov {
+            Some(fov) => 2.0 * (fov.to_radians() / 2.0).tan(),
+            None if w * nh == h * nw => return (VIEW_WIDTH, VIEW_HEIGHT),
+            None => VIEW_HEIGHT,
+        };
+        (height * w as f64 / h as f64, height)
+    }
+
+    /// True for the report's framing: no field of view, no roll.
+    pub fn is_report(&self) -> bool {
+        self.fov.is_none() && self.roll == 0.0
+    }
+}
 
 /// A camera placed for one image of `width` × `height` pixels.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -32,6 +77,36 @@ impl Camera {
     /// A camera at `eye` looking at `look_at`. `None` when the two points coincide (or are
     /// not finite), because then there is no direction to look in.
     pub fn new(eye: DVec3, look_at: DVec3, width: u32, height: u32) -> Option<Camera> {
+        Camera::with_plane(
+            eye,
+            look_at,
+            (width, height),
+            (VIEW_WIDTH, VIEW_HEIGHT),
+            0.0,
+        )
+    }
+
+    /// A camera for an image of `size` pixels of a scene whose own size is `native`,
+    /// framed by `lens` (`Lens::plane`, then the roll).
+    pub fn framed(
+        eye: DVec3,
+        look_at: DVec3,
+        native: (u32, u32),
+        size: (u32, u32),
+        lens: &Lens,
+    ) -> Option<Camera> {
+        Camera::with_plane(eye, look_at, size, lens.plane(native, size), lens.roll)
+    }
+
+    /// A camera whose view plane is `plane` = (width, height) at distance 1.0, turned by
+    /// `roll` degrees about the viewing direction.
+    pub fn with_plane(
+        eye: DVec3,
+        look_at: DVec3,
+        (width, height): (u32, u32),
+        (plane_w, plane_h): (f64, f64),
+        roll: f64,
+    ) -> Option<Camera> {
         let to = look_at - eye;
         // |to|² under- or overflows for a tiny or huge `to`: scaled first, it normalises.
         let u = to
@@ -39,18 +114,23 @@ impl Camera {
             .or_else(|| (to / to.abs().max_element()).try_normalize())?;
         // |U × H| is the sine of the angle between them: below 1e-9 they are parallel.
         let across = u.cross(DVec3::Y);
-        let right = if across.length() > 1e-9 {
+        let mut right = if across.length() > 1e-9 {
             across.normalize()
         } else {
             u.cross(DVec3::Z).normalize()
         };
-        let up = right.cross(u);
-        let corner = VIEW_DISTANCE * u + (VIEW_HEIGHT / 2.0) * up - (VIEW_WIDTH / 2.0) * right;
+        let mut up = right.cross(u);
+        if roll != 0.0 {
+            // Banking right: the right vector dips towards −up, up leans towards right.
+            let (s, c) = roll.to_radians().sin_cos();
+            (right, up) = (right * c - up * s, up * c + right * s);
+        }
+        let corner = VIEW_DISTANCE * u + (plane_h / 2.0) * up - (plane_w / 2.0) * right;
         Some(Camera {
             eye,
             corner,
-            step_x: right * (VIEW_WIDTH / width as f64),
-            step_y: up * (VIEW_HEIGHT / height as f64),
+            step_x: right * (plane_w / width as f64),
+            step_y: up * (plane_h / height as f64),
         })
     }
 
@@ -122,6 +202,65 @@ mod tests {
     #[test]
     fn eye_on_target_is_refused() {
         assert!(Camera::new(DVec3::ONE, DVec3::ONE, 4, 4).is_none());
+    }
+
+    #[test]
+    fn plane_by_hand() {
+        let lens = Lens::default();
+        // The scene's own size and any size of its shape: the report's plane, exactly.
+        assert_eq!(lens.plane((640, 480), (640, 480)), (0.5, 0.35));
+        assert_eq!(lens.plane((640, 480), (160, 120)), (0.5, 0.35));
+        // 1920×1080 of a 640×480 scene: 0.35 high, 0.35·1920/1080 = 0.6222… wide.
+        let (w, h) = lens.plane((640, 480), (1920, 1080));
+        assert_eq!(h, 0.35);
+        assert!((w - 0.622_222_222_222_222_2).abs() < 1e-15, "{w}");
+        // fov 90°: 2·tan(45°) = 2 high; at 200×100, 4 wide.
+        let lens = Lens {
+            fov: Some(90.0),
+            roll: 0.0,
+        };
+        let (w, h) = lens.plane((640, 480), (200, 100));
+        assert!(
+            (h - 2.0).abs() < 1e-12 && (w - 4.0).abs() < 1e-12,
+            "{w} {h}"
+        );
+    }
+
+    #[test]
+    fn native_framing_is_the_report_camera() {
+        let (eye, at) = (DVec3::new(0.0, 3.0, 12.0), DVec3::new(0.0, 1.0, 0.0));
+        let cam = Camera::framed(eye, at, (640, 480), (640, 480), &Lens::default());
+        assert_eq!(cam, Camera::new(eye, at, 640, 480));
+    }
+
+    #[test]
+    fn wide_frames_have_square_pixels() {
+        // Looking down −z at 1920×1080 of a 640×480 scene: one pixel right and one pixel
+        // down are the same length, 0.35/1080.
+        let cam = Camera::framed(
+            DVec3::ZERO,
+            -DVec3::Z,
+            (640, 480),
+            (1920, 1080),
+            &Lens::default(),
+        )
+        .unwrap();
+        assert!((cam.step_x.length() - 0.35 / 1080.0).abs() < 1e-15);
+        assert!((cam.step_y.length() - 0.35 / 1080.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn roll_banks_right() {
+        // Roll 90° looking down −z: right becomes −y and up becomes +x, so the top-left
+        // pixel of a 2×2 image leans towards +x (up-right of the unrolled view) and +y…
+        // by hand: corner = −z + (h/2)·x − (w/2)·(−y) = (0.175, 0.25, −1).
+        let lens = Lens {
+            fov: None,
+            roll: 90.0,
+        };
+        let cam = Camera::framed(DVec3::ZERO, -DVec3::Z, (2, 2), (2, 2), &lens).unwrap();
+        let c = cam.corner;
+        assert!((c - DVec3::new(0.175, 0.25, -1.0)).length() < 1e-12, "{c}");
     }
 
     #[test]

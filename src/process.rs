@@ -1,9 +1,10 @@
 //! What both binaries set up for a run: a check that the processor has the instruction
 //! set the build was compiled for (`.cargo/config.toml`: x86-64-v2 on x86-64), the pool
 //! of worker threads (`--threads`, default all cores), and what SIGINT and SIGTERM do:
-//! raise the stop flag that the animation pipeline reads between frames (`animate`), or
-//! end a run that has no such point at once (`raytrace`'s one image), in both cases with
-//! the exit-status table's 128 + N.
+//! for `animate`, the first raises the stop flag that the pipeline reads between frames
+//! and cancels the frames in progress between rows (`render::control`), saying at once
+//! how many frames it stops; a second ends the process at once. `raytrace`'s one image
+//! ends at once. Both exit with the exit-status table's 128 + N.
 
 use std::sync::atomic::{AtomicBool, AtomicUsize};
 use std::sync::Arc;
@@ -61,10 +62,33 @@ pub fn pool(threads: Option<u32>) -> Result<rayon::ThreadPool, rayon::ThreadPool
 /// A flag that holds the number of the first SIGINT or SIGTERM received (0 until then).
 /// Without a handler the default action (terminate) remains; temporary files are still
 /// never visible under final names.
-pub fn watch_signals() -> Arc<AtomicUsize> {
+///
+/// On the first signal the frames in progress stop before their next row (and are not
+/// written) and a line `<name>: stopping: N frames in progress …` goes to standard error
+/// at once, from a watcher thread (a signal handler itself only sets flags); a second
+/// signal ends the process at once with 128 + N.
+pub fn watch_signals(name: &'static str) -> Arc<AtomicUsize> {
+    use signal_hook::consts::{SIGINT, SIGTERM};
     let stop = Arc::new(AtomicUsize::new(0));
-    for sig in [signal_hook::consts::SIGINT, signal_hook::consts::SIGTERM] {
+    let seen = Arc::new(AtomicBool::new(false));
+    for sig in [SIGINT, SIGTERM] {
+        // Registered first, so it sees `seen` as the earlier signal left it.
+        let _ = signal_hook::flag::register_conditional_shutdown(sig, 128 + sig, seen.clone());
+        let _ = signal_hook::flag::register(sig, seen.clone());
         let _ = signal_hook::flag::register_usize(sig, Arc::clone(&stop), sig as usize);
+    }
+    if let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM]) {
+        std::thread::spawn(move || {
+            if let Some(sig) = signals.forever().next() {
+                crate::render::control::cancel(sig as usize);
+                let n = crate::render::control::frames_in_progress();
+                let frames = if n == 1 { "frame" } else { "frames" };
+                eprintln!(
+                    "{name}: stopping: {n} {frames} in progress (finished frames are kept; \
+                     a second Ctrl-C ends at once)"
+                );
+            }
+        });
     }
     stop
 }

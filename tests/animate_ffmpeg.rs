@@ -2,6 +2,7 @@
 //! `.ci/run` installs ffmpeg; on a machine without it these tests say so and pass only
 //! outside CI.
 
+mod skip;
 mod support;
 
 use std::process::{Command, Stdio};
@@ -11,8 +12,7 @@ fn have_ffmpeg() -> bool {
     let found = Command::new("ffprobe").arg("-version").output().is_ok()
         && Command::new("ffmpeg").arg("-version").output().is_ok();
     if !found {
-        assert!(std::env::var_os("CI").is_none(), "CI must install ffmpeg");
-        eprintln!("ffmpeg/ffprobe not installed: skipping");
+        skip::skip("ffmpeg/ffprobe not installed");
     }
     found
 }

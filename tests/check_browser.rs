@@ -3,6 +3,7 @@
 //! screenshot must show the pictures. Without Chromium on PATH the test says it skipped,
 //! unless CI is set, where a missing browser is a failure.
 
+mod skip;
 mod support;
 
 use std::path::{Path, PathBuf};
@@ -17,8 +18,7 @@ fn chromium() -> Option<PathBuf> {
             .find(|p| p.is_file())
     });
     if found.is_none() {
-        assert!(std::env::var_os("CI").is_none(), "CI must install chromium");
-        eprintln!("skipped: chromium not found");
+        skip::skip("chromium not found");
     }
     found
 }

@@ -9,6 +9,8 @@
 //! `.ci/run` does); without it the script says so with status 2, and the test says
 //! "skipped: …" and passes, except under CI.
 
+mod skip;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
@@ -48,11 +50,7 @@ fn the_pgo_binaries_draw_the_plain_builds_pixels() {
         .unwrap();
     let err = String::from_utf8_lossy(&run.stderr);
     if run.status.code() == Some(2) && err.contains(NO_PROFDATA) {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "CI must run this test: {err}"
-        );
-        eprintln!("skipped: {err}");
+        skip::skip(err.trim());
         return;
     }
     assert!(run.status.success(), "{err}");

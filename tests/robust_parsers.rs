@@ -14,9 +14,11 @@
 //!
 //! Crashes the coverage-guided fuzzer (`fuzz/`) found are replayed in `fuzz_findings`.
 
+mod shipped;
+
 use proptest::prelude::*;
 use proptest::sample::Index;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::sync::mpsc;
 use std::time::Duration;
 use whitted::object::Object;
@@ -290,20 +292,14 @@ const EVERYTHING: &str = "\
 /// Nothing but the header: no objects, no lights, linear fog.
 const EMPTY: &str = "1 1\n0 0 0\n0 0 -1\n1 1e-3\n0 0 0 0";
 
-/// The seed scenes: the embedded ones and every `*.txt` under `scenes/`.
+/// The seed scenes: the embedded ones and the shipped scenes (tests/shipped).
 fn seeds() -> Vec<(String, String)> {
     let mut out = vec![
         ("report-sphere".to_string(), REPORT_SPHERE.to_string()),
         ("everything".to_string(), EVERYTHING.to_string()),
         ("empty".to_string(), EMPTY.to_string()),
     ];
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .map(|rd| rd.filter_map(|e| e.ok().map(|e| e.path())).collect())
-        .unwrap_or_default();
-    files.retain(|p| p.extension().is_some_and(|e| e == "txt"));
-    files.sort();
-    for p in files {
+    for p in shipped::scenes() {
         if let Ok(text) = std::fs::read_to_string(&p) {
             out.push((p.file_name().unwrap().to_string_lossy().into_owned(), text));
         }
@@ -893,7 +889,7 @@ format = "raw"
 name = "x"
 "#;
 
-/// The seed manifests: the embedded ones and every `*.toml` under `animations/`.
+/// The seed manifests: the embedded ones and the shipped manifests (tests/shipped).
 fn manifest_seeds() -> Vec<String> {
     let mut out = vec![
         CIRCLE.to_string(),
@@ -901,12 +897,7 @@ fn manifest_seeds() -> Vec<String> {
         SPLINE_TABLES.to_string(),
         TRACKS.to_string(),
     ];
-    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("animations");
-    let mut files: Vec<PathBuf> = std::fs::read_dir(&dir)
-        .map(|rd| rd.filter_map(|e| e.ok().map(|e| e.path())).collect())
-        .unwrap_or_default();
-    files.retain(|p| p.extension().is_some_and(|e| e == "toml"));
-    files.sort();
+    let files = shipped::animations();
     out.extend(files.iter().filter_map(|p| std::fs::read_to_string(p).ok()));
     out
 }

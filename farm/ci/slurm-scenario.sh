@@ -57,7 +57,8 @@ written() {
 some_written() { (($(written) > 0)); }
 
 cd "$work"
-array=$(sbatch --parsable --array="1-$tasks" --cpus-per-task=1 \
+# render.sbatch's own CPU request, as the README's line uses it: it must fit this cluster.
+array=$(sbatch --parsable --array="1-$tasks" \
   --output="$work/log/render_%a.out" "$here/slurm/render.sbatch" anim.toml frames)
 video=$(sbatch --parsable --dependency="afterok:$array" --cpus-per-task=1 \
   --output="$work/log/video.out" "$here/slurm/video.sbatch" anim.toml frames video.mp4)

@@ -59,7 +59,7 @@ pub enum AnimError {
         frame: u32,
     },
     /// The output (or report) folder cannot be created or used (bad input).
-    #[error("cannot use the output folder {dir}: {source}")]
+    #[error("cannot use the output folder {}: {}", dir.display(), folder_reason(dir, source))]
     Folder {
         /// The folder.
         dir: PathBuf,
@@ -166,6 +166,27 @@ impl AnimError {
     /// The process exit status for this error.
     pub fn exit_code(&self) -> u8 {
         self.outcome().code()
+    }
+}
+
+/// Why a folder cannot be used, in words rather than the system's alone: a file in the
+/// way, or a parent that does not take new folders.
+fn folder_reason(dir: &std::path::Path, source: &std::io::Error) -> String {
+    if dir.exists() && !dir.is_dir() {
+        return format!("a file of that name is in the way ({source}); name a folder");
+    }
+    let parent = dir.parent().filter(|p| !p.as_os_str().is_empty());
+    match (source.kind(), parent) {
+        (std::io::ErrorKind::NotFound, Some(p)) if p.is_dir() => {
+            format!("{} does not take new folders ({source})", p.display())
+        }
+        (std::io::ErrorKind::NotFound, Some(p)) => {
+            format!("cannot create it under {} ({source})", p.display())
+        }
+        (std::io::ErrorKind::PermissionDenied, _) => {
+            format!("no permission to create or write it ({source})")
+        }
+        _ => source.to_string(),
     }
 }
 

@@ -17,6 +17,8 @@
 //! radius = 12.0
 //! height = 3.0
 //! look_at = "sphere 2"             # optional: a point [x, y, z] or an object to follow
+//! fov = 30.0                       # optional: vertical field of view, degrees, 0 < fov < 180
+//! roll = 0.0                       # optional: degrees, positive banks the camera right
 //!
 //! [[track]]                        # any number; see `tracks`
 //! target = "light 1 intensity"
@@ -56,6 +58,7 @@ pub use crate::anim::refusal::ManifestError;
 pub use crate::anim::timeline::LookAt;
 
 use crate::anim::timeline::{CameraPath, MotionBlur, Sequence, TrackSpec};
+use crate::camera::Lens;
 use crate::fileloc::FileLoc;
 use crate::limits::{MAX_FPS, MAX_FRAMES, MIN_FPS};
 use crate::output::ImageFormat;
@@ -157,6 +160,8 @@ pub struct Manifest {
     /// An object the camera follows (`look_at = "sphere 2"`), or, without a path, a
     /// fixed point.
     pub look_at: Option<LookAt>,
+    /// `[camera] fov` and `roll`: the framing of every frame (the report's by default).
+    pub lens: Lens,
     /// The `[[track]]` tables, in file order.
     pub tracks: Vec<TrackSpec>,
     /// `[output]`: where and how frames are written.
@@ -226,7 +231,7 @@ impl Manifest {
 }
 
 /// What a `[camera]` table becomes: the path, and an object followed (or a still point).
-type CameraParts = (Option<CameraPath>, Option<LookAt>);
+type CameraParts = (Option<CameraPath>, Option<LookAt>, Lens);
 
 /// The manifest text and where it came from: turns spans into located errors.
 struct Source<'a> {
@@ -303,9 +308,9 @@ impl Source<'_> {
             Some(v) => *v.get_ref(),
             None => DEFAULT_FPS,
         };
-        let (camera, look_at) = match raw.camera {
+        let (camera, look_at, lens) = match raw.camera {
             Some(c) => camera(self, c, frames)?,
-            None => (None, None),
+            None => (None, None, Lens::default()),
         };
         let output = self.output(raw.output)?;
         Ok(Manifest {
@@ -316,6 +321,7 @@ impl Source<'_> {
             fps,
             camera,
             look_at,
+            lens,
             tracks: self.tracks(raw.track.unwrap_or_default(), frames)?,
             render: self.render(raw.render, output.format)?,
             output,

@@ -11,13 +11,15 @@ use super::error::AnimError;
 use super::manifest::Manifest;
 use super::timeline::{MotionBlur, Snapshot, Timeline};
 use crate::accel::Accel;
-use crate::camera::Camera;
+use crate::camera::{Camera, VIEW_HEIGHT, VIEW_WIDTH};
 use crate::limits::size_ok;
 use crate::output::ImageFormat;
 use crate::passes::record::{finish, PixelSum};
 use crate::passes::{Layers, PassSet};
 use crate::render::layers::camera_matrices;
-use crate::render::{render_add_with, render_layers_add, render_with, Adaptive, Antialias, Frame};
+use crate::render::{
+    control, estimate, render_add_with, render_layers_add, render_with, Adaptive, Antialias, Frame,
+};
 use crate::scene::{Scene, SceneError};
 use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
@@ -74,6 +76,10 @@ pub struct Settings {
     pub format: ImageFormat,
     /// `PIXEL_VERSION` of the library that drew it.
     pub pixel_version: u32,
+    /// The view plane's width and height and the roll, when they are not the report's
+    /// (left out of the record then, so frames of the report's framing keep their digest).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub view: Option<[f64; 3]>,
 }
 
 /// A project ready to draw any of its frames at a size.
@@ -145,7 +151,19 @@ impl<'p> Animation<'p> {
 
     /// The camera of a frame state, `None` when the eye is on the point it looks at.
     fn camera(&self, state: &Snapshot) -> Option<Camera> {
-        Camera::new(state.eye, state.look_at, self.width, self.height)
+        let native = (self.timeline.base.width, self.timeline.base.height);
+        let size = (self.width, self.height);
+        Camera::framed(state.eye, state.look_at, native, size, &self.manifest.lens)
+    }
+
+    /// The view plane (width, height) and roll when they are not the report's 0.5 × 0.35
+    /// unrolled plane (a size of another shape than the scene's, a `fov`, a `roll`).
+    pub fn view(&self) -> Option<[f64; 3]> {
+        let lens = &self.manifest.lens;
+        let native = (self.timeline.base.width, self.timeline.base.height);
+        let (w, h) = lens.plane(native, (self.width, self.height));
+        let report = (w, h) == (VIEW_WIDTH, VIEW_HEIGHT) && lens.roll == 0.0;
+        (!report).then_some([w, h, lens.roll])
     }
 
     /// Refuses, before anything renders, a frame whose camera (at any of its sample
@@ -172,7 +190,12 @@ impl<'p> Animation<'p> {
     /// its camera; with motion blur the mean of its sub-frames (each sample clamped, all
     /// averaged, then rounded).
     pub fn render(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
+        let _drawing = control::frame_in_progress();
         let drawn = self.draw(frame)?;
+        // A signal stopped the row loops: the frame is incomplete and must not be kept.
+        if let Some(sig) = control::cancelled() {
+            return Err(AnimError::Interrupted(sig));
+        }
         if let Some(observe) = &self.observer {
             observe(frame, &drawn.0);
         }
@@ -193,11 +216,57 @@ impl<'p> Animation<'p> {
         let mut sum = vec![Color::ZERO; w as usize * h as usize];
         let mut rays = RayCount::default();
         for &t in &times {
+            if control::cancelled().is_some() {
+                break; // the frame is discarded: no need to set up further sub-frames
+            }
             let state = self.timeline.at(t);
             let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
             rays = rays + render_add_with(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
         }
         Ok((Frame::from_sum(&sum, times.len() as u32, w, h), rays))
+    }
+
+    /// The camera rays `frames` frames cast (`render::estimate::camera_rays`).
+    pub fn camera_rays(&self, frames: usize) -> u64 {
+        let subframes = self.timeline.blur.map_or(1, |b| b.samples);
+        estimate::camera_rays(
+            self.width,
+            self.height,
+            self.samples,
+            subframes,
+            frames as u64,
+        )
+    }
+
+    /// The seconds `frames` frames are predicted to take, from frame `frame` drawn at
+    /// 1/`SAMPLE_DIVISOR` of each side on the current pool.
+    pub fn predict_seconds(&self, frame: u32, frames: usize) -> Result<f64, AnimError> {
+        let k = estimate::SAMPLE_DIVISOR;
+        let small = Animation {
+            width: (self.width / k).max(1),
+            height: (self.height / k).max(1),
+            shared: self.shared.clone(),
+            observer: None,
+            ..*self
+        };
+        let start = std::time::Instant::now();
+        small.draw(frame)?;
+        let took = start.elapsed().as_secs_f64();
+        Ok(estimate::predict(
+            self.camera_rays(frames),
+            small.camera_rays(1),
+            took,
+        ))
+    }
+
+    /// The rows of pixels one frame draws: its height, times its motion-blur sub-frames
+    /// (the unit of `render::control::rows_done`).
+    pub fn rows_per_frame(&self) -> u64 {
+        let subframes = self
+            .timeline
+            .blur
+            .map_or(1, |b| u64::from(b.samples.max(1)));
+        u64::from(self.height) * subframes
     }
 
     /// Draws frame `frame` as a frame of layers: the unclamped beauty (the mean of every
@@ -208,6 +277,7 @@ impl<'p> Animation<'p> {
         frame: u32,
         passes: PassSet,
     ) -> Result<(Layers, RayCount), AnimError> {
+        let _drawing = control::frame_in_progress();
         let (w, h, n) = (self.width, self.height, self.samples);
         let times = self.timeline.times(frame);
         let mut sums = vec![PixelSum::default(); w as usize * h as usize];
@@ -217,6 +287,10 @@ impl<'p> Animation<'p> {
             let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
             let tracer = self.tracer(&state.scene);
             rays = rays + render_layers_add(&tracer, &camera, w, h, n, passes, &mut sums);
+        }
+        // A signal stopped the row loops: the frame is incomplete and must not be kept.
+        if let Some(sig) = control::cancelled() {
+            return Err(AnimError::Interrupted(sig));
         }
         let state = self.timeline.at(f64::from(frame));
         let matrices = self.camera(&state).map(|c| camera_matrices(&c));
@@ -251,6 +325,7 @@ impl<'p> Animation<'p> {
             antialias: self.antialias,
             format: self.format(),
             pixel_version: PIXEL_VERSION,
+            view: self.view(),
         }
     }
 

@@ -1,112 +1,50 @@
-//! `raytrace [SCENE] [-o OUT] [--size WxH] [--samples N | --aa adaptive[:T[:D]]] [--threads N]
-//! [--display tev] [--passes LIST] [--pass NAME] [--exr-depth half|float]`: one image from a
-//! Scene.txt, the report's main(). It parses the command line and calls the library;
+//! `raytrace [SCENE] [-o OUT] [--size WxH] [--fov DEG] [--roll DEG]
+//! [--samples N | --aa adaptive[:T[:D]]] [--threads N] [--display tev] [--passes LIST] [--pass NAME] [--exr-depth half|float]`: one image from a
+//! Scene.txt, the report's main(). It parses the command line (`cli`) and calls the library;
 //! exit statuses follow `whitted::exit` (2 bad input, 1 a failed write, 130/143 stopped by
 //! SIGINT/SIGTERM).
 
+#[path = "raytrace/cli.rs"]
+mod cli;
+
 use anyhow::Context;
 use clap::Parser;
-use std::path::PathBuf;
+use cli::Args;
+use indicatif::{ProgressBar, ProgressStyle};
+use std::io::IsTerminal;
 use std::process::ExitCode;
+use whitted::camera::{Camera, Lens};
 use whitted::display::{Display, Tev};
 use whitted::exit::Outcome;
-use whitted::output::{
-    check_target, write_atomic, write_atomic_layers, ExrDepth, ImageFormat, OutputError,
-};
-use whitted::passes::{visible::picture, Pass, PassSet};
-use whitted::render::{render_layers, render_observed, render_with, Adaptive, Antialias};
-use whitted::{trace::Tracer, Scene, SceneError};
+use whitted::output::{check_target, write_atomic, write_atomic_layers, ImageFormat, OutputError};
+use whitted::passes::{visible::picture, PassSet};
+use whitted::render::{control, estimate, render_layers, render_observed, render_with, Antialias};
+use whitted::{render, trace::Tracer, Scene, SceneError};
 
 /// Rows per band streamed to tev: a band is a few milliseconds of work at the report's
 /// sizes, so the picture fills in smoothly.
 const STREAM_BAND: u32 = 16;
 
-const AFTER_HELP: &str = "\
-Formats, by OUT's extension: .png, .jpg/.jpeg (quality 90), .ppm (binary P6), .raw (the
-report's headerless RGB bytes, rows top to bottom), .exr (OpenEXR: the beauty unclamped,
-half unless --exr-depth float, and the --passes asked for; docs/exr.md). OUT defaults to
-the scene's path with .png, beside the scene file (raytrace sub/t.txt writes sub/t.png).
---pass NAME writes one pass as the picture: depth as near/z (the nearest point white, twice
-as far half grey, no hit black); normals as (N+1)/2 in RGB; positions as 0.5+0.5·x/(1+|x|)
-per axis; colours clamped and rounded; Cryptomatte ids as flat colours.
-Exit status: 0 success; 2 nothing was rendered (bad arguments or scene, an output path
-that cannot be used); 1 the image could not be written; 130/143 stopped by SIGINT/SIGTERM
-(no image is written). Scene.txt: docs/scene-format.md.";
-
-/// Render one Scene.txt to an image.
-#[derive(Parser, Debug)]
-#[command(name = "raytrace", version, about, after_help = AFTER_HELP)]
-struct Args {
-    /// The scene file.
-    #[arg(default_value = "Scene.txt")]
-    scene: PathBuf,
-    /// The image to write (its extension picks the format); defaults to SCENE with .png.
-    #[arg(short, long, value_name = "OUT")]
-    out: Option<PathBuf>,
-    /// Render at this size instead of the scene's resolution: WIDTHxHEIGHT, e.g. 160x120
-    /// (the view keeps the report's 0.5 × 0.35 plane).
-    #[arg(long, value_name = "WxH", value_parser = parse_size)]
-    size: Option<(u32, u32)>,
-    /// Anti-aliasing: an N×N stratified grid of samples per pixel (1 = the report's).
-    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=16))]
-    samples: u32,
-    /// Adaptive anti-aliasing instead of the grid (SPEC §15): pixel corners shared, squares
-    /// split where corners differ by more than THRESHOLD (0..=3, default 0.5), down to
-    /// DEPTH (0..=6, default 3).
-    #[arg(long, value_name = "adaptive[:T[:D]]", conflicts_with = "samples",
-          value_parser = |s: &str| s.parse::<Adaptive>().map_err(|e| e.to_string()))]
-    aa: Option<Adaptive>,
-    /// Worker threads (default: all cores).
-    #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
-    threads: Option<u32>,
-    /// Passes to store beside the beauty in an .exr: comma-separated names (depth,
-    /// position, normal, albedo, ambient, diffuse, specular, reflection, transmission,
-    /// fog, crypto_object, crypto_material) or `all`.
-    #[arg(long, value_name = "LIST", value_parser = parse_passes)]
-    passes: Option<PassSet>,
-    /// Write this pass as the picture instead of the beauty (an 8-bit OUT: .png, …).
-    #[arg(long, value_name = "NAME", value_parser = parse_pass)]
-    pass: Option<Pass>,
-    /// The sample type of an .exr beauty.
-    #[arg(long, value_name = "DEPTH", value_parser = parse_depth)]
-    exr_depth: Option<ExrDepth>,
-    /// Print nothing on success.
-    #[arg(short, long)]
-    quiet: bool,
-    /// Also stream the rows to a running tev viewer as they finish: `tev` (at
-    /// 127.0.0.1:14158) or `tev=HOST:PORT`. A missing viewer is a warning.
-    #[arg(long, value_name = "tev[=HOST:PORT]")]
-    display: Option<Display>,
-}
-
-fn parse_size(s: &str) -> Result<(u32, u32), String> {
-    let bad = || format!("expected WIDTHxHEIGHT within 16384 a side and 2^26 pixels, found {s:?}");
-    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
-    let (w, h): (u32, u32) = (w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
-    whitted::limits::size_ok(w.into(), h.into())
-        .then_some((w, h))
-        .ok_or_else(bad)
-}
-
-fn pass_names() -> String {
-    Pass::ALL.map(|p| p.name()).join(", ")
-}
-
-fn parse_pass(s: &str) -> Result<Pass, String> {
-    Pass::from_name(s)
-        .ok_or_else(|| format!("unknown pass {s:?}, expected one of {}", pass_names()))
-}
-
-fn parse_passes(s: &str) -> Result<PassSet, String> {
-    if s == "all" {
-        return Ok(PassSet::of(&Pass::ALL));
+/// A bar of the image's rows on a terminal (hidden otherwise, or with `--quiet`), moved by
+/// a watcher thread from the rows-done counter until it is finished.
+fn progress(rows: u32, quiet: bool) -> ProgressBar {
+    if quiet || !std::io::stderr().is_terminal() {
+        return ProgressBar::hidden();
     }
-    let list: Result<Vec<Pass>, String> = s.split(',').map(|p| parse_pass(p.trim())).collect();
-    Ok(PassSet::of(&list?))
-}
-
-fn parse_depth(s: &str) -> Result<ExrDepth, String> {
-    ExrDepth::from_name(s).ok_or_else(|| format!("expected half or float, found {s:?}"))
+    let bar = ProgressBar::new(u64::from(rows));
+    let style = ProgressStyle::with_template(
+        "{elapsed_precise} [{wide_bar}] {pos}/{len} rows  {per_sec}  ETA {eta}",
+    )
+    .unwrap_or_else(|_| ProgressStyle::default_bar());
+    bar.set_style(style.progress_chars("=> "));
+    let (watch, base) = (bar.clone(), control::rows_done());
+    std::thread::spawn(move || {
+        while !watch.is_finished() {
+            watch.set_position(control::rows_done().saturating_sub(base));
+            std::thread::sleep(std::time::Duration::from_millis(200));
+        }
+    });
+    bar
 }
 
 /// The format of OUT with the EXR options, refusing options its format cannot carry.
@@ -143,6 +81,9 @@ fn run(args: Args) -> anyhow::Result<()> {
         .clone()
         .unwrap_or_else(|| args.scene.with_extension("png"));
     let format = out_format(&args, &out)?;
+    if args.scene.extension().is_some_and(|e| e == "toml") {
+        return Err(NotAScene(args.scene.display().to_string()).into());
+    }
     let mut scene = Scene::load(&args.scene)?;
     check_target(&out)?;
     let same = |a: &std::path::Path, b: &std::path::Path| matches!((a.canonicalize(), b.canonicalize()), (Ok(x), Ok(y)) if x == y);
@@ -153,12 +94,36 @@ fn run(args: Args) -> anyhow::Result<()> {
         }
         .into());
     }
-    (scene.width, scene.height) = args.size.unwrap_or((scene.width, scene.height));
+    let native = (scene.width, scene.height);
+    (scene.width, scene.height) = args.size.unwrap_or(native);
     let pool = whitted::process::pool(args.threads).context("cannot start the worker threads")?;
-    let start = std::time::Instant::now();
-    let (camera, tracer) = (scene.camera(), Tracer::new(&scene));
+    let lens = Lens {
+        fov: args.fov,
+        roll: args.roll,
+    };
     let (w, h, n) = (scene.width, scene.height, args.samples);
+    let camera = Camera::framed(scene.eye, scene.look_at, native, (w, h), &lens)
+        .expect("the parser refuses an eye placed on its look-at point");
+    let tracer = Tracer::new(&scene);
+    let camera_rays = estimate::camera_rays(w, h, n, 1, 1);
+    if !args.quiet && camera_rays > estimate::ENORMOUS {
+        let k = estimate::SAMPLE_DIVISOR;
+        let small = ((w / k).max(1), (h / k).max(1));
+        let cam = Camera::framed(scene.eye, scene.look_at, native, small, &lens).expect("a camera");
+        let t = std::time::Instant::now();
+        pool.install(|| render(&tracer, &cam, small.0, small.1, n));
+        let sample = estimate::camera_rays(small.0, small.1, n, 1, 1);
+        let s = estimate::predict(camera_rays, sample, t.elapsed().as_secs_f64());
+        eprintln!(
+            "raytrace: warning: {camera_rays} camera rays ({w}×{h}, {} sample(s)/px); a short sample predicts about {} on {} thread(s) (Ctrl-C stops)",
+            n * n,
+            estimate::words(s),
+            pool.current_num_threads()
+        );
+    }
     let aa = args.aa.map_or(Antialias::Grid(n), Antialias::Adaptive);
+    let bar = progress(h, args.quiet);
+    let start = std::time::Instant::now();
     let (frame, rays) = if format.is_layered() || args.pass.is_some() {
         let passes = args.pass.map_or(format.passes(), |p| PassSet::of(&[p]));
         let (layers, rays) = pool.install(|| render_layers(&tracer, &camera, w, h, n, passes));
@@ -191,6 +156,7 @@ fn run(args: Args) -> anyhow::Result<()> {
         };
         (Some(frame), rays)
     };
+    bar.finish_and_clear();
     let traced = start.elapsed().as_secs_f64();
     if let Some(frame) = &frame {
         write_atomic(&out, frame, format)?;
@@ -217,6 +183,14 @@ fn run(args: Args) -> anyhow::Result<()> {
     Ok(())
 }
 
+/// A TOML file given to `raytrace`: an animation manifest, which `animate` renders.
+#[derive(Debug, thiserror::Error)]
+#[error(
+    "{0} looks like an animation manifest (TOML), not a Scene.txt: render it with `animate {0}` \
+     (or one frame: `animate {0} --frames 0`)"
+)]
+struct NotAScene(String);
+
 fn main() -> ExitCode {
     if let Err(e) = whitted::process::check_cpu() {
         eprintln!("raytrace: {e}");
@@ -231,6 +205,7 @@ fn main() -> ExitCode {
                 e.downcast_ref::<OutputError>(),
             ) {
                 (Some(_), _) => Outcome::BadInput,
+                _ if e.downcast_ref::<NotAScene>().is_some() => Outcome::BadInput,
                 (_, Some(o)) => o.outcome(),
                 _ => Outcome::Failed,
             };

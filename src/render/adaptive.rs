@@ -306,6 +306,9 @@ pub fn trace(
         .enumerate()
         .map(|(j, row)| {
             let mut count = RayCount::default();
+            if super::control::stop_row() {
+                return count; // cancelled: the caller discards the frame
+            }
             for (i, c) in row.iter_mut().enumerate() {
                 *c = lattice.trace((i as u32) << depth, (j as u32) << depth, &mut count);
             }
@@ -321,10 +324,20 @@ pub fn trace(
             let (ti, tj) = (t % cols, t / cols);
             let mut count = RayCount::default();
             let mut out = Vec::new();
-            for j in tj * tile..((tj + 1) * tile).min(height) {
+            let band = tj * tile..((tj + 1) * tile).min(height);
+            if super::control::stop_row() {
+                // Cancelled: the caller discards the frame; the tile keeps its shape.
+                let cells = band.len() * (((ti + 1) * tile).min(width) - ti * tile) as usize;
+                return (vec![(Color::ZERO, Split::default()); cells], count);
+            }
+            for j in band.clone() {
                 for i in ti * tile..((ti + 1) * tile).min(width) {
                     out.push(pixel(&lattice, &aa, i, j, &mut count));
                 }
+            }
+            if ti + 1 == cols {
+                // Progress by bands of rows: a band counts when its last column's tile ends.
+                super::control::rows_done_by(band.len() as u64);
             }
             (out, count)
         })

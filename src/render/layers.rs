@@ -33,6 +33,9 @@ pub fn render_layers_add(
         .enumerate()
         .map(|(j, row)| {
             let mut count = RayCount::default();
+            if super::control::stop_row() {
+                return count; // cancelled: the caller discards the frame
+            }
             for (i, sum) in row.iter_mut().enumerate() {
                 let hint = view.map(|v| v.hint(i as u32, j as u32));
                 for b in 0..n {
@@ -52,6 +55,7 @@ pub fn render_layers_add(
                     }
                 }
             }
+            super::control::row_done();
             count
         })
         .reduce(RayCount::default, |a, b| a + b)

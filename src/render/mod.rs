@@ -16,6 +16,8 @@ use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
 
 pub mod adaptive;
+pub mod control;
+pub mod estimate;
 pub mod layers;
 pub use adaptive::{render_add_with, render_with, Adaptive, Antialias};
 pub use layers::{render_layers, render_layers_add};
@@ -63,10 +65,14 @@ pub fn render(
         .enumerate()
         .map(|(j, row)| {
             let mut count = RayCount::default();
+            if control::stop_row() {
+                return count; // cancelled: the caller discards the frame
+            }
             for (i, px) in row.chunks_exact_mut(3).enumerate() {
                 let c = pixel(tracer, view, camera, i as f64, j as f64, n, &mut count);
                 px.copy_from_slice(&[to_byte(c.x), to_byte(c.y), to_byte(c.z)]);
             }
+            control::row_done();
             count
         })
         .reduce(RayCount::default, |a, b| a + b);
@@ -98,10 +104,14 @@ pub fn render_add(
         .enumerate()
         .map(|(j, row)| {
             let mut count = RayCount::default();
+            if control::stop_row() {
+                return count; // cancelled: the caller discards the frame
+            }
             for (i, acc) in row.iter_mut().enumerate() {
                 let c = pixel(tracer, view, camera, i as f64, j as f64, n, &mut count);
                 *acc += c.clamp(Color::ZERO, Color::ONE);
             }
+            control::row_done();
             count
         })
         .reduce(RayCount::default, |a, b| a + b)

@@ -50,11 +50,15 @@ pub fn render_observed(
                 .enumerate()
                 .map(|(dj, row)| {
                     let mut count = RayCount::default();
+                    if super::control::stop_row() {
+                        return count; // cancelled: the caller discards the frame
+                    }
                     let j = (j0 + dj) as f64;
                     for (i, px) in row.chunks_exact_mut(3).enumerate() {
                         let c = pixel(tracer, view, camera, i as f64, j, n, &mut count);
                         px.copy_from_slice(&[to_byte(c.x), to_byte(c.y), to_byte(c.z)]);
                     }
+                    super::control::row_done();
                     count
                 })
                 .reduce(RayCount::default, |a, b| a + b);

@@ -205,6 +205,7 @@ pub(crate) fn render_to_folder(
                 });
                 rays
             }
+            Err(AnimError::Interrupted(_)) => RayCount::default(), // stopped mid-frame
             Err(e) => {
                 reporter.event(Event::Failed { frame });
                 if let Ok(mut slot) = failure.lock() {

@@ -15,14 +15,20 @@
 //!
 //! [camera]                   # no path: the scene file's eye holds still
 //! look_at = "sphere 2"       # any camera may follow an object (or look at [x, y, z])
+//! fov = 30.0                 # any camera: vertical field of view, degrees, 0 < fov < 180
+//! roll = 5.0                 # any camera: degrees about the view, positive banks right
 //! ```
 
 use super::raw::{RawCircle, RawSpline, RawStill, Vec3};
-use super::{ManifestError, Source};
+use super::{CameraParts, ManifestError, Source};
 use crate::anim::timeline::LookAt;
 use crate::anim::timeline::{coord_ok, CameraPath, Circle, Key, Spline, SplineError};
+use crate::camera::Lens;
 use crate::limits::{MAX_COORD, MAX_TURNS};
 use glam::DVec3;
+
+/// The largest roll taken, in degrees (a thousand turns).
+const MAX_ROLL: f64 = 360_000.0;
 use toml::Spanned;
 
 impl Source<'_> {
@@ -80,6 +86,30 @@ impl Source<'_> {
         })
     }
 
+    /// `fov` and `roll`: fov strictly between 0 and 180 degrees, roll finite.
+    fn lens(
+        &self,
+        fov: Option<&Spanned<f64>>,
+        roll: Option<&Spanned<f64>>,
+    ) -> Result<Lens, ManifestError> {
+        let fov = match fov {
+            Some(v) if !(*v.get_ref() > 0.0 && *v.get_ref() < 180.0) => {
+                let message = format!(
+                    "`fov` is the vertical field of view in degrees and must be between 0 and 180 (both excluded), found {}",
+                    v.get_ref()
+                );
+                return Err(self.error(v.span(), message));
+            }
+            Some(v) => Some(*v.get_ref()),
+            None => None,
+        };
+        let roll = match roll {
+            Some(v) => self.number(v, "roll", MAX_ROLL)?,
+            None => 0.0,
+        };
+        Ok(Lens { fov, roll })
+    }
+
     /// A fixed look-at point, or the object to follow.
     fn split_look_at(
         &self,
@@ -91,10 +121,7 @@ impl Source<'_> {
         }
     }
 
-    pub(super) fn circle(
-        &self,
-        raw: RawCircle,
-    ) -> Result<(Option<CameraPath>, Option<LookAt>), ManifestError> {
+    pub(super) fn circle(&self, raw: RawCircle) -> Result<CameraParts, ManifestError> {
         let circle = self.circle_values(
             &raw.center,
             &raw.radius,
@@ -104,26 +131,22 @@ impl Source<'_> {
         )?;
         let (look_at, follow) = self.split_look_at(raw.look_at.as_ref())?;
         let path = CameraPath::Circle { circle, look_at };
-        Ok((Some(path), follow))
+        let lens = self.lens(raw.fov.as_ref(), raw.roll.as_ref())?;
+        Ok((Some(path), follow, lens))
     }
 
-    pub(super) fn still(
-        &self,
-        raw: RawStill,
-    ) -> Result<(Option<CameraPath>, Option<LookAt>), ManifestError> {
+    pub(super) fn still(&self, raw: RawStill) -> Result<CameraParts, ManifestError> {
+        let lens = self.lens(raw.fov.as_ref(), raw.roll.as_ref())?;
         match self.split_look_at(raw.look_at.as_ref())? {
-            (Some(p), _) => Ok((None, Some(LookAt::Point(p)))),
-            (None, follow) => Ok((None, follow)),
+            (Some(p), _) => Ok((None, Some(LookAt::Point(p)), lens)),
+            (None, follow) => Ok((None, follow, lens)),
         }
     }
 
     /// A spline; key frames must lie in `0..frames`.
-    pub(super) fn spline(
-        &self,
-        raw: RawSpline,
-        frames: u32,
-    ) -> Result<(Option<CameraPath>, Option<LookAt>), ManifestError> {
+    pub(super) fn spline(&self, raw: RawSpline, frames: u32) -> Result<CameraParts, ManifestError> {
         let (look_at, follow) = self.split_look_at(raw.look_at.as_ref())?;
+        let lens = self.lens(raw.fov.as_ref(), raw.roll.as_ref())?;
         let mut keys = Vec::with_capacity(raw.keys.get_ref().len());
         for key in raw.keys.get_ref() {
             let key = key.get_ref();
@@ -147,7 +170,7 @@ impl Source<'_> {
         let closed = raw.closed.unwrap_or(false);
         let constant_speed = raw.constant_speed.unwrap_or(false);
         match Spline::new(keys, closed, constant_speed, look_at) {
-            Ok(spline) => Ok((Some(CameraPath::Spline(spline)), follow)),
+            Ok(spline) => Ok((Some(CameraPath::Spline(spline)), follow, lens)),
             Err(e) => Err(self.error(spline_error_span(&raw, &e), e.to_string())),
         }
     }

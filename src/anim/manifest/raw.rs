@@ -46,6 +46,8 @@ pub(super) struct RawManifest<C> {
 #[serde(deny_unknown_fields, expecting = "a [camera] table")]
 pub(super) struct RawStill {
     pub look_at: Option<PointOrObject>,
+    pub fov: Option<Spanned<f64>>,
+    pub roll: Option<Spanned<f64>>,
 }
 
 /// `[[track]]`: keys, or `path = "circle"` with the circle's keys.
@@ -97,6 +99,8 @@ pub(super) struct RawCircle {
     pub start_angle: Option<Spanned<f64>>,
     pub turns: Option<Spanned<f64>>,
     pub look_at: Option<PointOrObject>,
+    pub fov: Option<Spanned<f64>>,
+    pub roll: Option<Spanned<f64>>,
 }
 
 #[derive(Deserialize)]
@@ -107,6 +111,8 @@ pub(super) struct RawSpline {
     pub closed: Option<bool>,
     pub constant_speed: Option<bool>,
     pub look_at: Option<PointOrObject>,
+    pub fov: Option<Spanned<f64>>,
+    pub roll: Option<Spanned<f64>>,
     pub keys: Spanned<Vec<Spanned<RawKey>>>,
 }
 

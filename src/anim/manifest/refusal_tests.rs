@@ -12,13 +12,13 @@ fn unknown_keys_are_located_and_the_valid_ones_named() {
     );
     assert_eq!(
         refusal(&format!("scene = \"s\"\nframes = 3\n{CIRCLE}  spin = 2\n")),
-        "8:3: camera: unknown key `spin`; [camera] with path = \"circle\" takes `path`, `center`, `radius`, `height`, `start_angle`, `turns`, `look_at`"
+        "8:3: camera: unknown key `spin`; [camera] with path = \"circle\" takes `path`, `center`, `radius`, `height`, `start_angle`, `turns`, `look_at`, `fov`, `roll`"
     );
     // A circle's key in a spline is unknown too, and the spline's keys are named.
     let src = TOUR.replace("closed = false", "radius = 3.0");
     assert_eq!(
         refusal(&src),
-        "5:1: camera: unknown key `radius` (a key of path = \"circle\"); [camera] with path = \"spline\" takes `path`, `closed`, `constant_speed`, `look_at`, `keys`"
+        "5:1: camera: unknown key `radius` (a key of path = \"circle\"); [camera] with path = \"spline\" takes `path`, `closed`, `constant_speed`, `look_at`, `fov`, `roll`, `keys`"
     );
     let src = TOUR.replace("{ frame = 120,", "{ frame = 120, fov = 2,");
     assert_eq!(
@@ -118,7 +118,7 @@ fn the_camera_path_is_checked() {
     let src = "scene = \"s\"\nframes = 3\n[camera]\nradius = 1\n";
     assert_eq!(
         refusal(src),
-        "4:1: camera: unknown key `radius` (a key of path = \"circle\"); [camera] without a path takes `path`, `look_at`"
+        "4:1: camera: unknown key `radius` (a key of path = \"circle\"); [camera] without a path takes `path`, `look_at`, `fov`, `roll`"
     );
     let src = "scene = \"s\"\nframes = 3\n[camera]\npath = \"spiral\"\n";
     assert!(refusal(src)

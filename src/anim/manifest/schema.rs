@@ -64,6 +64,8 @@ const TOP: Place = Place {
 
 const PATH: Keys = &[("path", Value)];
 const LOOK_AT: Keys = &[("look_at", Value)];
+/// Every camera's framing: a vertical field of view and a roll.
+const LENS: Keys = &[("fov", Value), ("roll", Value)];
 /// A circle: the camera's orbit (`path = "circle"`) and a track that follows one.
 const CIRCLE_KEYS: Keys = &[
     ("center", Value),
@@ -78,23 +80,30 @@ const SPLINE_KEYS: Keys = &[("keys", Tables(SPLINE_KEY))];
 
 const STILL: Place = Place {
     name: "[camera] without a path",
-    groups: &[PATH, LOOK_AT],
+    groups: &[PATH, LOOK_AT, LENS],
 };
 
 const CIRCLE: Place = Place {
     name: "[camera] with path = \"circle\"",
-    groups: &[PATH, CIRCLE_KEYS, LOOK_AT],
+    groups: &[PATH, CIRCLE_KEYS, LOOK_AT, LENS],
 };
 
 const SPLINE: Place = Place {
     name: "[camera] with path = \"spline\"",
-    groups: &[PATH, SPLINE_OPTIONS, LOOK_AT, SPLINE_KEYS],
+    groups: &[PATH, SPLINE_OPTIONS, LOOK_AT, LENS, SPLINE_KEYS],
 };
 
 /// An unknown path: every key of some path is accepted (the path itself is refused later).
 const ANY_CAMERA: Place = Place {
     name: "[camera]",
-    groups: &[PATH, CIRCLE_KEYS, SPLINE_OPTIONS, LOOK_AT, SPLINE_KEYS],
+    groups: &[
+        PATH,
+        CIRCLE_KEYS,
+        SPLINE_OPTIONS,
+        LOOK_AT,
+        LENS,
+        SPLINE_KEYS,
+    ],
 };
 
 const SPLINE_KEY: Place = Place {
@@ -352,7 +361,7 @@ mod tests {
         assert_eq!(
             found[0].1,
             "camera: unknown key `radius` (a key of path = \"circle\"); \
-             [camera] without a path takes `path`, `look_at`"
+             [camera] without a path takes `path`, `look_at`, `fov`, `roll`"
         );
         assert!(unknown_keys("[camera]\npath = 'circle'\nradius = 3\n").is_empty());
         // An unknown path accepts any camera key: the path is what is refused.

@@ -46,23 +46,27 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
         let observer = tev_observer(addr, &anim);
         anim = anim.observed(observer);
     }
+    let shard = args.shard()?;
     let frames = match args.balance {
-        true => balance::select_balanced(&project, &anim, c.frames.as_deref(), args.shard()?)?,
-        false => run::frames_of(&anim, c.frames.as_deref(), args.shard()?)?,
+        true => balance::select_balanced(&project, &anim, c.frames.as_deref(), shard)?,
+        false => run::frames_of(&anim, c.frames.as_deref(), shard)?,
     };
     let destination = args.destination(m)?;
     let policy = args.policy()?;
     if !c.quiet {
         report::announce(&anim, frames.len(), args.stdout == Some(ImageFormat::Raw));
     }
-    let (stop, pool) = (whitted::process::watch_signals(), pool(c.threads)?);
+    let (stop, pool) = (whitted::process::watch_signals("animate"), pool(c.threads)?);
     if matches!(destination, Destination::Stream(_)) {
         // A reader that stops reading would hold a write, and the run, forever.
         whitted::process::exit_when_stuck(stop.clone(), |sig| {
             format!("animate: interrupted by signal {sig}\nanimate: hint: {STREAM_STOPPED}")
         });
     }
-    let bar = report::Bar::new(frames.len(), c.quiet || args.events);
+    if !c.quiet {
+        pool.install(|| report::warn_if_enormous(&anim, &frames));
+    }
+    let bar = report::RowBar::new(frames.len(), anim.rows_per_frame(), c.quiet || args.events);
     let reporter: &dyn Reporter = if args.events {
         &report::JsonLines
     } else {
@@ -91,7 +95,12 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
         (summary, _) => summary?,
     };
     if !c.quiet {
-        report::summary(&summary, start, &destination.describe());
+        let place = match shard {
+            // The shard named in the summary, so that a farm's logs say whose it is.
+            Some((k, n)) => format!("{} (shard {k}/{n})", destination.describe()),
+            None => destination.describe(),
+        };
+        report::summary(&summary, start, &place);
     }
     Ok(Outcome::Success)
 }
@@ -109,7 +118,7 @@ fn encode_command(args: EncodeArgs) -> anyhow::Result<Outcome> {
         encoding: args.encoding.encoding(),
         ..Policy::default()
     };
-    let stop = whitted::process::watch_signals();
+    let stop = whitted::process::watch_signals("animate");
     let bar = report::Bar::new(m.frames as usize, args.quiet);
     let start = Instant::now();
     let summary = encode::encode(&anim, &dir, &video, &policy, &bar, &stop);
@@ -182,7 +191,7 @@ fn view(args: ViewArgs) -> anyhow::Result<Outcome> {
         bind: args.bind,
         port: args.port,
     };
-    let stop = whitted::process::watch_signals();
+    let stop = whitted::process::watch_signals("animate");
     let pool = pool(args.threads)?;
     let sig = pool.install(|| {
         whitted::anim::view::serve(&options, &stop, &|url| {

@@ -1,6 +1,7 @@
-//! How `animate` shows a run: a progress bar on a terminal (indicatif: frames, frames/s,
-//! ETA), or JSON lines on standard error (`--events`), or nothing; then the one-line
-//! summary. Also the hints that name command-line flags, which the library's messages
+//! How `animate` shows a run: a progress bar on a terminal (indicatif: frames done to a
+//! tenth, moving with the rows of the frames in progress; frames/s, or seconds per frame
+//! when frames are slow; ETA), or JSON lines on standard error (`--events`), or nothing;
+//! then the one-line summary. Also the hints that name command-line flags, which the library's messages
 //! leave out.
 
 use indicatif::{ProgressBar, ProgressState, ProgressStyle};
@@ -13,9 +14,106 @@ use whitted::anim::preview::{PreviewError, PreviewSummary};
 use whitted::anim::select::SelectError;
 use whitted::anim::{AnimError, Animation, Event, Reporter};
 use whitted::exit::Outcome;
+use whitted::render::{control, estimate};
 
 /// The progress bar: frames done (skipped ones count as done), frames/s, ETA.
 pub struct Bar(ProgressBar);
+
+/// A render's progress bar, counted in rows (`whitted::render::control`) so that it
+/// moves within a frame: frames done to a tenth, frames/s or s/frame, ETA.
+pub struct RowBar {
+    bar: ProgressBar,
+    rows_per_frame: u64,
+    /// Rows counted before the run (the counter is process-wide), minus skipped frames.
+    base: std::sync::Arc<std::sync::atomic::AtomicU64>,
+    done: std::sync::Arc<std::sync::atomic::AtomicBool>,
+}
+
+impl RowBar {
+    /// A bar for `total` frames of `rows_per_frame` rows each, hidden with `quiet` or when
+    /// standard error is not a terminal.
+    pub fn new(total: usize, rows_per_frame: u64, quiet: bool) -> RowBar {
+        use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+        use std::sync::Arc;
+        let rows = rows_per_frame.max(1);
+        let base = Arc::new(AtomicU64::new(control::rows_done()));
+        let done = Arc::new(AtomicBool::new(false));
+        let hidden = quiet || !std::io::stderr().is_terminal();
+        let bar = if hidden {
+            ProgressBar::hidden()
+        } else {
+            ProgressBar::new(total as u64 * rows)
+        };
+        let style = ProgressStyle::with_template(
+            "{elapsed_precise} [{wide_bar}] {frames}/{total} frames  {rate}  ETA {eta}",
+        )
+        .unwrap_or_else(|_| ProgressStyle::default_bar())
+        .with_key(
+            "frames",
+            move |s: &ProgressState, w: &mut dyn std::fmt::Write| {
+                let _ = write!(w, "{:.1}", s.pos() as f64 / rows as f64);
+            },
+        )
+        .with_key(
+            "total",
+            move |s: &ProgressState, w: &mut dyn std::fmt::Write| {
+                let _ = write!(w, "{}", s.len().unwrap_or(0) / rows);
+            },
+        )
+        .with_key(
+            "rate",
+            move |s: &ProgressState, w: &mut dyn std::fmt::Write| {
+                let _ = write!(w, "{}", rate(s.per_sec() / rows as f64));
+            },
+        );
+        bar.set_style(style.progress_chars("=> "));
+        if !hidden {
+            let (bar, base, done) = (bar.clone(), base.clone(), done.clone());
+            std::thread::spawn(move || {
+                while !done.load(Ordering::Relaxed) {
+                    let pos = control::rows_done().saturating_sub(base.load(Ordering::Relaxed));
+                    bar.set_position(pos);
+                    std::thread::sleep(std::time::Duration::from_millis(200));
+                }
+            });
+        }
+        RowBar {
+            bar,
+            rows_per_frame: rows,
+            base,
+            done,
+        }
+    }
+
+    pub fn finish(&self) {
+        self.done.store(true, std::sync::atomic::Ordering::Relaxed);
+        self.bar.finish_and_clear();
+    }
+}
+
+impl Reporter for RowBar {
+    fn event(&self, event: Event) {
+        if let Event::Started { skipped, .. } = event {
+            // Skipped frames count as done: move the base back by their rows.
+            let rows = skipped as u64 * self.rows_per_frame;
+            let base = control::rows_done().saturating_sub(rows);
+            self.base.store(base, std::sync::atomic::Ordering::Relaxed);
+            self.bar.set_position(rows);
+            self.bar.reset_eta();
+        }
+    }
+}
+
+/// A rate in words: frames/s, or seconds per frame below one frame a second.
+pub fn rate(frames_per_second: f64) -> String {
+    if frames_per_second >= 1.0 {
+        format!("{frames_per_second:.1} frames/s")
+    } else if frames_per_second > 0.0 {
+        format!("{:.1} s/frame", 1.0 / frames_per_second)
+    } else {
+        "… s/frame".into()
+    }
+}
 
 impl Bar {
     /// A bar for `total` frames, hidden with `quiet` or when standard error is not a
@@ -98,6 +196,28 @@ pub fn announce(anim: &Animation, frames: usize, raw: bool) {
             ffmpeg_raw_input(anim)
         );
     }
+}
+
+/// Before a request of more than `ENORMOUS` camera rays: a warning with the count and the
+/// time a 1/8-size sample of its first frame predicts on the current pool.
+pub fn warn_if_enormous(anim: &Animation, frames: &[u32]) {
+    let rays = anim.camera_rays(frames.len());
+    let Some(&first) = frames.first() else { return };
+    if rays <= estimate::ENORMOUS {
+        return;
+    }
+    let threads = rayon::current_num_threads();
+    let when = match anim.predict_seconds(first, frames.len()) {
+        Ok(s) => format!("about {} on {threads} thread(s)", estimate::words(s)),
+        Err(_) => "a long time".into(),
+    };
+    eprintln!(
+        "animate: warning: {rays} camera rays ({} frame(s) of {}×{}, {} sample(s)/px); a short sample predicts {when} (Ctrl-C stops, --resume continues)",
+        frames.len(),
+        anim.width,
+        anim.height,
+        anim.camera_rays(1) / (u64::from(anim.width) * u64::from(anim.height)).max(1),
+    );
 }
 
 /// The one-line summary: frames, wall time, frames/s, rays/s, where they went.
@@ -218,6 +338,15 @@ pub fn hint(e: &AnimError) -> Option<&'static str> {
 mod tests {
     use super::*;
     use whitted::anim::select::parse_frames;
+
+    #[test]
+    fn slow_frames_are_shown_in_seconds_per_frame() {
+        assert_eq!(rate(12.34), "12.3 frames/s");
+        assert_eq!(rate(1.0), "1.0 frames/s");
+        // 0.08 frames/s is 12.5 s a frame.
+        assert_eq!(rate(0.08), "12.5 s/frame");
+        assert_eq!(rate(0.0), "… s/frame");
+    }
 
     #[test]
     fn usage_errors_are_bad_input() {

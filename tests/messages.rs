@@ -1,0 +1,50 @@
+//! Messages a newcomer meets: an output folder that is a file or cannot be created, and
+//! a manifest given to `raytrace`.
+
+mod support;
+
+use support::*;
+
+/// Standard error of a run that must refuse its input with exit status 2.
+fn refused(cmd: &mut assert_cmd::Command) -> String {
+    let out = cmd.output().unwrap();
+    assert_eq!(out.status.code(), Some(2), "{out:?}");
+    String::from_utf8(out.stderr).unwrap()
+}
+
+#[test]
+fn an_output_folder_that_is_a_file_or_cannot_be_made_is_explained() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    let file = dir.path().join("taken");
+    std::fs::write(&file, b"x").unwrap();
+    let err = refused(animate().arg(&manifest).arg("-o").arg(&file));
+    // Before: "File exists (os error 17)" alone.
+    assert!(err.contains("a file of that name is in the way"), "{err}");
+    let err = refused(animate().arg(&manifest).args(["-o", "/proc/whitted-x"]));
+    // Before: "No such file or directory (os error 2)" alone.
+    assert!(err.contains("/proc does not take new folders"), "{err}");
+}
+
+#[test]
+fn raytrace_on_a_manifest_says_to_use_animate() {
+    let (_dir, manifest) = project(&circle_manifest(""));
+    let err = refused(raytrace().arg(&manifest));
+    // Before: "expected an integer … for ResX, found 'scene'".
+    assert!(err.contains("looks like an animation manifest"), "{err}");
+    assert!(err.contains("render it with `animate "), "{err}");
+}
+
+#[test]
+fn a_shard_summary_names_the_shard() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    let out = animate()
+        .arg(&manifest)
+        .args(["--shard", "2/4", "-o"])
+        .arg(dir.path().join("f"))
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    // Before: the summary ended with the folder alone.
+    assert!(err.contains("(shard 2/4)"), "{err}");
+}

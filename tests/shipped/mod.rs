@@ -1,0 +1,53 @@
+//! The files the project ships in `scenes/` and `animations/`, by name: the tests render
+//! and parse these, never whatever else is in those folders (they are where a user's own
+//! scenes and manifests go, and a work in progress there must not fail `cargo test`).
+//! A file added to the repository is added here; `tests/shipped_files.rs` checks that
+//! every name here exists and that git tracks no other file in those folders.
+
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+
+/// The shipped scenes, in `scenes/`.
+pub const SCENES: &[&str] = &[
+    "01-ambient.txt",
+    "02-diffuse.txt",
+    "03-specular.txt",
+    "04-reflection.txt",
+    "05-refraction.txt",
+    "06-refraction-indices.txt",
+    "07-transparency.txt",
+    "08-procedural-textures.txt",
+    "09-bump-mapping.txt",
+    "10-water-bump.txt",
+    "11-no-fog.txt",
+    "12-linear-fog.txt",
+    "13-exp-fog.txt",
+    "14-exp2-fog.txt",
+    "bounce.txt",
+    "orbit.txt",
+];
+
+/// The shipped manifests, in `animations/`.
+pub const ANIMATIONS: &[&str] = &["bounce.toml", "flythrough.toml", "fog.toml", "orbit.toml"];
+
+/// The repository's root.
+pub fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The paths of the shipped scenes.
+pub fn scenes() -> Vec<PathBuf> {
+    SCENES
+        .iter()
+        .map(|n| root().join("scenes").join(n))
+        .collect()
+}
+
+/// The paths of the shipped manifests.
+pub fn animations() -> Vec<PathBuf> {
+    ANIMATIONS
+        .iter()
+        .map(|n| root().join("animations").join(n))
+        .collect()
+}
