@@ -331,3 +331,34 @@ fn entries_of(dir: &Path) -> Vec<String> {
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect()
 }
+
+#[test]
+fn a_manifest_read_through_dev_stdin_is_the_file_behind_it() {
+    // `animate status /dev/stdin < m.toml` is m.toml's status: its scene and its frame
+    // folder beside it, not `/dev/stdin-frames`.
+    let (dir, manifest) = project(&circle_manifest(""));
+    animate()
+        .arg(&manifest)
+        .args(["-q", "--frames", "0-3"])
+        .assert()
+        .success();
+    let out = Command::new(assert_cmd::cargo::cargo_bin("animate"))
+        .args(["status", "/dev/stdin"])
+        .stdin(std::fs::File::open(&manifest).unwrap())
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        !text.contains("/dev/stdin-frames") && !err.contains("/dev/"),
+        "{text}{err}"
+    );
+    assert!(text.contains(" up to date:       4  0-3\n"), "{text}{err}");
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "frames 4-11 are missing: {text}"
+    );
+    let folder = std::fs::canonicalize(dir.path().join("frames")).unwrap();
+    assert!(text.contains(&folder.display().to_string()), "{text}");
+}

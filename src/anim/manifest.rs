@@ -176,6 +176,8 @@ impl Manifest {
     /// Reads and validates the manifest at `path`; relative paths inside it are resolved
     /// against its folder.
     pub fn load(path: &Path) -> Result<Manifest, ManifestError> {
+        let resolved = through_descriptor(path);
+        let path = resolved.as_deref().unwrap_or(path);
         let limit = crate::limits::MAX_MANIFEST_BYTES;
         let read = crate::input::read_regular(path, limit, "manifest");
         let bytes = read.map_err(|source| ManifestError::Io {
@@ -327,6 +329,55 @@ impl Source<'_> {
             output,
             check: raw.check.map(|c| self.check(c, frames)).transpose()?,
         })
+    }
+}
+
+/// A manifest named through a descriptor link (`/dev/stdin`, `/dev/fd/N`, `/proc/…/fd/N`)
+/// is the file the link leads to: its folder, not `/dev`, is where its scene and its
+/// frames are found (`animate status /dev/stdin < shots/a.toml` is `shots/a.toml`'s
+/// status). Other paths, symbolic links included, are taken as written.
+fn through_descriptor(path: &Path) -> Option<std::path::PathBuf> {
+    let under = |p: &str| path.starts_with(p);
+    if !(under("/dev") || under("/proc")) {
+        return None;
+    }
+    let real = std::fs::canonicalize(path).ok()?;
+    let leaves = !(real.starts_with("/dev") || real.starts_with("/proc"));
+    (leaves && real.is_file()).then_some(real)
+}
+
+#[cfg(test)]
+mod descriptor_tests {
+    #[test]
+    fn a_descriptor_link_is_the_file_it_leads_to() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("a.toml");
+        std::fs::write(&file, "").unwrap();
+        let opened = std::fs::File::open(&file).unwrap();
+        // This process's own descriptor of the file, as /dev/stdin would be a shell's.
+        let link = std::path::PathBuf::from("/proc/self/fd").join(fd_of(&opened));
+        let real = std::fs::canonicalize(&file).unwrap();
+        assert_eq!(super::through_descriptor(&link), Some(real));
+        assert_eq!(super::through_descriptor(&file), None);
+        assert_eq!(
+            super::through_descriptor(std::path::Path::new("/dev/null")),
+            None
+        );
+    }
+
+    /// The descriptor number of `file`, found by the link that leads to it.
+    fn fd_of(file: &std::fs::File) -> String {
+        let want = file.metadata().unwrap();
+        for entry in std::fs::read_dir("/proc/self/fd").unwrap() {
+            let entry = entry.unwrap();
+            if let Ok(m) = std::fs::metadata(entry.path()) {
+                use std::os::unix::fs::MetadataExt;
+                if m.ino() == want.ino() && m.dev() == want.dev() {
+                    return entry.file_name().to_string_lossy().into_owned();
+                }
+            }
+        }
+        panic!("no descriptor leads to the file");
     }
 }
 
