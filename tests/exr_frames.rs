@@ -251,6 +251,13 @@ fn resume_and_status_treat_exr_frames_like_the_others() {
         before
     );
     animate().arg("status").arg(&manifest).assert().code(0);
+    // --verify decodes EXR frames too (their beauty, at the frame's size).
+    animate()
+        .arg("status")
+        .arg(&manifest)
+        .arg("--verify")
+        .assert()
+        .code(0);
     // A frame cut short is stale, not up to date.
     let f = frames.join("frame_0005.exr");
     let bytes = std::fs::read(&f).unwrap();

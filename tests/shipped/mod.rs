@@ -25,11 +25,19 @@ pub const SCENES: &[&str] = &[
     "13-exp-fog.txt",
     "14-exp2-fog.txt",
     "bounce.txt",
+    "glass-cluster.txt",
     "orbit.txt",
 ];
 
 /// The shipped manifests, in `animations/`.
-pub const ANIMATIONS: &[&str] = &["bounce.toml", "flythrough.toml", "fog.toml", "orbit.toml"];
+pub const ANIMATIONS: &[&str] = &[
+    "bounce.toml",
+    "flythrough.toml",
+    "fog.toml",
+    "orbit-passes.toml",
+    "orbit.toml",
+    "turn-to-glass.toml",
+];
 
 /// The repository's root.
 pub fn root() -> &'static Path {

@@ -115,11 +115,16 @@ fn inspect_file(
                 .map_err(|e| e.to_string())?;
             header_record(&head, format)
         }
-        #[allow(unreachable_patterns)]
-        _ => Record {
-            digest: recorded_digest(path, format),
-            manifest: None,
-        },
+        ImageFormat::Exr(_) => {
+            // Every chunk must be there and readable; the record is in the header.
+            if !complete(path, format, width, height) {
+                return Err("cut short, or a chunk cannot be read".into());
+            }
+            Record {
+                digest: recorded_digest(path, format),
+                manifest: crate::output::exr::read_text(path, MANIFEST_KEY),
+            }
+        }
     };
     if verify {
         decode(path, format, width, height)?;
@@ -266,6 +271,14 @@ fn header_record(head: &[u8], format: ImageFormat) -> Record {
 fn decode(path: &Path, format: ImageFormat, width: u32, height: u32) -> Result<(), String> {
     if format == ImageFormat::Raw {
         return Ok(()); // its bytes were hashed already
+    }
+    if format.is_layered() {
+        let (w, h, _) =
+            crate::output::exr::read_beauty(path).map_err(|e| format!("cannot decode it: {e}"))?;
+        if (w, h) != (width, height) {
+            return Err(format!("it is {w}×{h}, not {width}×{height}"));
+        }
+        return Ok(());
     }
     let image = image::ImageReader::open(path)
         .and_then(|r| r.with_guessed_format())
