@@ -215,35 +215,37 @@ pub fn read_beauty(path: &Path) -> Result<(u32, u32, Vec<[f32; 3]>), String> {
     Ok((w, h, pixels))
 }
 
-/// The string attribute `key` of an EXR file's header, read without its pixels.
-pub fn read_text(path: &Path, key: &str) -> Option<String> {
-    let meta = MetaData::read_from_file(path, false).ok()?;
-    let header = meta.headers.first()?;
-    match header.own_attributes.other.get(&text(key))? {
-        AttributeValue::Text(t) => Some(String::from_utf8_lossy(t.bytes()).into_owned()),
-        _ => None,
-    }
-}
-
 /// Whether an EXR file of `width`×`height` is whole: its header reads, with that size,
 /// and every chunk its offset table names is there.
 pub fn complete(path: &Path, width: u32, height: u32) -> bool {
-    let Ok(file) = std::fs::File::open(path) else {
-        return false;
-    };
-    let Ok(reader) =
+    texts_if_whole(path, width, height).is_some()
+}
+
+/// The string attributes of the header of an EXR file of `width`×`height`, from one
+/// reading of the file, when it is whole (as `complete` says); `None` otherwise.
+pub fn texts_if_whole(path: &Path, width: u32, height: u32) -> Option<Vec<(String, String)>> {
+    let file = std::fs::File::open(path).ok()?;
+    let reader =
         exr::block::reader::Reader::read_from_buffered(std::io::BufReader::new(file), false)
-    else {
-        return false;
-    };
-    let size = reader.headers().first().map(|h| h.layer_size);
-    if size != Some(Vec2(width as usize, height as usize)) {
-        return false;
+            .ok()?;
+    let header = reader.headers().first()?;
+    if header.layer_size != Vec2(width as usize, height as usize) {
+        return None;
     }
-    match reader.all_chunks(false) {
-        Ok(chunks) => chunks.into_iter().all(|c| c.is_ok()),
-        Err(_) => false,
-    }
+    let texts = header
+        .own_attributes
+        .other
+        .iter()
+        .filter_map(|(name, value)| match value {
+            AttributeValue::Text(t) => Some((
+                String::from_utf8_lossy(name.bytes()).into_owned(),
+                String::from_utf8_lossy(t.bytes()).into_owned(),
+            )),
+            _ => None,
+        })
+        .collect();
+    let chunks = reader.all_chunks(false).ok()?;
+    chunks.into_iter().all(|c| c.is_ok()).then_some(texts)
 }
 
 #[cfg(test)]

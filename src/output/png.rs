@@ -46,24 +46,6 @@ pub(super) fn encode(
     Ok(())
 }
 
-/// The text a PNG file's chunks give `keyword`, `tEXt` or `iTXt`.
-pub(crate) fn read_text(path: &std::path::Path, keyword: &str) -> Option<String> {
-    let file = std::fs::File::open(path).ok()?;
-    let reader = png::Decoder::new(std::io::BufReader::new(file))
-        .read_info()
-        .ok()?;
-    let info = reader.info();
-    if let Some(c) = info
-        .uncompressed_latin1_text
-        .iter()
-        .find(|c| c.keyword == keyword)
-    {
-        return Some(c.text.clone());
-    }
-    let c = info.utf8_text.iter().find(|c| c.keyword == keyword)?;
-    c.get_text().ok()
-}
-
 fn png_error(e: png::EncodingError) -> OutputError {
     OutputError::Stream(std::io::Error::other(e))
 }

@@ -179,66 +179,40 @@ pub(crate) fn raw_record_path(frame_path: &Path) -> PathBuf {
 /// IEND chunk, a JPEG with its end marker, a PPM or RAW file of exactly its size. A copy
 /// cut short keeps the record at its head, so the record alone does not make a frame.
 pub fn complete(frame_path: &Path, format: ImageFormat, width: u32, height: u32) -> bool {
-    let Ok(bytes) = std::fs::read(frame_path) else {
+    use std::io::{Seek, SeekFrom};
+    let pixels = 3 * u64::from(width) * u64::from(height);
+    if let ImageFormat::Exr(_) = format {
+        return crate::output::exr::complete(frame_path, width, height);
+    }
+    let Ok(mut file) = std::fs::File::open(frame_path) else {
         return false;
     };
-    let pixels = 3 * width as usize * height as usize;
-    match format {
-        ImageFormat::Png => {
-            bytes.ends_with(&[0, 0, 0, 0, b'I', b'E', b'N', b'D', 0xAE, 0x42, 0x60, 0x82])
-        }
-        ImageFormat::Jpeg { .. } => bytes.ends_with(&[0xFF, 0xD9]),
-        ImageFormat::Exr(_) => crate::output::exr::complete(frame_path, width, height),
-        ImageFormat::Raw => bytes.len() == pixels,
-        ImageFormat::Ppm => {
-            bytes.len() >= pixels && {
-                let head = String::from_utf8_lossy(&bytes[..bytes.len() - pixels]);
-                head.starts_with("P6\n") && head.ends_with(&format!("\n{width} {height}\n255\n"))
-            }
-        }
-    }
-}
-
-/// The digest a frame file records, if it can be read: `None` for a missing or foreign
-/// file (which is then stale, never an error).
-pub(crate) fn recorded_digest(frame_path: &Path, format: ImageFormat) -> Option<String> {
-    let head = |n: u64| -> Option<Vec<u8>> {
+    let Ok(len) = file.metadata().map(|m| m.len()) else {
+        return false;
+    };
+    // The last `n` bytes, or the first: only what the check looks at is read.
+    let mut tail = |n: u64| -> Option<Vec<u8>> {
+        file.seek(SeekFrom::Start(len.checked_sub(n)?)).ok()?;
         let mut bytes = Vec::new();
-        std::fs::File::open(frame_path)
-            .ok()?
-            .take(n)
-            .read_to_end(&mut bytes)
-            .ok()?;
+        (&mut file).take(n).read_to_end(&mut bytes).ok()?;
         Some(bytes)
     };
-    let in_lines = |text: &str, prefix: &str| {
-        text.lines()
-            .find_map(|l| l.strip_prefix(prefix).map(|d| d.trim().to_string()))
-    };
     match format {
-        // tEXt, or iTXt when a name in the stamp is not Latin-1.
-        ImageFormat::Png => crate::output::png::read_text(frame_path, DIGEST_KEY),
-        ImageFormat::Exr(_) => crate::output::exr::read_text(frame_path, DIGEST_KEY),
-        ImageFormat::Jpeg { .. } => {
-            let bytes = head(70_000)?;
-            if bytes.len() < 6 || bytes[..4] != [0xFF, 0xD8, 0xFF, 0xFE] {
-                return None;
-            }
-            let len = usize::from(u16::from_be_bytes([bytes[4], bytes[5]]));
-            let text = bytes.get(6..4 + len)?;
-            in_lines(&String::from_utf8_lossy(text), &format!("{DIGEST_KEY}: "))
-        }
+        ImageFormat::Png => tail(12)
+            .is_some_and(|b| b == [0, 0, 0, 0, b'I', b'E', b'N', b'D', 0xAE, 0x42, 0x60, 0x82]),
+        ImageFormat::Jpeg { .. } => tail(2).is_some_and(|b| b == [0xFF, 0xD9]),
+        ImageFormat::Raw => len == pixels,
         ImageFormat::Ppm => {
-            let bytes = head(4096)?;
-            in_lines(
-                &String::from_utf8_lossy(&bytes),
-                &format!("# {DIGEST_KEY}: "),
-            )
+            len >= pixels && {
+                let mut head = Vec::new();
+                let read = (&mut file).take(len - pixels).read_to_end(&mut head);
+                let head = String::from_utf8_lossy(&head);
+                read.is_ok()
+                    && head.starts_with("P6\n")
+                    && head.ends_with(&format!("\n{width} {height}\n255\n"))
+            }
         }
-        ImageFormat::Raw => {
-            let text = std::fs::read_to_string(raw_record_path(frame_path)).ok()?;
-            in_lines(&text, &format!("{DIGEST_KEY}: "))
-        }
+        ImageFormat::Exr(_) => unreachable!("answered above"),
     }
 }
 

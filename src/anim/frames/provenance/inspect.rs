@@ -13,7 +13,7 @@
 //! With `verify`, the image is also decoded whole (PNG's zlib checksums, JPEG's
 //! entropy-coded data). A frame that fails any of this is `Damaged` (to be rendered again).
 
-use super::{complete, raw_record_path, recorded_digest, DIGEST_KEY};
+use super::{complete, raw_record_path, DIGEST_KEY};
 use crate::input::open_regular;
 use crate::limits::MAX_FRAME_BYTES;
 use crate::output::ImageFormat;
@@ -117,13 +117,9 @@ fn inspect_file(
         }
         ImageFormat::Exr(_) => {
             // Every chunk must be there and readable; the record is in the header.
-            if !complete(path, format, width, height) {
-                return Err("cut short, or a chunk cannot be read".into());
-            }
-            Record {
-                digest: recorded_digest(path, format),
-                manifest: crate::output::exr::read_text(path, MANIFEST_KEY),
-            }
+            let texts = crate::output::exr::texts_if_whole(path, width, height)
+                .ok_or("cut short, or a chunk cannot be read")?;
+            Record::from_pairs(texts.iter().map(|(k, v)| (k.as_str(), v.as_str())))
         }
     };
     if verify {

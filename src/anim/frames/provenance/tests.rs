@@ -47,6 +47,14 @@ fn values_count_not_bytes() {
     assert!(tracked[2] != base[2] && tracked[3] != base[3]);
 }
 
+/// The digest `status` reads from a frame file of 2×2 pixels: that of a sound file only.
+fn recorded_digest(path: &Path, format: ImageFormat) -> Option<String> {
+    match inspect(path, format, 2, 2, false) {
+        Inspection::Sound(record) => record.digest,
+        Inspection::Missing | Inspection::Damaged(_) => None,
+    }
+}
+
 #[test]
 fn every_format_carries_its_digest() {
     let dir = tempfile::tempdir().unwrap();
