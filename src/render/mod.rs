@@ -63,18 +63,7 @@ pub fn render(
     let count = pixels
         .par_chunks_mut(row_len)
         .enumerate()
-        .map(|(j, row)| {
-            let mut count = RayCount::default();
-            if control::stop_row() {
-                return count; // cancelled: the caller discards the frame
-            }
-            for (i, px) in row.chunks_exact_mut(3).enumerate() {
-                let c = pixel(tracer, view, camera, i as f64, j as f64, n, &mut count);
-                px.copy_from_slice(&[to_byte(c.x), to_byte(c.y), to_byte(c.z)]);
-            }
-            control::row_done();
-            count
-        })
+        .map(|(j, row)| draw_row(tracer, view, camera, j, n, row))
         .reduce(RayCount::default, |a, b| a + b);
     let frame = Frame {
         width,
@@ -82,6 +71,30 @@ pub fn render(
         pixels,
     };
     (frame, count)
+}
+
+/// Draws row `j` into `row` (its width·3 bytes) with n×n samples a pixel, unless the
+/// render was cancelled (then the row is left as it is and the caller discards the frame);
+/// counts the row as done. `render` and `render_observed` draw every row this way.
+#[inline]
+fn draw_row(
+    tracer: &Tracer,
+    view: Option<&TileView>,
+    camera: &Camera,
+    j: usize,
+    n: u32,
+    row: &mut [u8],
+) -> RayCount {
+    let mut count = RayCount::default();
+    if control::stop_row() {
+        return count;
+    }
+    for (i, px) in row.chunks_exact_mut(3).enumerate() {
+        let c = pixel(tracer, view, camera, i as f64, j as f64, n, &mut count);
+        px.copy_from_slice(&[to_byte(c.x), to_byte(c.y), to_byte(c.z)]);
+    }
+    control::row_done();
+    count
 }
 
 /// Adds, for every pixel, its colour clamped to 0..1 (the mean of its n×n clamped samples

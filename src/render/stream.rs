@@ -1,14 +1,14 @@
 //! `render` with an observer: the image is drawn in bands of whole rows, the rows of a
 //! band in parallel as `render` draws them, and each finished band is handed to the
-//! observer (a tev display, say) before the next starts. Every pixel goes through the
-//! same `pixel` and `to_byte` as `render`'s, so the frame, and every band streamed, is
-//! exactly `render`'s bytes.
+//! observer (a tev display, say) before the next starts. Every row goes through the
+//! same `draw_row` as `render`'s, so the frame, and every band streamed, is exactly
+//! `render`'s bytes.
 //!
 //! ```text
 //! render_observed(&tracer, &camera, w, h, samples, 16, &|y0, rows| tev.rows("img", w, y0, rows))
 //! ```
 
-use super::{pixel, to_byte, Frame};
+use super::{draw_row, Frame};
 use crate::accel::TileView;
 use crate::camera::Camera;
 use crate::trace::{RayCount, Tracer};
@@ -48,19 +48,7 @@ pub fn render_observed(
             + rows
                 .par_chunks_mut(row_len)
                 .enumerate()
-                .map(|(dj, row)| {
-                    let mut count = RayCount::default();
-                    if super::control::stop_row() {
-                        return count; // cancelled: the caller discards the frame
-                    }
-                    let j = (j0 + dj) as f64;
-                    for (i, px) in row.chunks_exact_mut(3).enumerate() {
-                        let c = pixel(tracer, view, camera, i as f64, j, n, &mut count);
-                        px.copy_from_slice(&[to_byte(c.x), to_byte(c.y), to_byte(c.z)]);
-                    }
-                    super::control::row_done();
-                    count
-                })
+                .map(|(dj, row)| draw_row(tracer, view, camera, j0 + dj, n, row))
                 .reduce(RayCount::default, |a, b| a + b);
         observe(j0 as u32, rows);
     }
