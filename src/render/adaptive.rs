@@ -160,6 +160,35 @@ pub fn render_add_with(
     }
 }
 
+/// The hash of a lattice point for the sample maps: the two coordinates packed and
+/// multiplied by an odd constant (Fibonacci hashing), high half folded in. The keys are small distinct integer
+/// pairs chosen by the render, not by an adversary, so SipHash's resistance buys nothing
+/// and its cost was paid on every finer sample.
+#[derive(Default)]
+struct PointHasher(u64);
+
+impl std::hash::Hasher for PointHasher {
+    fn finish(&self) -> u64 {
+        // The product's high half (which both coordinates reach) folded into its low
+        // half, whose bits alone would see only y: the table indexes by the low bits.
+        let h = self.0.wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        h ^ (h >> 32)
+    }
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.0 = self.0.rotate_left(8) ^ u64::from(b);
+        }
+    }
+    fn write_u32(&mut self, v: u32) {
+        self.0 = self.0 << 32 | u64::from(v);
+    }
+}
+
+type BuildPointHasher = std::hash::BuildHasherDefault<PointHasher>;
+
+/// The finer samples of one pixel row, by lattice point.
+type SampleMap = HashMap<(u32, u32), Color, BuildPointHasher>;
+
 /// One traced lattice: the pixel corners, and the finer samples traced once on demand.
 struct Lattice<'a> {
     tracer: &'a Tracer<'a>,
@@ -171,7 +200,7 @@ struct Lattice<'a> {
     /// The pixel corners, (width+1)·(height+1), rows top to bottom.
     corners: Vec<Color>,
     /// The finer samples, one map per pixel row (its inside and its bottom edge).
-    memo: Vec<Mutex<HashMap<(u32, u32), Color>>>,
+    memo: Vec<Mutex<SampleMap>>,
 }
 
 impl Lattice<'_> {
