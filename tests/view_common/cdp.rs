@@ -136,31 +136,40 @@ impl Browser {
         }
     }
 
-    /// The value of a JavaScript expression (promises awaited).
-    pub fn eval(&mut self, expr: &str) -> Value {
+    /// The value of a JavaScript expression (promises awaited), or the
+    /// exception it threw.
+    pub fn try_eval(&mut self, expr: &str) -> Result<Value, Value> {
         let r = self.call(
             "Runtime.evaluate",
             json!({"expression": expr, "returnByValue": true, "awaitPromise": true}),
         );
-        assert!(
-            r["exceptionDetails"].is_null(),
-            "{expr}: {}",
-            r["exceptionDetails"]
-        );
-        r["result"]["value"].clone()
+        match r["exceptionDetails"].is_null() {
+            true => Ok(r["result"]["value"].clone()),
+            false => Err(r["exceptionDetails"].clone()),
+        }
     }
 
-    /// Waits up to `limit` for `expr` to be truthy; its value then.
+    /// The value of a JavaScript expression (promises awaited); an exception fails the test.
+    pub fn eval(&mut self, expr: &str) -> Value {
+        self.try_eval(expr)
+            .unwrap_or_else(|e| panic!("{expr}: {e}"))
+    }
+
+    /// Waits up to `limit` for `expr` to be truthy; its value then. An
+    /// exception counts as "not yet" (right after `navigate` the document may
+    /// have no body), and the last one is shown if the time runs out.
     pub fn wait_for(&mut self, expr: &str, limit: Duration) -> Value {
         let start = Instant::now();
         loop {
-            let v = self.eval(expr);
-            if !(v.is_null() || v == json!(false) || v == json!("") || v == json!(0)) {
-                return v;
+            let v = self.try_eval(expr);
+            if let Ok(v) = &v {
+                if !(v.is_null() || *v == json!(false) || *v == json!("") || *v == json!(0)) {
+                    return v.clone();
+                }
             }
             assert!(
                 start.elapsed() < limit,
-                "still false after {limit:?}: {expr}"
+                "still false after {limit:?}: {expr} (last: {v:?})"
             );
             std::thread::sleep(Duration::from_millis(10));
         }
