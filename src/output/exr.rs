@@ -184,15 +184,16 @@ pub(crate) fn half_keeping_byte(c: f64) -> f16 {
     v
 }
 
-/// The beauty of an EXR file as RGB floats, rows top to bottom, with its size.
-pub fn read_beauty(path: &Path) -> Result<(u32, u32, Vec<[f32; 3]>), String> {
+/// The beauty of the EXR file `bytes` as RGB floats, rows top to bottom, with its size
+/// (`read::read_beauty` reads the file).
+pub(super) fn read_beauty(bytes: &[u8]) -> Result<(u32, u32, Vec<[f32; 3]>), String> {
     let image = read()
         .no_deep_data()
         .largest_resolution_level()
         .all_channels()
         .first_valid_layer()
         .all_attributes()
-        .from_file(path)
+        .from_buffered(std::io::Cursor::new(bytes))
         .map_err(|e| e.to_string())?;
     let layer = &image.layer_data;
     let find = |name: &str| {
@@ -202,7 +203,7 @@ pub fn read_beauty(path: &Path) -> Result<(u32, u32, Vec<[f32; 3]>), String> {
             .iter()
             .find(|c| c.name.eq(name))
             .map(|c| c.sample_data.values_as_f32().collect::<Vec<f32>>())
-            .ok_or_else(|| format!("{}: no {name} channel", path.display()))
+            .ok_or_else(|| format!("no {name} channel"))
     };
     let (r, g, b) = (find("R")?, find("G")?, find("B")?);
     let (w, h) = (layer.size.width() as u32, layer.size.height() as u32);

@@ -12,6 +12,8 @@
 //! The 8-bit formats take the beauty through the clamp-and-round of §2 (`Layers::to_frame`,
 //! which `render` does directly for the default path) and drop the passes.
 //!
+//! `read_rgb` reads a frame file of any of them back as its 8-bit picture (`read`).
+//!
 //! `write_atomic` writes to a temporary file in the destination folder and renames it into
 //! place, so a file under its final name is always complete.
 
@@ -20,6 +22,9 @@ mod jpeg;
 pub(crate) mod png;
 mod ppm;
 mod raw;
+mod read;
+
+pub use read::{beauty_bytes, read_beauty, read_rgb, ReadError};
 
 use crate::passes::{Layers, PassSet};
 use crate::render::Frame;

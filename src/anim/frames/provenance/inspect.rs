@@ -264,32 +264,18 @@ fn header_record(head: &[u8], format: ImageFormat) -> Record {
 }
 
 /// Decodes the whole image (`status --verify`): its pixels must come out, at its size.
-fn decode(path: &Path, format: ImageFormat, width: u32, height: u32) -> Result<(), String> {
+fn decode(
+    path: &Path,
+    format: ImageFormat,
+    width: u32,
+    height: u32,
+) -> Result<(), String> {
     if format == ImageFormat::Raw {
         return Ok(()); // its bytes were hashed already
     }
-    if format.is_layered() {
-        let (w, h, _) =
-            crate::output::exr::read_beauty(path).map_err(|e| format!("cannot decode it: {e}"))?;
-        if (w, h) != (width, height) {
-            return Err(format!("it is {w}×{h}, not {width}×{height}"));
-        }
-        return Ok(());
-    }
-    let image = image::ImageReader::open(path)
-        .and_then(|r| r.with_guessed_format())
-        .map_err(|e| format!("cannot read it: {e}"))?;
-    let image = image
-        .decode()
-        .map_err(|e| format!("cannot decode it: {e}"))?;
-    if (image.width(), image.height()) != (width, height) {
-        return Err(format!(
-            "it is {}×{}, not {width}×{height}",
-            image.width(),
-            image.height()
-        ));
-    }
-    Ok(())
+    crate::output::read_rgb(path, format, width, height)
+        .map(drop)
+        .map_err(|e| e.to_string())
 }
 
 #[cfg(test)]
