@@ -273,3 +273,29 @@ fn encode_and_verify_read_ppm_raw_and_exr_folders_as_their_pictures() {
         );
     }
 }
+
+#[test]
+fn the_video_gets_the_permissions_of_a_frame() {
+    use std::os::unix::fs::PermissionsExt;
+    if !have_ffmpeg() {
+        return;
+    }
+    let two = circle_manifest("").replace("frames = 12", "frames = 2");
+    let (dir, manifest) = project(&two);
+    animate().arg(&manifest).arg("-q").assert().success();
+    animate()
+        .arg("encode")
+        .arg(&manifest)
+        .arg("-q")
+        .assert()
+        .success();
+    let mode = |p: &std::path::Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o777;
+    let frame = mode(&dir.path().join("frames/frame_0000.png"));
+    // Not tempfile's private 0600: what the umask leaves of 0666, as for a frame.
+    assert_eq!(mode(&dir.path().join("frames.mp4")), frame);
+    assert_ne!(
+        frame & 0o044,
+        0,
+        "the umask of the test leaves frames readable"
+    );
+}

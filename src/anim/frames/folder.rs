@@ -11,6 +11,7 @@
 
 use super::provenance::{raw_record_path, RAW_RECORDS};
 use crate::anim::project::Animation;
+use crate::output::temporary_target;
 use std::path::{Path, PathBuf};
 
 /// The frame number a file name `name` stands for under `anim`'s name pattern, whatever
@@ -50,14 +51,6 @@ pub fn beyond(anim: &Animation, dir: &Path) -> Vec<(u32, PathBuf)> {
         .collect();
     found.sort();
     found
-}
-
-/// Whether `name` is a temporary of `tempfile` beside a file named `target`-like:
-/// `.TARGET.XXXXXX.tmp`, returning TARGET.
-fn temporary_target(name: &str) -> Option<&str> {
-    let inner = name.strip_prefix('.')?.strip_suffix(".tmp")?;
-    let (target, random) = inner.rsplit_once('.')?;
-    (random.len() == 6 && random.bytes().all(|b| b.is_ascii_alphanumeric())).then_some(target)
 }
 
 /// The hidden temporaries of frames (and RAW records) in `dir` that a run left.
@@ -143,16 +136,5 @@ mod tests {
         assert_eq!(frame_of(&anim, "f_0012x.jpg"), None);
         assert_eq!(frame_of(&anim, "f_+012x.png"), None);
         assert_eq!(frame_of(&anim, "g_012x.png"), None);
-    }
-
-    #[test]
-    fn temporaries_are_named_after_their_target() {
-        assert_eq!(
-            temporary_target(".frame_0001.png.a1B2c3.tmp"),
-            Some("frame_0001.png")
-        );
-        assert_eq!(temporary_target("frame_0001.png.a1B2c3.tmp"), None);
-        assert_eq!(temporary_target(".frame_0001.png.a1B2.tmp"), None);
-        assert_eq!(temporary_target(".notes.tmp"), None);
     }
 }

@@ -153,18 +153,8 @@ impl Ffmpeg {
         fps: f64,
         encoding: &Encoding,
     ) -> Result<Ffmpeg, AnimError> {
-        let folder = match file.parent() {
-            Some(d) if !d.as_os_str().is_empty() => d,
-            _ => Path::new("."),
-        };
-        let name = file
-            .file_name()
-            .map_or("video".into(), |n| n.to_string_lossy());
         let ext = file.extension().map_or("".into(), |e| e.to_string_lossy());
-        let temp = tempfile::Builder::new()
-            .prefix(&format!(".{name}."))
-            .suffix(&format!(".{ext}"))
-            .tempfile_in(folder)
+        let temp = crate::output::temp_beside_as(file, &format!(".{ext}"))
             .map_err(|e| AnimError::VideoTarget {
                 path: file.to_path_buf(),
                 reason: format!("cannot create a file in its folder: {e}"),
