@@ -217,7 +217,7 @@ pub fn complete(frame_path: &Path, format: ImageFormat, width: u32, height: u32)
 }
 
 mod inspect;
-pub(crate) use inspect::{inspect, pixels_line, Inspection, Record};
+pub(crate) use inspect::{decode, inspect, pixels_line, Inspection};
 
 #[cfg(test)]
 mod tests;

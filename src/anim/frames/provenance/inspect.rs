@@ -264,7 +264,7 @@ fn header_record(head: &[u8], format: ImageFormat) -> Record {
 }
 
 /// Decodes the whole image (`status --verify`): its pixels must come out, at its size.
-fn decode(
+pub(crate) fn decode(
     path: &Path,
     format: ImageFormat,
     width: u32,
