@@ -22,7 +22,6 @@ use crate::render::to_byte;
 use exr::meta::attribute::Chromaticities;
 use exr::prelude::*;
 use std::io::Write;
-use std::path::Path;
 use std::result::Result;
 
 /// Encodes `layers` with `meta` as string attributes.
@@ -216,19 +215,15 @@ pub(super) fn read_beauty(bytes: &[u8]) -> Result<(u32, u32, Vec<[f32; 3]>), Str
     Ok((w, h, pixels))
 }
 
-/// Whether an EXR file of `width`×`height` is whole: its header reads, with that size,
-/// and every chunk its offset table names is there.
-pub fn complete(path: &Path, width: u32, height: u32) -> bool {
-    texts_if_whole(path, width, height).is_some()
-}
-
-/// The string attributes of the header of an EXR file of `width`×`height`, from one
-/// reading of the file, when it is whole (as `complete` says); `None` otherwise.
-pub fn texts_if_whole(path: &Path, width: u32, height: u32) -> Option<Vec<(String, String)>> {
-    let file = std::fs::File::open(path).ok()?;
-    let reader =
-        exr::block::reader::Reader::read_from_buffered(std::io::BufReader::new(file), false)
-            .ok()?;
+/// The string attributes of the header of the EXR file `file` reads, of `width`×`height`,
+/// from one reading, when it is whole (its header reads, with that size, and every chunk
+/// its offset table names is there and readable); `None` otherwise.
+pub fn texts_if_whole(
+    file: impl std::io::Read + std::io::Seek,
+    width: u32,
+    height: u32,
+) -> Option<Vec<(String, String)>> {
+    let reader = exr::block::reader::Reader::read_from_buffered(file, false).ok()?;
     let header = reader.headers().first()?;
     if header.layer_size != Vec2(width as usize, height as usize) {
         return None;
