@@ -19,14 +19,7 @@ use std::path::{Path, PathBuf};
 fn frame_of(anim: &Animation, name: &str) -> Option<u32> {
     let out = &anim.manifest.output;
     let stem = name.strip_suffix(&format!(".{}", out.format.extension()))?;
-    let pattern = &out.name;
-    let (head, tail, base) = match pattern.find('#') {
-        Some(start) => {
-            let run = pattern[start..].bytes().take_while(|&b| b == b'#').count();
-            (pattern[..start].to_string(), &pattern[start + run..], run)
-        }
-        None => (format!("{pattern}_"), "", 4),
-    };
+    let (head, base, tail) = out.parts();
     let digits = stem.strip_prefix(head.as_str())?.strip_suffix(tail)?;
     if digits.len() < base || !digits.bytes().all(|b| b.is_ascii_digit()) {
         return None;
