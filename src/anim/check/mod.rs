@@ -214,21 +214,34 @@ fn draw(anim: &Animation, frame: u32) -> Result<Reference, AnimError> {
     Ok((layers.to_frame(), Some(floats)))
 }
 
-/// Reads the reference of `frame`: an EXR reference's float beauty and its picture, or
-/// an 8-bit reference that `probe_reference` accepts.
+/// Reads the reference of `frame` (that `probe_reference` accepted) with one size check:
+/// an EXR reference's float beauty and its picture, or an 8-bit reference's picture.
 fn load_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<Reference, AnimError> {
+    let path = reference_path(anim, refs, frame);
+    let (width, height) = (anim.width, anim.height);
     if anim.format().is_layered() {
-        let path = probe_reference(anim, refs, frame)?;
-        let beauty = crate::output::read_beauty(&path, anim.width, anim.height)
+        let beauty = crate::output::read_beauty(&path, width, height)
             .map_err(|e| unreadable(frame, &path, e))?;
-        let picture = Frame {
-            width: anim.width,
-            height: anim.height,
-            pixels: crate::output::beauty_bytes(&beauty),
-        };
-        return Ok((picture, Some(beauty)));
+        let pixels = crate::output::beauty_bytes(&beauty);
+        return Ok((
+            Frame {
+                width,
+                height,
+                pixels,
+            },
+            Some(beauty),
+        ));
     }
-    load_picture(anim, refs, frame).map(|f| (f, None))
+    let pixels = crate::output::read_rgb(&path, ImageFormat::Png, width, height)
+        .map_err(|e| unreadable(frame, &path, e))?;
+    Ok((
+        Frame {
+            width,
+            height,
+            pixels,
+        },
+        None,
+    ))
 }
 
 /// Refuses a reference that is missing, unreadable or of another size, from its header
@@ -266,18 +279,6 @@ fn probe_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<PathBuf,
         )));
     }
     Ok(path)
-}
-
-/// Reads an 8-bit reference that `probe_reference` accepted.
-fn load_picture(anim: &Animation, refs: &Path, frame: u32) -> Result<Frame, AnimError> {
-    let path = probe_reference(anim, refs, frame)?;
-    let pixels = crate::output::read_rgb(&path, ImageFormat::Png, anim.width, anim.height)
-        .map_err(|e| unreadable(frame, &path, e))?;
-    Ok(Frame {
-        width: anim.width,
-        height: anim.height,
-        pixels,
-    })
 }
 
 /// The refusal of a reference that gives no picture of the frame's size.
