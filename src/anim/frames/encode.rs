@@ -15,9 +15,10 @@ use super::video::{check_target, Ffmpeg};
 use crate::anim::error::AnimError;
 use crate::anim::project::Animation;
 use crate::output::read_rgb;
+use crate::process::stopped;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::AtomicUsize;
 use std::time::Instant;
 
 /// The video `encode` makes of `dir` when none is named: `dir` + `.mp4`.
@@ -80,8 +81,8 @@ pub fn encode(
             skipped: 0,
         });
         for frame in 0..frames {
-            if let sig @ 1.. = stop.load(Ordering::SeqCst) {
-                return Err(AnimError::Interrupted(sig as i32));
+            if let Some(sig) = stopped(stop) {
+                return Err(AnimError::Interrupted(sig));
             }
             let start = Instant::now();
             let rgb = pixels(anim, dir, frame)?;

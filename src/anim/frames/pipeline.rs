@@ -26,11 +26,12 @@ use crate::anim::project::Animation;
 use crate::output::{
     encode, temp_beside, write_atomic_layers, write_atomic_with, ImageFormat, OutputError,
 };
+use crate::process::stopped;
 use crate::trace::RayCount;
 use rayon::prelude::*;
 use std::io::Write;
 use std::path::Path;
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::AtomicUsize;
 use std::sync::Mutex;
 use std::time::Instant;
 
@@ -45,14 +46,6 @@ pub struct Summary {
     pub skipped: usize,
     /// All rays cast by the rendered frames, by kind.
     pub rays: RayCount,
-}
-
-/// The signal number held in `stop`, if any.
-fn stopped(stop: &AtomicUsize) -> Option<i32> {
-    match stop.load(Ordering::SeqCst) {
-        0 => None,
-        sig => Some(sig as i32),
-    }
 }
 
 /// A write error with the frame's path in it: the encoder's own errors (a full disk

@@ -24,6 +24,7 @@ use super::run::{Encoding, Policy};
 use crate::anim::error::AnimError;
 use crate::anim::project::Animation;
 use crate::output::ImageFormat;
+use crate::process::{after_stop, stopped};
 use std::io::Read;
 use std::path::Path;
 use std::process::{Child, ChildStdin, Command, Stdio};
@@ -52,14 +53,6 @@ pub fn render_to_video(
     ffmpeg.feed(stop, |input| {
         render_to_stream(anim, frames, input, ImageFormat::Raw, reporter, stop)
     })
-}
-
-/// The signal number held in `stop`, if any.
-fn stopped(stop: &AtomicUsize) -> Option<i32> {
-    match stop.load(Ordering::SeqCst) {
-        0 => None,
-        sig => Some(sig as i32),
-    }
 }
 
 /// Refuses a video target whose folder is missing, that exists (unless `force`), or
@@ -212,18 +205,11 @@ impl Ffmpeg {
         let child = &self.child;
         let result = std::thread::scope(|s| {
             s.spawn(|| {
-                while !done.load(Ordering::SeqCst) {
-                    if stopped(stop).is_some() {
-                        std::thread::sleep(STOP_GRACE);
-                        if !done.load(Ordering::SeqCst) {
-                            if let Ok(mut c) = child.lock() {
-                                let _ = c.kill();
-                            }
-                        }
-                        return;
+                after_stop(stop, &done, STOP_GRACE, |_| {
+                    if let Ok(mut c) = child.lock() {
+                        let _ = c.kill();
                     }
-                    std::thread::sleep(Duration::from_millis(20));
-                }
+                })
             });
             let result = work(&mut input);
             done.store(true, Ordering::SeqCst);
