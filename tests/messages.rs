@@ -48,3 +48,24 @@ fn a_shard_summary_names_the_shard() {
     // Before: the summary ended with the folder alone.
     assert!(err.contains("(shard 2/4)"), "{err}");
 }
+
+#[test]
+fn a_misspelt_track_target_gets_a_did_you_mean() {
+    let keys = "keys = [{ frame = 0, value = [0.0, 1.0, 0.0] }]\n";
+    let track = format!("\n[[track]]\ntarget = \"sphere 1 centre\"\n{keys}");
+    let (_dir, manifest) = project(&circle_manifest(&track));
+    let err = refused(animate().arg("status").arg(&manifest));
+    // Before: "sphere has no field `centre`: expected one of …" alone.
+    assert!(err.contains("anim.toml:19:10: "), "{err}");
+    assert!(
+        err.contains("sphere has no field `centre` (did you mean `center`?)"),
+        "{err}"
+    );
+    let track = format!("\n[[track]]\ntarget = \"shpere 1 center\"\n{keys}");
+    let (_dir, manifest) = project(&circle_manifest(&track));
+    let err = refused(animate().arg("status").arg(&manifest));
+    assert!(
+        err.contains("unknown kind `shpere` (did you mean `sphere`?)"),
+        "{err}"
+    );
+}
