@@ -69,3 +69,13 @@ fn a_misspelt_track_target_gets_a_did_you_mean() {
         "{err}"
     );
 }
+
+#[test]
+fn a_missing_reference_gives_its_hint_once() {
+    let check = "\n[check]\nframes = [0]\nreferences = \"refs\"\n";
+    let (_dir, manifest) = project(&circle_manifest(check));
+    let err = refused(animate().arg("check").arg(&manifest));
+    assert!(err.contains("frame 0: the reference "), "{err}");
+    // Before: "(run `animate bless` first)" in the message and the hint after it.
+    assert_eq!(err.matches("animate bless").count(), 1, "{err}");
+}

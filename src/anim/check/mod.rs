@@ -251,7 +251,7 @@ fn probe_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<PathBuf,
     let path = reference_path(anim, refs, frame);
     if !path.exists() {
         return Err(AnimError::Reference(format!(
-            "frame {frame}: the reference {} is missing (run `animate bless` first)",
+            "frame {frame}: the reference {} is missing",
             path.display()
         )));
     }
