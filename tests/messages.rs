@@ -79,3 +79,17 @@ fn a_missing_reference_gives_its_hint_once() {
     // Before: "(run `animate bless` first)" in the message and the hint after it.
     assert_eq!(err.matches("animate bless").count(), 1, "{err}");
 }
+
+#[test]
+fn a_camera_on_the_point_it_looks_at_is_located() {
+    // The scene's eye is (0, 3, 8): a still camera told to look at it has no direction.
+    let text = "scene = \"scene.txt\"\nframes = 2\n\n[camera]\nlook_at = [0.0, 3.0, 8.0]\n";
+    let (dir, manifest) = project(text);
+    let err = refused(animate().arg(&manifest).arg("-o").arg(dir.path().join("f")));
+    // Before: "frame 0: the camera is placed on the point it looks at", no place; now
+    // the `[camera]` table's.
+    assert!(
+        err.contains("anim.toml:4:1: frame 0: the camera is placed on the point it looks at"),
+        "{err}"
+    );
+}

@@ -52,11 +52,14 @@ pub enum AnimError {
         height: u32,
     },
     /// At this frame the camera's eye coincides with its look-at point, so it has no
-    /// direction (bad input, found before rendering).
-    #[error("frame {frame}: the camera is placed on the point it looks at")]
+    /// direction (bad input, found before rendering); located at the manifest's
+    /// `look_at` object, or its `[camera]` table.
+    #[error("{loc}: frame {frame}: the camera is placed on the point it looks at")]
     Camera {
         /// The first frame where this happens.
         frame: u32,
+        /// Where the manifest sets the camera.
+        loc: FileLoc,
     },
     /// The output (or report) folder cannot be created or used (bad input).
     #[error("cannot use the output folder {}: {}", dir.display(), folder_reason(dir, source))]
@@ -197,7 +200,8 @@ mod tests {
     #[test]
     fn exit_codes() {
         assert_eq!(AnimError::Reference("x".into()).exit_code(), 2);
-        assert_eq!(AnimError::Camera { frame: 3 }.exit_code(), 2);
+        let loc = FileLoc::default();
+        assert_eq!(AnimError::Camera { frame: 3, loc }.exit_code(), 2);
         assert_eq!(AnimError::FfmpegMissing.exit_code(), 2);
         let folder = AnimError::Folder {
             dir: "x".into(),

@@ -151,6 +151,9 @@ pub struct Manifest {
     pub scene: PathBuf,
     /// Where `scene = ...` is written, for errors about the scene file.
     pub scene_loc: FileLoc,
+    /// Where `[camera]` is written (the manifest's start without one), for errors about
+    /// the camera found when frames are drawn.
+    pub camera_loc: FileLoc,
     /// The number of frames of the sequence, 1 to `MAX_FRAMES`; frames are numbered from 0.
     pub frames: u32,
     /// Frames per second, > 0: the time base of the camera and the video.
@@ -205,11 +208,12 @@ impl Manifest {
             return Err(ManifestError::Unknown(found));
         }
         let probe: Probe = source.deserialize()?;
+        let camera_loc = source.loc(probe.camera.as_ref().map_or(0..0, |c| c.span()));
         let kind = probe
             .camera
             .as_ref()
             .and_then(|c| c.get_ref().path.as_ref());
-        match kind.map(|k| (k.get_ref().as_str(), k.span())) {
+        let manifest = match kind.map(|k| (k.get_ref().as_str(), k.span())) {
             None => {
                 let raw: RawManifest<RawStill> = source.deserialize()?;
                 source.manifest(raw, |s, c, _| s.still(c))
@@ -228,7 +232,8 @@ impl Manifest {
                 );
                 Err(source.error(span, message))
             }
-        }
+        };
+        manifest.map(|m| Manifest { camera_loc, ..m })
     }
 }
 
@@ -319,6 +324,7 @@ impl Source<'_> {
             path: self.path.to_path_buf(),
             scene,
             scene_loc,
+            camera_loc: FileLoc::default(),
             frames,
             fps,
             camera,
