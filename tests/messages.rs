@@ -93,3 +93,24 @@ fn a_camera_on_the_point_it_looks_at_is_located() {
         "{err}"
     );
 }
+
+#[test]
+fn the_first_error_in_the_file_is_the_one_reported() {
+    // `samples = 0` on line 4, a negative radius on line 8.
+    let text = "scene = \"scene.txt\"\nframes = 3\n[render]\nsamples = 0\n[camera]\n\
+                path = \"circle\"\ncenter = [0.0, 1.0, 0.0]\nradius = -1.0\nheight = 2.0\n";
+    let (_dir, manifest) = project(text);
+    let err = refused(animate().arg("status").arg(&manifest));
+    // Before: line 8's radius, though line 4 comes first.
+    assert!(err.contains("anim.toml:4:11: "), "{err}");
+    // A track on line 4 the scene does not have, a look_at on line 7 it does not have
+    // either: the track is reported.
+    let text = "scene = \"scene.txt\"\nframes = 3\n[[track]]\ntarget = \"sphere 9 radius\"\n\
+                keys = [{ frame = 0, value = 1.0 }]\n[camera]\nlook_at = \"sphere 7\"\n";
+    let (_dir, manifest) = project(text);
+    let err = refused(animate().arg("status").arg(&manifest));
+    assert!(
+        err.contains("anim.toml:4:10: sphere 9 does not exist"),
+        "{err}"
+    );
+}
