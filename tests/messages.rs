@@ -114,3 +114,27 @@ fn the_first_error_in_the_file_is_the_one_reported() {
         "{err}"
     );
 }
+
+#[test]
+fn bless_counts_what_it_replaced() {
+    let check = "\n[check]\nframes = [0, 5, 9]\nreferences = \"refs\"\n";
+    let (dir, manifest) = project(&circle_manifest(check));
+    let bless = || {
+        let out = animate().arg("bless").arg(&manifest).output().unwrap();
+        assert!(out.status.success(), "{out:?}");
+        String::from_utf8(out.stderr).unwrap()
+    };
+    let err = bless();
+    assert!(err.contains("blessed 3 reference(s) in "), "{err}");
+    assert!(err.trim_end().ends_with(": 3 new"), "{err}");
+    // One reference edited, one removed: blessing again replaces two, one of them with
+    // other pixels, and writes one anew.
+    edit_reference(dir.path(), 5, magenta_block);
+    std::fs::remove_file(dir.path().join("refs/frame_0009.png")).unwrap();
+    let err = bless();
+    // Before: "blessed 3 reference(s) in …" alone.
+    assert!(
+        err.trim_end().ends_with(": 2 replaced (1 changed), 1 new"),
+        "{err}"
+    );
+}

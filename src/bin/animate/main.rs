@@ -215,12 +215,13 @@ fn bless(args: BlessArgs) -> anyhow::Result<Outcome> {
         args.references.as_deref(),
     );
     let (frames, refs) = targets.map_err(report::with_flags)?;
-    let paths = pool(c.threads)?.install(|| check::bless(&anim, &frames, &refs))?;
+    let blessed = pool(c.threads)?.install(|| check::bless(&anim, &frames, &refs))?;
     if !c.quiet {
         eprintln!(
-            "animate: blessed {} reference(s) in {}",
-            paths.len(),
-            refs.display()
+            "animate: blessed {} reference(s) in {}: {}",
+            blessed.len(),
+            refs.display(),
+            check::bless_counts(&blessed)
         );
     }
     Ok(Outcome::Success)
