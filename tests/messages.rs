@@ -138,3 +138,27 @@ fn bless_counts_what_it_replaced() {
         "{err}"
     );
 }
+
+#[test]
+fn paths_are_shown_without_dot_dot() {
+    let (dir, _) = project("");
+    std::fs::create_dir(dir.path().join("sub")).unwrap();
+    let manifest = dir.path().join("sub/m.toml");
+    let text = "scene = \"../scene.txt\"\nframes = 2\n[output]\ndir = \"../out\"\n\
+                [render]\nwidth = 16\nheight = 12\n";
+    std::fs::write(&manifest, text).unwrap();
+    let out = animate().arg(&manifest).output().unwrap();
+    assert!(out.status.success(), "{out:?}");
+    let err = String::from_utf8_lossy(&out.stderr);
+    let folder = dir.path().join("out").display().to_string();
+    // Before: "-> …/sub/../out".
+    assert!(err.trim_end().ends_with(&format!("-> {folder}")), "{err}");
+    let out = animate().arg("status").arg(&manifest).output().unwrap();
+    let table = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        table.starts_with(&format!("{folder}: 2 frame(s)\n")),
+        "{table}"
+    );
+    // The frames are where the manifest said: the folder itself was not renamed.
+    assert!(dir.path().join("out/frame_0000.png").is_file());
+}

@@ -29,6 +29,7 @@ use super::error::AnimError;
 use super::manifest::Manifest;
 use super::project::Animation;
 use super::select::{parse_frames, SelectError};
+use crate::fileloc::shown;
 use crate::output::{write_atomic, ImageFormat};
 use crate::render::Frame;
 use diff::{compare, heat_map};
@@ -219,13 +220,12 @@ fn draw(anim: &Animation, frame: u32) -> Result<Reference, AnimError> {
 fn load_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<Reference, AnimError> {
     if anim.format().is_layered() {
         let path = probe_reference(anim, refs, frame)?;
-        let (w, h, beauty) = crate::output::exr::read_beauty(&path).map_err(|e| {
-            AnimError::Reference(format!("{}: cannot read it: {e}", path.display()))
-        })?;
+        let (w, h, beauty) = crate::output::exr::read_beauty(&path)
+            .map_err(|e| AnimError::Reference(format!("{}: cannot read it: {e}", shown(&path))))?;
         if (w, h) != (anim.width, anim.height) {
             return Err(AnimError::Reference(format!(
                 "frame {frame}: the reference {} is {w}×{h}, the frame is {}×{}",
-                path.display(),
+                shown(&path),
                 anim.width,
                 anim.height
             )));
@@ -252,14 +252,14 @@ fn probe_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<PathBuf,
     if !path.exists() {
         return Err(AnimError::Reference(format!(
             "frame {frame}: the reference {} is missing",
-            path.display()
+            shown(&path)
         )));
     }
     if anim.format().is_layered() {
         return Ok(path);
     }
     let unreadable = |e: &dyn std::fmt::Display| {
-        AnimError::Reference(format!("{}: cannot read it: {e}", path.display()))
+        AnimError::Reference(format!("{}: cannot read it: {e}", shown(&path)))
     };
     let limit = crate::limits::MAX_FRAME_BYTES;
     let (file, _) =
@@ -271,7 +271,7 @@ fn probe_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<PathBuf,
     if (width, height) != (anim.width, anim.height) {
         return Err(AnimError::Reference(format!(
             "frame {frame}: the reference {} is {}×{}, the frame is {}×{}",
-            path.display(),
+            shown(&path),
             width,
             height,
             anim.width,
@@ -285,12 +285,12 @@ fn probe_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<PathBuf,
 fn load_picture(anim: &Animation, refs: &Path, frame: u32) -> Result<Frame, AnimError> {
     let path = probe_reference(anim, refs, frame)?;
     let image = image::open(&path)
-        .map_err(|e| AnimError::Reference(format!("{}: cannot read it: {e}", path.display())))?
+        .map_err(|e| AnimError::Reference(format!("{}: cannot read it: {e}", shown(&path))))?
         .to_rgb8();
     if (image.width(), image.height()) != (anim.width, anim.height) {
         return Err(AnimError::Reference(format!(
             "{}: changed size during the check",
-            path.display()
+            shown(&path)
         )));
     }
     Ok(Frame {

@@ -67,7 +67,7 @@ impl StatusReport {
     /// The report for people: the folder, then a row per state with count and ranges.
     pub fn table(&self, dir: &Path) -> String {
         let total = self.up_to_date.len() + self.stale.len() + self.missing.len();
-        let mut out = format!("{}: {total} frame(s)\n", dir.display());
+        let mut out = format!("{}: {total} frame(s)\n", crate::fileloc::shown(dir));
         for (what, list) in self.rows() {
             out += &format!("{what:>11}: {:>7}  {}\n", list.len(), ranges(list));
         }
