@@ -162,3 +162,45 @@ fn paths_are_shown_without_dot_dot() {
     // The frames are where the manifest said: the folder itself was not renamed.
     assert!(dir.path().join("out/frame_0000.png").is_file());
 }
+
+#[test]
+fn status_says_why_a_frame_is_stale() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    let out = dir.path().join("f");
+    render_into(&manifest, &out, &["--frames", "0-2"]);
+    let status = || {
+        let run = animate()
+            .arg("status")
+            .arg(&manifest)
+            .args(["--frames", "0-2", "--out"])
+            .arg(&out)
+            .output()
+            .unwrap();
+        String::from_utf8(run.stdout).unwrap()
+    };
+    // Twice the samples: the render settings the frames record are not the manifest's.
+    let text = circle_manifest("\n[render]\nsamples = 2\n");
+    std::fs::write(&manifest, text).unwrap();
+    let table = status();
+    // Before: "stale: 3  0-2" and no reason.
+    assert!(
+        table.contains(
+            "0-2: the render settings were 64x48, 1x1 sample(s) per pixel, \
+             now 64x48, 2x2 sample(s) per pixel"
+        ),
+        "{table}"
+    );
+    // Back to one sample, a sphere of another colour in the scene file: nothing the
+    // stamp shows changed, so the record says only that the values did.
+    std::fs::write(&manifest, circle_manifest("")).unwrap();
+    let scene = dir.path().join("scene.txt");
+    let text = std::fs::read_to_string(&scene).unwrap();
+    std::fs::write(&scene, text.replace("1 0.9 0.9 0.9", "1 0.8 0.9 0.9")).unwrap();
+    // Frame 1 cut short.
+    let one = out.join("frame_0001.png");
+    let bytes = std::fs::read(&one).unwrap();
+    std::fs::write(&one, &bytes[..bytes.len() / 2]).unwrap();
+    let table = status();
+    assert!(table.contains("0,2: the scene's values changed"), "{table}");
+    assert!(table.contains("1: damaged: "), "{table}");
+}
