@@ -1,12 +1,14 @@
 //! A place in a text file, after pbrt-v4's `FileLoc`: every located error of the library
-//! (Scene.txt and manifest alike) carries one and prints it as `file:line:column`.
+//! (Scene.txt and manifest alike) carries one and prints it as `file:line:column`, and
+//! every message prints a path the same way (`shown`): `animations/../out/orbit` is
+//! `out/orbit`.
 
 use std::fmt;
 
 /// A position in a text file: 1-based line and column (in characters).
 #[derive(Clone, Debug, PartialEq, Eq, Default)]
 pub struct FileLoc {
-    /// The file's name as the user gave it (printed as is).
+    /// The file's name as the user gave it (printed through `shown`).
     pub file: String,
     /// The line, from 1.
     pub line: usize,
@@ -32,13 +34,59 @@ impl FileLoc {
 
 impl fmt::Display for FileLoc {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}:{}:{}", self.file, self.line, self.column)
+        let file = shown(std::path::Path::new(&self.file));
+        write!(f, "{file}:{}:{}", self.line, self.column)
     }
+}
+
+/// `path` as messages print it: `a/./b/../c` is `a/c`, lexically (no link is followed, and
+/// the path used to open the file is left as it was). A `..` that would climb past the
+/// start of a relative path is kept; one past the root is dropped, like the system does.
+pub fn shown(path: &std::path::Path) -> String {
+    use std::path::Component;
+    let mut parts: Vec<Component> = Vec::new();
+    for part in path.components() {
+        match part {
+            Component::CurDir => {}
+            Component::ParentDir => match parts.last() {
+                Some(Component::Normal(_)) => {
+                    parts.pop();
+                }
+                Some(Component::RootDir | Component::Prefix(_)) => {}
+                _ => parts.push(part),
+            },
+            _ => parts.push(part),
+        }
+    }
+    if parts.is_empty() {
+        return ".".into();
+    }
+    parts
+        .iter()
+        .collect::<std::path::PathBuf>()
+        .display()
+        .to_string()
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn paths_are_shown_lexically_normal() {
+        let s = |p: &str| shown(std::path::Path::new(p));
+        assert_eq!(s("animations/../out/orbit"), "out/orbit");
+        assert_eq!(s("./a/./b/"), "a/b");
+        assert_eq!(s("../a/../../b"), "../../b");
+        assert_eq!(s("/../x/y/.."), "/x");
+        assert_eq!(s("a/.."), ".");
+        let loc = FileLoc {
+            file: "anim/../s.txt".into(),
+            line: 2,
+            column: 3,
+        };
+        assert_eq!(loc.to_string(), "s.txt:2:3");
+    }
 
     #[test]
     fn offsets_to_lines_and_columns() {

@@ -7,7 +7,7 @@
 use super::manifest::ManifestError;
 use super::select::SelectError;
 use crate::exit::Outcome;
-use crate::fileloc::FileLoc;
+use crate::fileloc::{shown, FileLoc};
 use crate::output::OutputError;
 use crate::scene::SceneError;
 use std::path::PathBuf;
@@ -23,7 +23,7 @@ pub enum AnimError {
     Scene(#[from] SceneError),
     /// The scene file the manifest names cannot be read; located at the manifest's
     /// `scene =` line (bad input).
-    #[error("{loc}: scene: cannot read {path}: {source}")]
+    #[error("{loc}: scene: cannot read {}: {source}", shown(std::path::Path::new(.path)))]
     SceneFile {
         /// The manifest's `scene =` value.
         loc: FileLoc,
@@ -42,7 +42,7 @@ pub enum AnimError {
     Reference(String),
     /// The frames would be larger than `MAX_SIDE` a side or `MAX_PIXELS` in all, e.g. after
     /// a `[render]` size override (bad input).
-    #[error("{}: {width}×{height} frames are past the limit of 16384 a side and 2^26 pixels", .manifest.display())]
+    #[error("{}: {width}×{height} frames are past the limit of 16384 a side and 2^26 pixels", shown(.manifest))]
     Size {
         /// The manifest that asks for this size.
         manifest: PathBuf,
@@ -52,14 +52,21 @@ pub enum AnimError {
         height: u32,
     },
     /// At this frame the camera's eye coincides with its look-at point, so it has no
-    /// direction (bad input, found before rendering).
-    #[error("frame {frame}: the camera is placed on the point it looks at")]
+    /// direction (bad input, found before rendering); located at the manifest's
+    /// `look_at` object, or its `[camera]` table.
+    #[error("{loc}: frame {frame}: the camera is placed on the point it looks at")]
     Camera {
         /// The first frame where this happens.
         frame: u32,
+        /// Where the manifest sets the camera.
+        loc: FileLoc,
     },
     /// The output (or report) folder cannot be created or used (bad input).
-    #[error("cannot use the output folder {}: {}", dir.display(), folder_reason(dir, source))]
+    #[error(
+        "cannot use the output folder {}: {}",
+        shown(dir),
+        folder_reason(dir, source)
+    )]
     Folder {
         /// The folder.
         dir: PathBuf,
@@ -85,7 +92,7 @@ pub enum AnimError {
     FfmpegMissing,
     /// The video file cannot be made: its folder is missing, it is a folder, or ffmpeg
     /// knows no container for its extension (bad input, found before rendering).
-    #[error("cannot make the video {path}: {reason}")]
+    #[error("cannot make the video {}: {reason}", shown(.path))]
     VideoTarget {
         /// The video path as given.
         path: PathBuf,
@@ -97,7 +104,7 @@ pub enum AnimError {
     #[error("ffmpeg failed: {0}")]
     Ffmpeg(String),
     /// Another run holds the frame folder's lock (bad input: nothing was rendered).
-    #[error("a run of another manifest is writing into {dir} ({holder}); wait for it to end, or write elsewhere")]
+    #[error("a run of another manifest is writing into {} ({holder}); wait for it to end, or write elsewhere", shown(.dir))]
     Busy {
         /// The frame folder.
         dir: PathBuf,
@@ -106,7 +113,7 @@ pub enum AnimError {
     },
     /// Frames in the folder were recorded by another manifest, and would be overwritten
     /// (bad input: nothing was rendered).
-    #[error("{dir} holds {count} frame(s) rendered by another manifest ({other}: frames {frames}); they would be overwritten")]
+    #[error("{} holds {count} frame(s) rendered by another manifest ({other}: frames {frames}); they would be overwritten", shown(.dir))]
     Foreign {
         /// The frame folder.
         dir: PathBuf,
@@ -118,10 +125,10 @@ pub enum AnimError {
         count: usize,
     },
     /// The video file exists and would be replaced (bad input: nothing was rendered).
-    #[error("the video {} exists and would be replaced", .0.display())]
+    #[error("the video {} exists and would be replaced", shown(.0))]
     VideoExists(PathBuf),
     /// The frame folder is not ready to encode (bad input: nothing was encoded).
-    #[error("{dir} is not ready to encode: {why}")]
+    #[error("{} is not ready to encode: {why}", shown(.dir))]
     NotReady {
         /// The frame folder.
         dir: PathBuf,
@@ -178,10 +185,10 @@ fn folder_reason(dir: &std::path::Path, source: &std::io::Error) -> String {
     let parent = dir.parent().filter(|p| !p.as_os_str().is_empty());
     match (source.kind(), parent) {
         (std::io::ErrorKind::NotFound, Some(p)) if p.is_dir() => {
-            format!("{} does not take new folders ({source})", p.display())
+            format!("{} does not take new folders ({source})", shown(p))
         }
         (std::io::ErrorKind::NotFound, Some(p)) => {
-            format!("cannot create it under {} ({source})", p.display())
+            format!("cannot create it under {} ({source})", shown(p))
         }
         (std::io::ErrorKind::PermissionDenied, _) => {
             format!("no permission to create or write it ({source})")
@@ -197,7 +204,8 @@ mod tests {
     #[test]
     fn exit_codes() {
         assert_eq!(AnimError::Reference("x".into()).exit_code(), 2);
-        assert_eq!(AnimError::Camera { frame: 3 }.exit_code(), 2);
+        let loc = FileLoc::default();
+        assert_eq!(AnimError::Camera { frame: 3, loc }.exit_code(), 2);
         assert_eq!(AnimError::FfmpegMissing.exit_code(), 2);
         let folder = AnimError::Folder {
             dir: "x".into(),

@@ -154,6 +154,9 @@ pub struct Manifest {
     pub scene: PathBuf,
     /// Where `scene = ...` is written, for errors about the scene file.
     pub scene_loc: FileLoc,
+    /// Where `[camera]` is written (the manifest's start without one), for errors about
+    /// the camera found when frames are drawn.
+    pub camera_loc: FileLoc,
     /// The number of frames of the sequence, 1 to `MAX_FRAMES`; frames are numbered from 0.
     pub frames: u32,
     /// Frames per second, > 0: the time base of the camera and the video.
@@ -208,11 +211,12 @@ impl Manifest {
             return Err(ManifestError::Unknown(found));
         }
         let probe: Probe = source.deserialize()?;
+        let camera_loc = source.loc(probe.camera.as_ref().map_or(0..0, |c| c.span()));
         let kind = probe
             .camera
             .as_ref()
             .and_then(|c| c.get_ref().path.as_ref());
-        match kind.map(|k| (k.get_ref().as_str(), k.span())) {
+        let manifest = match kind.map(|k| (k.get_ref().as_str(), k.span())) {
             None => {
                 let raw: RawManifest<RawStill> = source.deserialize()?;
                 source.manifest(raw, |s, c, _| s.still(c))
@@ -231,7 +235,8 @@ impl Manifest {
                 );
                 Err(source.error(span, message))
             }
-        }
+        };
+        manifest.map(|m| Manifest { camera_loc, ..m })
     }
 }
 
@@ -294,45 +299,89 @@ impl Source<'_> {
         Err(self.error(v.span(), message))
     }
 
+    /// The manifest of `raw`. Every part is checked even when another is refused, and the
+    /// refusal reported is the first in the file (parts are read in an order of their
+    /// own: what counts frames after `frames`, `[render]` after `[output]`).
     fn manifest<C>(
         &self,
         raw: RawManifest<C>,
         camera: impl FnOnce(&Self, C, u32) -> Result<CameraParts, ManifestError>,
     ) -> Result<Manifest, ManifestError> {
-        let scene = self.resolve(&raw.scene, "scene")?;
+        let mut errors = Vec::new();
+        let scene = keep(self.resolve(&raw.scene, "scene"), &mut errors);
         let scene_loc = self.loc(raw.scene.span());
-        let frames = self.int(&raw.frames, "frames", 1..=i64::from(MAX_FRAMES))? as u32;
+        let frames = self.int(&raw.frames, "frames", 1..=i64::from(MAX_FRAMES));
+        let frames = keep(frames, &mut errors).map(|f| f as u32);
         let fps = match &raw.fps {
             Some(v) if !(MIN_FPS..=MAX_FPS).contains(v.get_ref()) => {
                 let message = format!(
                     "`fps` must be a number from {MIN_FPS} to {MAX_FPS}, found {:?}",
                     v.get_ref()
                 );
-                return Err(self.error(v.span(), message));
+                Err(self.error(v.span(), message))
             }
-            Some(v) => *v.get_ref(),
-            None => DEFAULT_FPS,
+            Some(v) => Ok(*v.get_ref()),
+            None => Ok(DEFAULT_FPS),
         };
-        let (camera, look_at, lens) = match raw.camera {
-            Some(c) => camera(self, c, frames)?,
-            None => (None, None, Lens::default()),
+        let fps = keep(fps, &mut errors);
+        let output = keep(self.output(raw.output), &mut errors);
+        let render = match &output {
+            Some(o) => keep(self.render(raw.render, o.format), &mut errors),
+            None => None,
         };
-        let output = self.output(raw.output)?;
+        let (mut parts, mut tracks, mut check) = (None, None, None);
+        if let Some(frames) = frames {
+            let cam = match raw.camera {
+                Some(c) => camera(self, c, frames),
+                None => Ok((None, None, Lens::default())),
+            };
+            parts = keep(cam, &mut errors);
+            tracks = keep(
+                self.tracks(raw.track.unwrap_or_default(), frames),
+                &mut errors,
+            );
+            let checked = raw.check.map(|c| self.check(c, frames)).transpose();
+            check = keep(checked, &mut errors);
+        }
+        let all = (scene, frames, fps, output, render, parts, tracks, check);
+        let (
+            Some(scene),
+            Some(frames),
+            Some(fps),
+            Some(output),
+            Some(render),
+            Some(parts),
+            Some(tracks),
+            Some(check),
+        ) = all
+        else {
+            let first = errors
+                .into_iter()
+                .min_by_key(|e| e.loc().map(|l| (l.line, l.column)));
+            return Err(first.unwrap_or_else(|| self.error(0..0, "the manifest cannot be read")));
+        };
+        let (camera, look_at, lens) = parts;
         Ok(Manifest {
             path: self.path.to_path_buf(),
             scene,
             scene_loc,
+            camera_loc: FileLoc::default(),
             frames,
             fps,
             camera,
             look_at,
             lens,
-            tracks: self.tracks(raw.track.unwrap_or_default(), frames)?,
-            render: self.render(raw.render, output.format)?,
+            tracks,
+            render,
             output,
-            check: raw.check.map(|c| self.check(c, frames)).transpose()?,
+            check,
         })
     }
+}
+
+/// The value of `result`, or `None` with its error put in `errors`.
+fn keep<T>(result: Result<T, ManifestError>, errors: &mut Vec<ManifestError>) -> Option<T> {
+    result.map_err(|e| errors.push(e)).ok()
 }
 
 /// A manifest named through a descriptor link (`/dev/stdin`, `/dev/fd/N`, `/proc/…/fd/N`)

@@ -14,7 +14,8 @@
 //! - `preview`: quick pictures for people (a GIF, a contact sheet, a plot of the paths);
 //! - `view`: `animate view`, a page that shows the animation while it is made (live
 //!   reload, picking, the folder's state);
-//! - `error`: why a run stopped, and its exit status.
+//! - `error`: why a run stopped, and its exit status; `typo`: the "did you mean" of every
+//!   message that refuses a name.
 
 pub mod check;
 pub mod error;
@@ -25,6 +26,7 @@ pub mod preview;
 pub mod project;
 pub mod refusal;
 pub mod timeline;
+mod typo;
 pub mod view;
 
 pub use error::AnimError;

@@ -166,13 +166,23 @@ impl<'p> Animation<'p> {
         (!report).then_some([w, h, lens.roll])
     }
 
+    /// Frame `frame`'s camera sits on the point it looks at: located at the object the
+    /// camera follows, or the manifest's `[camera]` table.
+    fn camera_error(&self, frame: u32) -> AnimError {
+        let loc = match &self.manifest.look_at {
+            Some(crate::anim::timeline::LookAt::Object { loc, .. }) => loc.clone(),
+            _ => self.manifest.camera_loc.clone(),
+        };
+        AnimError::Camera { frame, loc }
+    }
+
     /// Refuses, before anything renders, a frame whose camera (at any of its sample
     /// times) sits on the point it looks at.
     pub fn check_cameras(&self, frames: &[u32]) -> Result<(), AnimError> {
         for &frame in frames {
             for t in self.timeline.times(frame) {
                 if self.camera(&self.timeline.at(t)).is_none() {
-                    return Err(AnimError::Camera { frame });
+                    return Err(self.camera_error(frame));
                 }
             }
         }
@@ -210,7 +220,9 @@ impl<'p> Animation<'p> {
         let times = self.timeline.times(frame);
         if let [t] = times[..] {
             let state = self.timeline.at(t);
-            let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
+            let camera = self
+                .camera(&state)
+                .ok_or_else(|| self.camera_error(frame))?;
             return Ok(render_with(&self.tracer(&state.scene), &camera, w, h, n));
         }
         let mut sum = vec![Color::ZERO; w as usize * h as usize];
@@ -220,7 +232,9 @@ impl<'p> Animation<'p> {
                 break; // the frame is discarded: no need to set up further sub-frames
             }
             let state = self.timeline.at(t);
-            let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
+            let camera = self
+                .camera(&state)
+                .ok_or_else(|| self.camera_error(frame))?;
             rays = rays + render_add_with(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
         }
         Ok((Frame::from_sum(&sum, times.len() as u32, w, h), rays))
@@ -297,7 +311,9 @@ impl<'p> Animation<'p> {
         let mut rays = RayCount::default();
         for &t in &times {
             let state = self.timeline.at(t);
-            let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
+            let camera = self
+                .camera(&state)
+                .ok_or_else(|| self.camera_error(frame))?;
             let tracer = self.tracer(&state.scene);
             rays = rays + render_layers_add(&tracer, &camera, w, h, n, passes, &mut sums);
         }

@@ -29,6 +29,7 @@ use super::error::AnimError;
 use super::manifest::Manifest;
 use super::project::Animation;
 use super::select::{parse_frames, SelectError};
+use crate::fileloc::shown;
 use crate::output::{write_atomic, ImageFormat};
 use crate::render::Frame;
 use diff::{compare, heat_map};
@@ -251,15 +252,15 @@ fn probe_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<PathBuf,
     let path = reference_path(anim, refs, frame);
     if !path.exists() {
         return Err(AnimError::Reference(format!(
-            "frame {frame}: the reference {} is missing (run `animate bless` first)",
-            path.display()
+            "frame {frame}: the reference {} is missing",
+            shown(&path)
         )));
     }
     if anim.format().is_layered() {
         return Ok(path);
     }
     let unreadable = |e: &dyn std::fmt::Display| {
-        AnimError::Reference(format!("{}: cannot read it: {e}", path.display()))
+        AnimError::Reference(format!("{}: cannot read it: {e}", shown(&path)))
     };
     let limit = crate::limits::MAX_FRAME_BYTES;
     let (file, _) =
@@ -271,7 +272,7 @@ fn probe_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<PathBuf,
     if (width, height) != (anim.width, anim.height) {
         return Err(AnimError::Reference(format!(
             "frame {frame}: the reference {} is {}×{}, the frame is {}×{}",
-            path.display(),
+            shown(&path),
             width,
             height,
             anim.width,
@@ -290,9 +291,9 @@ fn unreadable(frame: u32, path: &Path, e: crate::output::ReadError) -> AnimError
             height,
         } => format!(
             "frame {frame}: the reference {} is {found}, the frame is {width}×{height}",
-            path.display(),
+            shown(path),
         ),
-        e => format!("{}: {e}", path.display()),
+        e => format!("{}: {e}", shown(path)),
     })
 }
 
@@ -303,13 +304,40 @@ fn create_dir(dir: &Path) -> Result<(), AnimError> {
     })
 }
 
-/// Renders `frames` and writes them as references into `refs`; returns the paths.
-pub fn bless(anim: &Animation, frames: &[u32], refs: &Path) -> Result<Vec<PathBuf>, AnimError> {
+/// A reference `bless` wrote: where, and what was there before.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Blessed {
+    /// The reference file.
+    pub path: PathBuf,
+    /// A reference was there and was replaced.
+    pub replaced: bool,
+    /// The replaced reference had other bytes than the new one.
+    pub changed: bool,
+}
+
+/// `3 new` or `2 replaced (1 changed), 1 new`: what a bless did, for its summary line.
+pub fn bless_counts(blessed: &[Blessed]) -> String {
+    let replaced = blessed.iter().filter(|b| b.replaced).count();
+    let changed = blessed.iter().filter(|b| b.changed).count();
+    let new = blessed.len() - replaced;
+    let mut parts = Vec::new();
+    if replaced > 0 {
+        parts.push(format!("{replaced} replaced ({changed} changed)"));
+    }
+    if new > 0 || blessed.is_empty() {
+        parts.push(format!("{new} new"));
+    }
+    parts.join(", ")
+}
+
+/// Renders `frames` and writes them as references into `refs`; says what each replaced.
+pub fn bless(anim: &Animation, frames: &[u32], refs: &Path) -> Result<Vec<Blessed>, AnimError> {
     create_dir(refs)?;
     frames
         .par_iter()
         .map(|&frame| {
             let path = reference_path(anim, refs, frame);
+            let before = std::fs::read(&path).ok();
             let written = if anim.format().is_layered() {
                 // The float beauty, losslessly: EXR float, ZIP.
                 let (layers, _) = anim.render_layers(frame, crate::passes::PassSet::NONE)?;
@@ -323,7 +351,14 @@ pub fn bless(anim: &Animation, frames: &[u32], refs: &Path) -> Result<Vec<PathBu
                 write_atomic(&path, &image, ImageFormat::Png)
             };
             written.map_err(|source| AnimError::Write { frame, source })?;
-            Ok(path)
+            let changed = before
+                .as_ref()
+                .is_some_and(|b| std::fs::read(&path).ok().as_ref() != Some(b));
+            Ok(Blessed {
+                replaced: before.is_some(),
+                changed,
+                path,
+            })
         })
         .collect()
 }

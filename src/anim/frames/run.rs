@@ -53,7 +53,7 @@ impl Destination {
     /// Where the frames went, for the summary line.
     pub fn describe(&self) -> String {
         match self {
-            Destination::Folder(p) | Destination::Video(p) => p.display().to_string(),
+            Destination::Folder(p) | Destination::Video(p) => crate::fileloc::shown(p),
             Destination::Stream(_) => "standard output".into(),
         }
     }

@@ -7,7 +7,7 @@
 //! `frames` was lowered) are listed apart (`folder::beyond`).
 
 use super::folder::beyond;
-use super::provenance::{digest, inspect, Inspection};
+use super::provenance::{digest, inspect, stamp, Inspection, Record};
 use crate::anim::project::Animation;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -28,12 +28,49 @@ pub enum FrameState {
 
 /// The state of frame `frame` in `dir`; `verify` decodes the image too.
 pub(crate) fn frame_state(anim: &Animation, dir: &Path, frame: u32, verify: bool) -> FrameState {
+    examine(anim, dir, frame, verify).0
+}
+
+/// The state of frame `frame` in `dir` and, when stale, why.
+fn examine(anim: &Animation, dir: &Path, frame: u32, verify: bool) -> (FrameState, String) {
     let path = anim.frame_path(dir, frame);
     match inspect(&path, anim.format(), anim.width, anim.height, verify) {
-        Inspection::Missing => FrameState::Missing,
-        Inspection::Sound(r) if r.digest == Some(digest(anim, frame)) => FrameState::UpToDate,
-        _ => FrameState::Stale,
+        Inspection::Missing => (FrameState::Missing, String::new()),
+        Inspection::Sound(r) if r.digest == Some(digest(anim, frame)) => {
+            (FrameState::UpToDate, String::new())
+        }
+        Inspection::Sound(r) => (FrameState::Stale, changed(anim, frame, &r)),
+        Inspection::Damaged(why) => (FrameState::Stale, format!("damaged: {why}")),
     }
+}
+
+/// What a sound frame's record says changed since it was rendered: the first stamp
+/// entry that differs from the one the frame would carry now, or, when the stamp is the
+/// same, what the digest alone covers.
+fn changed(anim: &Animation, frame: u32, record: &Record) -> String {
+    if record.digest.is_none() {
+        return "it records no provenance".into();
+    }
+    let recorded = |key: &str| record.pairs.iter().find(|(k, _)| k == key).map(|p| &p.1);
+    let now = stamp(anim, frame, String::new());
+    for (key, value) in now.iter().skip(1) {
+        let what = match key.as_str() {
+            "whitted:manifest" => "the manifest was",
+            "Software" => "the renderer was",
+            "whitted:scene" => "the scene file was",
+            "whitted:render" => "the render settings were",
+            "whitted:camera" => "the camera was at",
+            "whitted:frame" => "the frame was",
+            _ => continue,
+        };
+        match recorded(key) {
+            Some(old) if old != value => return format!("{what} {old}, now {value}"),
+            _ => {}
+        }
+    }
+    "the scene's values changed (the scene file or a track), or the framing (fov, roll) \
+     or the pixel version"
+        .into()
 }
 
 /// The frames of a folder by state, with their ranges.
@@ -47,6 +84,8 @@ pub struct StatusReport {
     pub missing: Vec<u32>,
     /// Frames past the end of the sequence that have a file in the folder, ascending.
     pub beyond: Vec<u32>,
+    /// Why the stale frames are stale: each reason with its frames, in frame order.
+    pub stale_why: Vec<(String, Vec<u32>)>,
 }
 
 impl StatusReport {
@@ -67,9 +106,14 @@ impl StatusReport {
     /// The report for people: the folder, then a row per state with count and ranges.
     pub fn table(&self, dir: &Path) -> String {
         let total = self.up_to_date.len() + self.stale.len() + self.missing.len();
-        let mut out = format!("{}: {total} frame(s)\n", dir.display());
+        let mut out = format!("{}: {total} frame(s)\n", crate::fileloc::shown(dir));
         for (what, list) in self.rows() {
             out += &format!("{what:>11}: {:>7}  {}\n", list.len(), ranges(list));
+            if what == "stale" {
+                for (why, frames) in &self.stale_why {
+                    out += &format!("{:>22}{}: {why}\n", "", ranges(frames));
+                }
+            }
         }
         if !self.beyond.is_empty() {
             let list = &self.beyond;
@@ -95,6 +139,12 @@ impl StatusReport {
             doc[&key] = ranges(list).into();
             doc[format!("{key}_count")] = list.len().into();
         }
+        let why: Vec<serde_json::Value> = self
+            .stale_why
+            .iter()
+            .map(|(why, frames)| serde_json::json!({ "frames": ranges(frames), "why": why }))
+            .collect();
+        doc["stale_why"] = why.into();
         doc["past_end"] = ranges(&self.beyond).into();
         doc["past_end_count"] = self.beyond.len().into();
         doc
@@ -104,18 +154,24 @@ impl StatusReport {
 /// The state of every frame of `frames` in `dir`, read in parallel, and the frames past
 /// the end of the sequence that have files there; `verify` decodes every image too.
 pub fn status(anim: &Animation, dir: &Path, frames: &[u32], verify: bool) -> StatusReport {
-    let states: Vec<FrameState> = frames
+    let states: Vec<(FrameState, String)> = frames
         .par_iter()
-        .map(|&f| frame_state(anim, dir, f, verify))
+        .map(|&f| examine(anim, dir, f, verify))
         .collect();
     let mut report = StatusReport {
         beyond: beyond(anim, dir).into_iter().map(|(f, _)| f).collect(),
         ..StatusReport::default()
     };
-    for (&f, state) in frames.iter().zip(states) {
+    for (&f, (state, why)) in frames.iter().zip(states) {
         match state {
             FrameState::UpToDate => report.up_to_date.push(f),
-            FrameState::Stale => report.stale.push(f),
+            FrameState::Stale => {
+                report.stale.push(f);
+                match report.stale_why.iter_mut().find(|(w, _)| *w == why) {
+                    Some((_, list)) => list.push(f),
+                    None => report.stale_why.push((why, vec![f])),
+                }
+            }
             FrameState::Missing => report.missing.push(f),
         }
     }
@@ -160,11 +216,14 @@ mod tests {
             stale: vec![5],
             missing: vec![3, 4],
             beyond: vec![],
+            stale_why: vec![("damaged: cut short".into(), vec![5])],
         };
         let table = r.table(Path::new("f"));
         assert!(table.starts_with("f: 6 frame(s)\n"), "{table}");
         assert!(table.contains(" up to date:       3  0-2\n"), "{table}");
         assert!(table.contains("    missing:       2  3-4\n"), "{table}");
+        let why = "      stale:       1  5\n                      5: damaged: cut short\n";
+        assert!(table.contains(why), "{table}");
         let doc = r.json(Path::new("f"));
         assert_eq!(
             (doc["stale"].as_str(), doc["missing_count"].as_u64()),

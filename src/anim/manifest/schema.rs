@@ -13,6 +13,7 @@
 //!
 //! Values of the wrong type (`camera = 5`) are left to serde, which says what it expected.
 
+use crate::anim::typo::nearest;
 use std::ops::Range;
 use toml::de::{DeTable, DeValue};
 use toml::Spanned;
@@ -277,25 +278,6 @@ fn unknown(place: Place, path: &str, name: &str, value: &Spanned<DeValue<'_>>) -
 
 fn has(place: &Place, name: &str) -> bool {
     place.keys().any(|(k, _)| k == name)
-}
-
-/// The known name nearest to `name` by edit distance (a transposition counting one), if
-/// near enough to be a typo: at most 1 edit for names of up to 4 characters, 2 up to 8,
-/// and a third of the length beyond. Ties go to the first known name. Names of more than
-/// 40 characters are no typo of a known one (and would cost time to compare).
-fn nearest<'a>(name: &str, known: impl Iterator<Item = &'a str>) -> Option<&'a str> {
-    let lower = name.to_lowercase();
-    let limit = match name.chars().count() {
-        0..=4 => 1,
-        5..=8 => 2,
-        n @ 9..=40 => n / 3,
-        _ => return None,
-    };
-    known
-        .map(|k| (strsim::damerau_levenshtein(&lower, k), k))
-        .filter(|&(d, _)| d <= limit)
-        .min_by_key(|&(d, _)| d)
-        .map(|(_, k)| k)
 }
 
 #[cfg(test)]

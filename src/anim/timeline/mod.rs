@@ -136,18 +136,34 @@ impl Timeline {
         sequence: impl Into<Sequence<'a>>,
     ) -> Result<Timeline, ManifestError> {
         let manifest: Sequence<'a> = sequence.into();
+        // Of the names that do not resolve, the first in the file is reported.
+        let mut refused: Option<ManifestError> = None;
+        let mut refuse = |e: ManifestError| {
+            let at = |e: &ManifestError| e.loc().map(|l| (l.line, l.column));
+            if refused.as_ref().is_none_or(|r| at(&e) < at(r)) {
+                refused = Some(e);
+            }
+        };
         let gaze = match manifest.look_at {
             None => Gaze::Path,
             Some(LookAt::Point(p)) => Gaze::Point(*p),
-            Some(LookAt::Object { name, loc }) => {
-                let (kind, index) = target::parse_subject(name, &base)
-                    .map_err(|m| invalid(loc, format!("look_at: {m}")))?;
-                Gaze::Follow(kind, index)
-            }
+            Some(LookAt::Object { name, loc }) => match target::parse_subject(name, &base) {
+                Ok((kind, index)) => Gaze::Follow(kind, index),
+                Err(m) => {
+                    refuse(invalid(loc, format!("look_at: {m}")));
+                    Gaze::Path
+                }
+            },
         };
         let mut tracks: Vec<Track> = Vec::with_capacity(manifest.tracks.len());
         for (n, spec) in manifest.tracks.iter().enumerate() {
-            let track = resolve(spec, &base).map_err(|m| invalid(&spec.loc, m))?;
+            let track = match resolve(spec, &base) {
+                Ok(track) => track,
+                Err(m) => {
+                    refuse(invalid(&spec.loc, m));
+                    continue;
+                }
+            };
             if let Some(j) = tracks.iter().position(|t| t.target == track.target) {
                 let message = format!(
                     "track {}: its target `{}` is already animated by track {}; one track per value",
@@ -155,9 +171,12 @@ impl Timeline {
                     spec.target,
                     j + 1
                 );
-                return Err(invalid(&spec.loc, message));
+                refuse(invalid(&spec.loc, message));
             }
             tracks.push(track);
+        }
+        if let Some(e) = refused {
+            return Err(e);
         }
         let timeline = Timeline {
             base,

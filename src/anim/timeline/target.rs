@@ -12,6 +12,7 @@
 //! target = "fog distance"       # no N
 //! ```
 
+use crate::anim::typo::did_you_mean;
 use crate::bump::Bump;
 use crate::fog::Fog;
 use crate::limits::MAX_INTENSITY;
@@ -147,11 +148,7 @@ fn index_of(kind: &str, n: &str, scene: &Scene) -> Result<usize, String> {
     let candidates = match kind {
         "light" => (0..scene.lights.len()).collect(),
         "sphere" | "plane" | "cylinder" => objects_of(scene, kind),
-        _ => {
-            return Err(format!(
-                "unknown kind `{kind}`: expected sphere, plane, cylinder, light or fog"
-            ))
-        }
+        _ => return Err(unknown_kind(kind)),
     };
     let count = candidates.len();
     match n.parse::<usize>() {
@@ -161,6 +158,14 @@ fn index_of(kind: &str, n: &str, scene: &Scene) -> Result<usize, String> {
         )),
         Err(_) => Err(format!("expected a {kind} number from 1, found `{n}`")),
     }
+}
+
+/// The kinds a target may name (a subject, `look_at = "KIND N"`, all but the fog).
+const KINDS: [&str; 5] = ["sphere", "plane", "cylinder", "light", "fog"];
+
+fn unknown_kind(kind: &str) -> String {
+    let hint = did_you_mean(kind, KINDS.into_iter().filter(|&k| k != kind));
+    format!("unknown kind `{kind}`{hint}: expected sphere, plane, cylinder, light or fog")
 }
 
 impl Target {
@@ -177,14 +182,13 @@ impl Target {
             }
         };
         let Some(fields) = fields_of(kind) else {
-            return Err(format!(
-                "unknown kind `{kind}`: expected sphere, plane, cylinder, light or fog"
-            ));
+            return Err(unknown_kind(kind));
         };
         let Some(&(_, field)) = fields.iter().find(|(name, _)| *name == field) else {
             let names: Vec<&str> = fields.iter().map(|(name, _)| *name).collect();
+            let hint = did_you_mean(field, names.iter().copied());
             return Err(format!(
-                "{kind} has no field `{field}`: expected one of {}",
+                "{kind} has no field `{field}`{hint}: expected one of {}",
                 names.join(", ")
             ));
         };

@@ -25,6 +25,7 @@ use whitted::anim::view::ViewOptions;
 use whitted::anim::{preview, AnimError, Animation, Reporter};
 use whitted::display::{Display, Tev};
 use whitted::exit::Outcome;
+use whitted::fileloc::shown;
 use whitted::output::ImageFormat;
 
 fn pool(threads: Option<u32>) -> anyhow::Result<rayon::ThreadPool> {
@@ -129,9 +130,9 @@ fn encode_command(args: EncodeArgs) -> anyhow::Result<Outcome> {
         eprintln!(
             "animate: encoded {} frames of {} at {} fps in {secs:.2} s -> {}",
             summary.rendered,
-            dir.display(),
+            shown(&dir),
             m.fps,
-            video.display()
+            shown(&video)
         );
     }
     Ok(Outcome::Success)
@@ -145,7 +146,7 @@ fn clean_command(args: CleanArgs) -> anyhow::Result<Outcome> {
         let past: Vec<u32> = folder::beyond(&anim, &dir).iter().map(|f| f.0).collect();
         println!(
             "{}: would remove {} frame(s) past the end ({}) and {} temporary file(s)",
-            dir.display(),
+            shown(&dir),
             past.len(),
             ranges(&past),
             folder::temporaries(&anim, &dir).len()
@@ -156,13 +157,13 @@ fn clean_command(args: CleanArgs) -> anyhow::Result<Outcome> {
     if !held.alone() {
         let why =
             "another run of this manifest is writing into the folder: clean when it has ended";
-        return Err(anyhow::anyhow!("{}: {why}", dir.display()));
+        return Err(anyhow::anyhow!("{}: {why}", shown(&dir)));
     }
     let cleaned =
-        folder::clean(&anim, &dir).with_context(|| format!("cleaning {}", dir.display()))?;
+        folder::clean(&anim, &dir).with_context(|| format!("cleaning {}", shown(&dir)))?;
     println!(
         "{}: removed {} frame(s) past the end ({}) and {} temporary file(s)",
-        dir.display(),
+        shown(&dir),
         cleaned.beyond.len(),
         ranges(&cleaned.beyond),
         cleaned.temporaries
@@ -215,12 +216,13 @@ fn bless(args: BlessArgs) -> anyhow::Result<Outcome> {
         args.references.as_deref(),
     );
     let (frames, refs) = targets.map_err(report::with_flags)?;
-    let paths = pool(c.threads)?.install(|| check::bless(&anim, &frames, &refs))?;
+    let blessed = pool(c.threads)?.install(|| check::bless(&anim, &frames, &refs))?;
     if !c.quiet {
         eprintln!(
-            "animate: blessed {} reference(s) in {}",
-            paths.len(),
-            refs.display()
+            "animate: blessed {} reference(s) in {}: {}",
+            blessed.len(),
+            shown(&refs),
+            check::bless_counts(&blessed)
         );
     }
     Ok(Outcome::Success)

@@ -259,7 +259,7 @@ pub fn outcome(e: &anyhow::Error) -> Outcome {
 /// The preview's one-line summary.
 pub fn previewed(s: &PreviewSummary, start: Instant) {
     let (secs, w, h) = (start.elapsed().as_secs_f64(), s.width, s.height);
-    let (n, dir) = (s.frames, s.dir.display());
+    let (n, dir) = (s.frames, whitted::fileloc::shown(&s.dir));
     eprintln!("animate: preview of {n} frames at {w}×{h} in {secs:.2} s -> {dir}");
 }
 

@@ -47,12 +47,15 @@ pub(crate) struct Record {
     pub digest: Option<String>,
     /// The file name of the manifest that rendered it (`MANIFEST_KEY`), if recorded.
     pub manifest: Option<String>,
+    /// Every key and value recorded (the stamp), in file order, to say what changed.
+    pub pairs: Vec<(String, String)>,
 }
 
 impl Record {
     fn from_pairs<'a>(pairs: impl Iterator<Item = (&'a str, &'a str)>) -> Record {
         let mut r = Record::default();
         for (k, v) in pairs {
+            r.pairs.push((k.to_string(), v.trim().to_string()));
             match k {
                 DIGEST_KEY => r.digest = Some(v.trim().to_string()),
                 MANIFEST_KEY => r.manifest = Some(v.trim().to_string()),
