@@ -174,7 +174,7 @@ pub(crate) fn raw_record_path(frame_path: &Path) -> PathBuf {
 }
 
 mod inspect;
-pub(crate) use inspect::{decode, inspect, pixels_line, Inspection};
+pub(crate) use inspect::{decode, inspect, pixels_line, Inspection, Record};
 
 #[cfg(test)]
 mod tests;
