@@ -71,6 +71,8 @@ pub struct Camera {
     step_x: DVec3,
     /// Step of one pixel down.
     step_y: DVec3,
+    /// The view plane's width and height at distance 1.0 (`Lens::plane`).
+    plane: (f64, f64),
 }
 
 impl Camera {
@@ -131,12 +133,19 @@ impl Camera {
             corner,
             step_x: right * (plane_w / width as f64),
             step_y: up * (plane_h / height as f64),
+            plane: (plane_w, plane_h),
         })
     }
 
     /// The eye position.
     pub fn eye(&self) -> DVec3 {
         self.eye
+    }
+
+    /// The view plane's width and height at distance `VIEW_DISTANCE`: the report's
+    /// 0.5 × 0.35, or the framing's (`Lens::plane`).
+    pub fn plane(&self) -> (f64, f64) {
+        self.plane
     }
 
     /// The camera's unit axes: right (D), up (H') and forward (U).

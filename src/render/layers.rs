@@ -4,7 +4,7 @@
 //! §12); with one sample and no motion blur it is exactly the colour `render` rounds.
 
 use crate::accel::TileView;
-use crate::camera::{Camera, VIEW_DISTANCE, VIEW_HEIGHT, VIEW_WIDTH};
+use crate::camera::{Camera, VIEW_DISTANCE};
 use crate::passes::record::{finish, PixelSum, Sample};
 use crate::passes::{CameraMatrices, Layers, Pass, PassSet};
 use crate::trace::{RayCount, Tracer};
@@ -95,11 +95,13 @@ pub fn camera_matrices(camera: &Camera) -> CameraMatrices {
         [r.z, u.z, f.z, 0.0],
         [-e.dot(r), -e.dot(u), -e.dot(f), 1.0],
     ];
-    // x_ndc = x·(2d/W)/z, y_ndc = y·(2d/H)/z, z_ndc = (z − near)/z, w = z.
+    // x_ndc = x·(2d/W)/z, y_ndc = y·(2d/H)/z, z_ndc = (z − near)/z, w = z, with W × H
+    // the camera's own view plane (the report's, or the framing's).
     let near = crate::optics::T_MIN;
+    let (plane_w, plane_h) = camera.plane();
     let proj = [
-        [2.0 * VIEW_DISTANCE / VIEW_WIDTH, 0.0, 0.0, 0.0],
-        [0.0, 2.0 * VIEW_DISTANCE / VIEW_HEIGHT, 0.0, 0.0],
+        [2.0 * VIEW_DISTANCE / plane_w, 0.0, 0.0, 0.0],
+        [0.0, 2.0 * VIEW_DISTANCE / plane_h, 0.0, 0.0],
         [0.0, 0.0, 1.0, 1.0],
         [0.0, 0.0, -near, 0.0],
     ];
@@ -168,5 +170,50 @@ mod tests {
         let n = m.world_to_ndc;
         assert_eq!((n[12], n[13], n[15]), (0.0, 0.0, 5.0));
         assert!((n[14] / n[15] - (5.0 - 0.01) / 5.0).abs() < 1e-6);
+    }
+
+    /// The NDC (x, y) of `p` through the header's row-vector matrix.
+    fn ndc(m: &[f32; 16], p: glam::DVec3) -> (f64, f64) {
+        let col = |j: usize| {
+            let m = |i: usize| f64::from(m[4 * i + j]);
+            p.x * m(0) + p.y * m(1) + p.z * m(2) + m(3)
+        };
+        (col(0) / col(3), col(1) / col(3))
+    }
+
+    #[test]
+    fn world_to_ndc_follows_the_framing() {
+        use crate::camera::Lens;
+        use glam::DVec3;
+        // A 16:9 frame of a 4:3 scene, a fov'd one, a rolled one: the point 7 units down
+        // the camera ray through a pixel's centre lands at that pixel's NDC (x right, y
+        // up, −1..1 across the picture).
+        let (eye, at) = (DVec3::new(1.0, 3.0, 12.0), DVec3::new(0.0, 1.0, 0.0));
+        let lenses = [
+            Lens::default(),
+            Lens {
+                fov: Some(60.0),
+                roll: 0.0,
+            },
+            Lens {
+                fov: Some(30.0),
+                roll: 20.0,
+            },
+        ];
+        for lens in lenses {
+            for (w, h) in [(640u32, 480u32), (1920, 1080)] {
+                let cam = Camera::framed(eye, at, (640, 480), (w, h), &lens).unwrap();
+                let m = camera_matrices(&cam).world_to_ndc;
+                for (x, y) in [(0.5, 0.5), (100.5, 400.5), (639.5, 20.5), (320.0, 240.0)] {
+                    let ray = cam.ray(x, y);
+                    let (nx, ny) = ndc(&m, ray.origin + 7.0 * ray.dir);
+                    let want = (2.0 * x / w as f64 - 1.0, 1.0 - 2.0 * y / h as f64);
+                    assert!(
+                        (nx - want.0).abs() < 1e-5 && (ny - want.1).abs() < 1e-5,
+                        "{lens:?} {w}x{h} pixel ({x}, {y}): ndc ({nx}, {ny}), want {want:?}"
+                    );
+                }
+            }
+        }
     }
 }
