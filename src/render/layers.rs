@@ -5,14 +5,16 @@
 
 use crate::accel::TileView;
 use crate::camera::{Camera, VIEW_DISTANCE};
-use crate::passes::record::{finish, PixelSum, Sample};
+use crate::passes::record::{finish, Sample, Sums};
 use crate::passes::{CameraMatrices, Layers, Pass, PassSet};
 use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
 
-/// Adds every pixel's `samples`² samples into `sums` (width·height, rows top to bottom):
-/// one sub-frame of a frame of layers. `passes` says whether Cryptomatte coverage is
-/// kept; the rest is cheap enough to record always.
+/// Adds every pixel's `samples`² samples into `sums` (width·height, rows top to bottom,
+/// made by `Sums::new` for `passes`): one sub-frame of a frame of layers. Without passes
+/// only the beauty is summed, through the tracer's no-op recorder (the same colours the
+/// recording path computes, added in the same order); `passes` also says whether
+/// Cryptomatte coverage is kept; the rest is cheap enough to record always.
 pub fn render_layers_add(
     tracer: &Tracer,
     camera: &Camera,
@@ -20,7 +22,7 @@ pub fn render_layers_add(
     height: u32,
     samples: u32,
     passes: PassSet,
-    sums: &mut [PixelSum],
+    sums: &mut Sums,
 ) -> RayCount {
     let n = samples.max(1);
     let crypto = passes.has(Pass::CryptoObject) || passes.has(Pass::CryptoMaterial);
@@ -28,37 +30,67 @@ pub fn render_layers_add(
     let view = TileView::new(camera, width, height, &tracer.scene().objects);
     let view = view.as_ref();
     let step = 1.0 / n as f64;
-    sums.par_chunks_mut(width.max(1) as usize)
-        .take(height as usize)
-        .enumerate()
-        .map(|(j, row)| {
-            let mut count = RayCount::default();
-            if super::control::stop_row() {
-                return count; // cancelled: the caller discards the frame
-            }
-            for (i, sum) in row.iter_mut().enumerate() {
-                let hint = view.map(|v| v.hint(i as u32, j as u32));
-                for b in 0..n {
-                    for a in 0..n {
-                        let (x, y) = if n == 1 {
-                            (i as f64 + 0.5, j as f64 + 0.5)
-                        } else {
-                            (
-                                i as f64 + (a as f64 + 0.5) * step,
-                                j as f64 + (b as f64 + 0.5) * step,
-                            )
-                        };
-                        let ray = camera.ray(x, y);
-                        let mut s = Sample::default();
-                        let c = tracer.primary_rec(hint, &ray, &mut count, &mut s);
-                        sum.add(c, &s, ray.dir, forward, crypto);
+    let row_len = width.max(1) as usize;
+    // The sample positions of pixel (i, j), as `render::pixel` places them.
+    let sub_pixel = |i: usize, j: usize, a: u32, b: u32| {
+        if n == 1 {
+            (i as f64 + 0.5, j as f64 + 0.5)
+        } else {
+            (
+                i as f64 + (a as f64 + 0.5) * step,
+                j as f64 + (b as f64 + 0.5) * step,
+            )
+        }
+    };
+    match sums {
+        Sums::Beauty(sums) => sums
+            .par_chunks_mut(row_len)
+            .take(height as usize)
+            .enumerate()
+            .map(|(j, row)| {
+                let mut count = RayCount::default();
+                if super::control::stop_row() {
+                    return count; // cancelled: the caller discards the frame
+                }
+                for (i, sum) in row.iter_mut().enumerate() {
+                    let hint = view.map(|v| v.hint(i as u32, j as u32));
+                    for b in 0..n {
+                        for a in 0..n {
+                            let (x, y) = sub_pixel(i, j, a, b);
+                            *sum += tracer.primary_in(hint, &camera.ray(x, y), &mut count);
+                        }
                     }
                 }
-            }
-            super::control::row_done();
-            count
-        })
-        .reduce(RayCount::default, |a, b| a + b)
+                super::control::row_done();
+                count
+            })
+            .reduce(RayCount::default, |a, b| a + b),
+        Sums::Passes(sums) => sums
+            .par_chunks_mut(row_len)
+            .take(height as usize)
+            .enumerate()
+            .map(|(j, row)| {
+                let mut count = RayCount::default();
+                if super::control::stop_row() {
+                    return count; // cancelled: the caller discards the frame
+                }
+                for (i, sum) in row.iter_mut().enumerate() {
+                    let hint = view.map(|v| v.hint(i as u32, j as u32));
+                    for b in 0..n {
+                        for a in 0..n {
+                            let (x, y) = sub_pixel(i, j, a, b);
+                            let ray = camera.ray(x, y);
+                            let mut s = Sample::default();
+                            let c = tracer.primary_rec(hint, &ray, &mut count, &mut s);
+                            sum.add(c, &s, ray.dir, forward, crypto);
+                        }
+                    }
+                }
+                super::control::row_done();
+                count
+            })
+            .reduce(RayCount::default, |a, b| a + b),
+    }
 }
 
 /// Renders the beauty and `passes` of the tracer's scene through `camera`.
@@ -70,7 +102,7 @@ pub fn render_layers(
     samples: u32,
     passes: PassSet,
 ) -> (Layers, RayCount) {
-    let mut sums = vec![PixelSum::default(); width as usize * height as usize];
+    let mut sums = Sums::new(width as usize * height as usize, passes);
     let rays = render_layers_add(tracer, camera, width, height, samples, passes, &mut sums);
     let n = samples.max(1);
     let layers = finish(
@@ -156,6 +188,34 @@ mod tests {
                 .sum();
             let err = (sum - *b).abs().max_element() / b.abs().max_element().max(1e-3);
             assert!(err < 1e-5, "pixel {k}: {sum} vs {b}");
+        }
+    }
+
+    #[test]
+    fn without_passes_the_beauty_alone_is_summed_to_the_same_bits() {
+        // A plain EXR sums colours only (`Sums::Beauty`); its beauty is bit for bit the
+        // beauty of the recording path, so the file's bytes are those it had.
+        let scene = crate::Scene::parse(SCENE, "t.txt").unwrap();
+        let tracer = Tracer::new(&scene);
+        let camera = scene.camera();
+        assert!(matches!(
+            Sums::new(48, PassSet::NONE),
+            Sums::Beauty(ref v) if v.len() == 48
+        ));
+        for n in [1, 2, 3] {
+            let (plain, rays) = render_layers(&tracer, &camera, 8, 6, n, PassSet::NONE);
+            let all = PassSet::of(&Pass::ALL);
+            let (layered, layered_rays) = render_layers(&tracer, &camera, 8, 6, n, all);
+            let bits = |l: &Layers| -> Vec<[u64; 3]> {
+                l.beauty
+                    .iter()
+                    .map(|c| c.to_array().map(f64::to_bits))
+                    .collect()
+            };
+            assert_eq!(bits(&plain), bits(&layered), "{n}² samples");
+            assert!(plain.channels.is_empty() && plain.crypto.is_empty());
+            assert_eq!(plain.camera, layered.camera);
+            assert_eq!(rays, layered_rays);
         }
     }
 
