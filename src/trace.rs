@@ -177,19 +177,21 @@ impl<'a> Tracer<'a> {
                 // The tile's mirror lists answer for the reflection off that plane only.
                 let mirror = tile.filter(|h| h.mirror_plane() == Some(i));
                 if R::ACTIVE {
+                    // The fog fraction once, for the recorder and the colour both.
                     rec.object(i, t);
-                    rec.fog(self.scene.fog.amount(t));
+                    let f = self.scene.fog.amount(t);
+                    rec.fog(f);
+                    let c = self.shade_rec(ray, t, &objects[i], mirror, 0, 1.0, count, rec);
+                    return self.scene.fog.apply_amount(c, f);
                 }
-                let c = if R::ACTIVE {
-                    self.shade_rec(ray, t, &objects[i], mirror, 0, 1.0, count, rec)
-                } else {
-                    self.shade(ray, t, &objects[i], mirror, 0, 1.0, count)
-                };
+                let c = self.shade(ray, t, &objects[i], mirror, 0, 1.0, count);
                 self.scene.fog.apply(c, t)
             }
             None => {
                 if R::ACTIVE {
-                    rec.fog(self.scene.fog.amount(f64::INFINITY));
+                    let f = self.scene.fog.amount(f64::INFINITY);
+                    rec.fog(f);
+                    return self.scene.fog.apply_amount(Color::ZERO, f);
                 }
                 self.scene.fog.apply(Color::ZERO, f64::INFINITY)
             }
