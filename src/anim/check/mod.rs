@@ -321,7 +321,7 @@ pub fn bless(anim: &Animation, frames: &[u32], refs: &Path) -> Result<Vec<PathBu
                     depth: crate::output::ExrDepth::Float,
                     ..Default::default()
                 });
-                crate::output::write_atomic_layers(&path, &layers, exr, &[])
+                crate::output::write_atomic_layers(&path, layers, exr, &[])
             } else {
                 let (image, _) = anim.render(frame)?;
                 write_atomic(&path, &image, ImageFormat::Png)
