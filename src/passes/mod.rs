@@ -224,16 +224,8 @@ impl Layers {
 
     /// The beauty through the clamp-and-round of SPEC §2: the 8-bit picture.
     pub fn to_frame(&self) -> crate::render::Frame {
-        use crate::render::to_byte;
-        crate::render::Frame {
-            width: self.width,
-            height: self.height,
-            pixels: self
-                .beauty
-                .iter()
-                .flat_map(|c| [to_byte(c.x), to_byte(c.y), to_byte(c.z)])
-                .collect(),
-        }
+        let beauty = self.beauty.iter().copied();
+        crate::render::Frame::from_colors(beauty, self.width, self.height)
     }
 }
 

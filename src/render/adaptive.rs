@@ -23,7 +23,7 @@
 //! differences (`Measure::Sum`) or the largest single-channel difference
 //! (`Measure::Max`), both on the clamped output values (our output has no gamma).
 
-use super::{render, render_add, to_byte, Frame};
+use super::{render, render_add, Frame};
 use crate::accel::TileView;
 use crate::camera::Camera;
 use crate::texture::Color;
@@ -124,16 +124,7 @@ pub fn render_with(
         Antialias::Grid(n) => render(tracer, camera, width, height, n),
         Antialias::Adaptive(a) => {
             let out = trace(tracer, camera, width, height, a, TILE);
-            let pixels = out
-                .colors
-                .iter()
-                .flat_map(|c| [to_byte(c.x), to_byte(c.y), to_byte(c.z)])
-                .collect();
-            let frame = Frame {
-                width,
-                height,
-                pixels,
-            };
+            let frame = Frame::from_colors(out.colors, width, height);
             (frame, out.rays)
         }
     }

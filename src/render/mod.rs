@@ -131,21 +131,24 @@ pub fn render_add(
 }
 
 impl Frame {
-    /// The frame whose pixels are `sum / count`, rounded as every pixel is (`to_byte`).
-    pub fn from_sum(sum: &[Color], count: u32, width: u32, height: u32) -> Frame {
-        let k = f64::from(count.max(1));
-        let pixels = sum
-            .iter()
-            .flat_map(|c| {
-                let m = *c / k;
-                [to_byte(m.x), to_byte(m.y), to_byte(m.z)]
-            })
+    /// The frame of `colors` (width·height, rows top to bottom), each channel through the
+    /// clamp-and-round of SPEC §2 (`to_byte`).
+    pub fn from_colors(colors: impl IntoIterator<Item = Color>, width: u32, height: u32) -> Frame {
+        let pixels = colors
+            .into_iter()
+            .flat_map(|c| [to_byte(c.x), to_byte(c.y), to_byte(c.z)])
             .collect();
         Frame {
             width,
             height,
             pixels,
         }
+    }
+
+    /// The frame whose pixels are `sum / count`, rounded as every pixel is (`to_byte`).
+    pub fn from_sum(sum: &[Color], count: u32, width: u32, height: u32) -> Frame {
+        let k = f64::from(count.max(1));
+        Frame::from_colors(sum.iter().map(|c| *c / k), width, height)
     }
 }
 
