@@ -31,17 +31,6 @@ pub fn render_layers_add(
     let view = view.as_ref();
     let step = 1.0 / n as f64;
     let row_len = width.max(1) as usize;
-    // The sample positions of pixel (i, j), as `render::pixel` places them.
-    let sub_pixel = |i: usize, j: usize, a: u32, b: u32| {
-        if n == 1 {
-            (i as f64 + 0.5, j as f64 + 0.5)
-        } else {
-            (
-                i as f64 + (a as f64 + 0.5) * step,
-                j as f64 + (b as f64 + 0.5) * step,
-            )
-        }
-    };
     match sums {
         Sums::Beauty(sums) => sums
             .par_chunks_mut(row_len)
@@ -56,7 +45,7 @@ pub fn render_layers_add(
                     let hint = view.map(|v| v.hint(i as u32, j as u32));
                     for b in 0..n {
                         for a in 0..n {
-                            let (x, y) = sub_pixel(i, j, a, b);
+                            let (x, y) = super::sub_pixel(i as f64, j as f64, a, b, step);
                             *sum += tracer.primary_in(hint, &camera.ray(x, y), &mut count);
                         }
                     }
@@ -78,7 +67,7 @@ pub fn render_layers_add(
                     let hint = view.map(|v| v.hint(i as u32, j as u32));
                     for b in 0..n {
                         for a in 0..n {
-                            let (x, y) = sub_pixel(i, j, a, b);
+                            let (x, y) = super::sub_pixel(i as f64, j as f64, a, b, step);
                             let ray = camera.ray(x, y);
                             let mut s = Sample::default();
                             let c = tracer.primary_rec(hint, &ray, &mut count, &mut s);

@@ -172,8 +172,7 @@ fn pixel(
     let mut sum = Color::ZERO;
     for b in 0..n {
         for a in 0..n {
-            let x = i + (a as f64 + 0.5) * step;
-            let y = j + (b as f64 + 0.5) * step;
+            let (x, y) = sub_pixel(i, j, a, b, step);
             let c = tracer.primary_in(view, &camera.ray(x, y), count);
             sum += c.clamp(Color::ZERO, Color::ONE);
         }
@@ -181,9 +180,27 @@ fn pixel(
     sum / (n * n) as f64
 }
 
+/// Where sample (a, b) of pixel (i, j)'s n×n grid (`step` = 1/n) sits: the centre of its
+/// cell, (i + (a + ½)/n, j + (b + ½)/n); with n = 1 exactly the pixel's centre
+/// (i + 0.5, j + 0.5), since (0 + 0.5)·1.0 is 0.5.
+#[inline]
+pub(crate) fn sub_pixel(i: f64, j: f64, a: u32, b: u32, step: f64) -> (f64, f64) {
+    (i + (a as f64 + 0.5) * step, j + (b as f64 + 0.5) * step)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn sub_pixel_by_hand() {
+        // 2×2 grid of pixel (3, 5): the cells' centres at quarters.
+        assert_eq!(sub_pixel(3.0, 5.0, 0, 0, 0.5), (3.25, 5.25));
+        assert_eq!(sub_pixel(3.0, 5.0, 1, 0, 0.5), (3.75, 5.25));
+        assert_eq!(sub_pixel(3.0, 5.0, 1, 1, 0.5), (3.75, 5.75));
+        // One sample: the centre, bit for bit.
+        assert_eq!(sub_pixel(639.0, 479.0, 0, 0, 1.0), (639.5, 479.5));
+    }
 
     #[test]
     fn clamp_then_round() {
