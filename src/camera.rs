@@ -54,11 +54,6 @@ impl Lens {
         };
         (height * w as f64 / h as f64, height)
     }
-
-    /// True for the report's framing: no field of view, no roll.
-    pub fn is_report(&self) -> bool {
-        self.fov.is_none() && self.roll == 0.0
-    }
 }
 
 /// A camera placed for one image of `width` × `height` pixels.
@@ -102,7 +97,7 @@ impl Camera {
 
     /// A camera whose view plane is `plane` = (width, height) at distance 1.0, turned by
     /// `roll` degrees about the viewing direction.
-    pub fn with_plane(
+    fn with_plane(
         eye: DVec3,
         look_at: DVec3,
         (width, height): (u32, u32),
