@@ -68,26 +68,16 @@ fn rgb(c: Color) -> [f64; 3] {
 
 impl TextureInfo {
     fn of(t: &Texture) -> TextureInfo {
-        let (kind, colors) = match *t {
-            Texture::Uniform(c) => ("uniform", vec![rgb(c)]),
-            Texture::Checker(a, b) => ("checker", vec![rgb(a), rgb(b)]),
-            Texture::Perlin(a, b, c) => ("perlin", vec![rgb(a), rgb(b), rgb(c)]),
-            Texture::Wood(a, b) => ("wood", vec![rgb(a), rgb(b)]),
-            Texture::Marble(a, b) => ("marble", vec![rgb(a), rgb(b)]),
-        };
+        let (kind, _, colors) = t.record();
+        let colors = colors.into_iter().map(rgb).collect();
         TextureInfo { kind, colors }
     }
 }
 
 impl MaterialInfo {
     fn of(o: &Object) -> MaterialInfo {
-        use crate::bump::Bump;
         let m = &o.material;
-        let (bump_type, bump_value) = match m.bump {
-            Bump::None => (0, 0.0),
-            Bump::Uniform(e) => (1, e),
-            Bump::Water(e) => (2, e),
-        };
+        let (bump_type, bump_value) = m.bump.record();
         MaterialInfo {
             kd: m.kd,
             kr: m.kr,

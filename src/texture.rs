@@ -44,6 +44,18 @@ pub enum Texture {
 }
 
 impl Texture {
+    /// The texture as records name it: its kind (`uniform`, `checker`, `perlin`, `wood`,
+    /// `marble`), its number in that order from 1, and its colours as the file gives them.
+    pub fn record(&self) -> (&'static str, u8, Vec<Color>) {
+        match *self {
+            Texture::Uniform(c) => ("uniform", 1, vec![c]),
+            Texture::Checker(a, b) => ("checker", 2, vec![a, b]),
+            Texture::Perlin(a, b, c) => ("perlin", 3, vec![a, b, c]),
+            Texture::Wood(a, b) => ("wood", 4, vec![a, b]),
+            Texture::Marble(a, b) => ("marble", 5, vec![a, b]),
+        }
+    }
+
     /// The colour at world point `p`.
     #[inline]
     pub fn color_at(&self, p: DVec3) -> Color {
@@ -95,6 +107,25 @@ mod tests {
 
     const RED: Color = DVec3::new(1.0, 0.0, 0.0);
     const BLUE: Color = DVec3::new(0.0, 0.0, 1.0);
+
+    #[test]
+    fn records_kind_number_and_colours() {
+        assert_eq!(Texture::Uniform(RED).record(), ("uniform", 1, vec![RED]));
+        assert_eq!(
+            Texture::Checker(RED, BLUE).record(),
+            ("checker", 2, vec![RED, BLUE])
+        );
+        let p = Texture::Perlin(RED, BLUE, Color::ONE).record();
+        assert_eq!(p, ("perlin", 3, vec![RED, BLUE, Color::ONE]));
+        assert_eq!(
+            Texture::Wood(BLUE, RED).record(),
+            ("wood", 4, vec![BLUE, RED])
+        );
+        assert_eq!(
+            Texture::Marble(RED, RED).record(),
+            ("marble", 5, vec![RED, RED])
+        );
+    }
     const GREEN: Color = DVec3::new(0.0, 1.0, 0.0);
 
     fn close(a: Color, b: Color) -> bool {

@@ -11,7 +11,6 @@
 //! Scene.txt record of the material (objects with equal coefficients share it).
 
 use super::Channel;
-use crate::bump::Bump;
 use crate::scene::Scene;
 
 /// Ranks a Cryptomatte layer stores (three RGBA groups of two).
@@ -64,11 +63,7 @@ pub fn material_names(scene: &Scene) -> Vec<String> {
         .iter()
         .map(|o| {
             let m = &o.material;
-            let (kind, eps) = match m.bump {
-                Bump::None => (0, 0.0),
-                Bump::Uniform(e) => (1, e),
-                Bump::Water(e) => (2, e),
-            };
+            let (kind, eps) = m.bump.record();
             format!("material {} {} {} {} {kind} {eps}", m.kd, m.kr, m.kt, m.ior)
         })
         .collect()
