@@ -97,12 +97,6 @@ pub fn pick(tracer: &Tracer, camera: &Camera, x: u32, y: u32) -> Option<Pick> {
     let (t, obj) = tracer.nearest(&ray)?;
     let scene = tracer.scene();
     let index = scene.objects.iter().position(|o| std::ptr::eq(o, obj))?;
-    let spec = scene.specs.get(index)?;
-    let kind = spec.kind();
-    let n = 1 + scene.specs[..index]
-        .iter()
-        .filter(|s| s.kind() == kind)
-        .count();
     let p = ray.at(t);
     let outward = obj.shape.normal(p);
     let bumped = obj.material.bump.apply(outward, p);
@@ -112,7 +106,7 @@ pub fn pick(tracer: &Tracer, camera: &Camera, x: u32, y: u32) -> Option<Pick> {
         -bumped
     };
     Some(Pick {
-        object: format!("{kind} {n}"),
+        object: scene.object_name(index)?,
         index,
         texture: TextureInfo::of(&obj.texture),
         material: MaterialInfo::of(obj),
