@@ -56,8 +56,10 @@ impl Texture {
         }
     }
 
-    /// The colour at world point `p`.
-    #[inline]
+    /// The colour at world point `p`. Never inlined, as LLVM chose before the passes:
+    /// inlined into the light buffer's glass loop in `shading::direct` (once that lookup
+    /// was forced inline) it cost 1.5 M instructions more on the orbit (callgrind).
+    #[inline(never)]
     pub fn color_at(&self, p: DVec3) -> Color {
         // The two cheap kinds by conditional branches, which are predicted from their
         // history: a jump table over the kinds met in turn along a pixel's rays (a
