@@ -3,12 +3,12 @@
 //! over rows like `render`. The beauty here is the mean of the unclamped samples (SPEC
 //! §12); with one sample and no motion blur it is exactly the colour `render` rounds.
 
+use super::{par_rows, sub_pixel};
 use crate::accel::TileView;
 use crate::camera::{Camera, VIEW_DISTANCE};
 use crate::passes::record::{finish, Sample, Sums};
 use crate::passes::{CameraMatrices, Layers, Pass, PassSet};
 use crate::trace::{RayCount, Tracer};
-use rayon::prelude::*;
 
 /// Adds every pixel's `samples`² samples into `sums` (width·height, rows top to bottom,
 /// made by `Sums::new` for `passes`): one sub-frame of a frame of layers. Without passes
@@ -30,55 +30,32 @@ pub fn render_layers_add(
     let view = TileView::new(camera, width, height, &tracer.scene().objects);
     let view = view.as_ref();
     let step = 1.0 / n as f64;
-    let row_len = width.max(1) as usize;
     match sums {
-        Sums::Beauty(sums) => sums
-            .par_chunks_mut(row_len)
-            .take(height as usize)
-            .enumerate()
-            .map(|(j, row)| {
-                let mut count = RayCount::default();
-                if super::control::stop_row() {
-                    return count; // cancelled: the caller discards the frame
-                }
-                for (i, sum) in row.iter_mut().enumerate() {
-                    let hint = view.map(|v| v.hint(i as u32, j as u32));
-                    for b in 0..n {
-                        for a in 0..n {
-                            let (x, y) = super::sub_pixel(i as f64, j as f64, a, b, step);
-                            *sum += tracer.primary_in(hint, &camera.ray(x, y), &mut count);
-                        }
+        Sums::Beauty(sums) => par_rows(sums, width, height, |j, row, count| {
+            for (i, sum) in row.iter_mut().enumerate() {
+                let hint = view.map(|v| v.hint(i as u32, j as u32));
+                for b in 0..n {
+                    for a in 0..n {
+                        let (x, y) = sub_pixel(i as f64, j as f64, a, b, step);
+                        *sum += tracer.primary_in(hint, &camera.ray(x, y), count);
                     }
                 }
-                super::control::row_done();
-                count
-            })
-            .reduce(RayCount::default, |a, b| a + b),
-        Sums::Passes(sums) => sums
-            .par_chunks_mut(row_len)
-            .take(height as usize)
-            .enumerate()
-            .map(|(j, row)| {
-                let mut count = RayCount::default();
-                if super::control::stop_row() {
-                    return count; // cancelled: the caller discards the frame
-                }
-                for (i, sum) in row.iter_mut().enumerate() {
-                    let hint = view.map(|v| v.hint(i as u32, j as u32));
-                    for b in 0..n {
-                        for a in 0..n {
-                            let (x, y) = super::sub_pixel(i as f64, j as f64, a, b, step);
-                            let ray = camera.ray(x, y);
-                            let mut s = Sample::default();
-                            let c = tracer.primary_rec(hint, &ray, &mut count, &mut s);
-                            sum.add(c, &s, ray.dir, forward, crypto);
-                        }
+            }
+        }),
+        Sums::Passes(sums) => par_rows(sums, width, height, |j, row, count| {
+            for (i, sum) in row.iter_mut().enumerate() {
+                let hint = view.map(|v| v.hint(i as u32, j as u32));
+                for b in 0..n {
+                    for a in 0..n {
+                        let (x, y) = sub_pixel(i as f64, j as f64, a, b, step);
+                        let ray = camera.ray(x, y);
+                        let mut s = Sample::default();
+                        let c = tracer.primary_rec(hint, &ray, count, &mut s);
+                        sum.add(c, &s, ray.dir, forward, crypto);
                     }
                 }
-                super::control::row_done();
-                count
-            })
-            .reduce(RayCount::default, |a, b| a + b),
+            }
+        }),
     }
 }
 

@@ -112,7 +112,25 @@ pub fn render_add(
     let n = samples.max(1);
     let view = TileView::new(camera, width, height, &tracer.scene().objects);
     let view = view.as_ref();
-    sum.par_chunks_mut(width.max(1) as usize)
+    par_rows(sum, width, height, |j, row, count| {
+        for (i, acc) in row.iter_mut().enumerate() {
+            let c = pixel(tracer, view, camera, i as f64, j as f64, n, count);
+            *acc += c.clamp(Color::ZERO, Color::ONE);
+        }
+    })
+}
+
+/// The first `height` rows of `width` items of `buf` drawn in parallel, `draw(j, row,
+/// rays)` each, unless the render was cancelled (then the row is left as it is and the
+/// caller discards the frame); each row drawn counts as done. The rays of all rows.
+/// (`render` and `render_observed` have `draw_row`, the same loop over rows of bytes.)
+pub(crate) fn par_rows<T: Send>(
+    buf: &mut [T],
+    width: u32,
+    height: u32,
+    draw: impl Fn(usize, &mut [T], &mut RayCount) + Sync,
+) -> RayCount {
+    buf.par_chunks_mut(width.max(1) as usize)
         .take(height as usize)
         .enumerate()
         .map(|(j, row)| {
@@ -120,10 +138,7 @@ pub fn render_add(
             if control::stop_row() {
                 return count; // cancelled: the caller discards the frame
             }
-            for (i, acc) in row.iter_mut().enumerate() {
-                let c = pixel(tracer, view, camera, i as f64, j as f64, n, &mut count);
-                *acc += c.clamp(Color::ZERO, Color::ONE);
-            }
+            draw(j, row, &mut count);
             control::row_done();
             count
         })
