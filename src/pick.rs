@@ -13,8 +13,7 @@
 use crate::camera::Camera;
 use crate::object::Object;
 use crate::texture::{Color, Texture};
-use crate::trace::Tracer;
-use glam::DVec3;
+use crate::trace::{shading_normal, Tracer};
 use serde::Serialize;
 
 /// What the camera ray through one pixel hits first.
@@ -94,17 +93,11 @@ impl MaterialInfo {
 /// image).
 pub fn pick(tracer: &Tracer, camera: &Camera, x: u32, y: u32) -> Option<Pick> {
     let ray = camera.ray(f64::from(x) + 0.5, f64::from(y) + 0.5);
-    let (t, obj) = tracer.nearest(&ray)?;
+    let (t, index) = tracer.nearest_index(&ray)?;
     let scene = tracer.scene();
-    let index = scene.objects.iter().position(|o| std::ptr::eq(o, obj))?;
+    let obj = scene.objects.get(index)?;
     let p = ray.at(t);
-    let outward = obj.shape.normal(p);
-    let bumped = obj.material.bump.apply(outward, p);
-    let normal: DVec3 = if ray.dir.dot(outward) < 0.0 {
-        bumped
-    } else {
-        -bumped
-    };
+    let (normal, _) = shading_normal(obj, p, ray.dir);
     Some(Pick {
         object: scene.object_name(index)?,
         index,
@@ -120,6 +113,7 @@ pub fn pick(tracer: &Tracer, camera: &Camera, x: u32, y: u32) -> Option<Pick> {
 mod tests {
     use super::*;
     use crate::Scene;
+    use glam::DVec3;
 
     /// 40×30, eye at z = 10 looking at the origin; sphere 1 (r 1) at the origin, sphere 2
     /// (r 0.5, bumped) off to the right at x = 1.5, a floor plane y = −1 (checker).
