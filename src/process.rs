@@ -6,8 +6,9 @@
 //! how many frames it stops; a second ends the process at once. `raytrace`'s one image
 //! ends at once. Both exit with the exit-status table's 128 + N.
 
-use std::sync::atomic::{AtomicBool, AtomicUsize};
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
 use std::sync::Arc;
+use std::time::Duration;
 
 /// The processor lacks instructions that this build was compiled to use.
 #[derive(Debug, thiserror::Error)]
@@ -101,16 +102,42 @@ pub fn exit_when_stuck(
     stop: Arc<AtomicUsize>,
     last_words: impl Fn(i32) -> String + Send + 'static,
 ) {
-    use std::sync::atomic::Ordering;
-    std::thread::spawn(move || loop {
-        let sig = stop.load(Ordering::SeqCst);
-        if sig != 0 {
-            std::thread::sleep(std::time::Duration::from_millis(500));
-            eprintln!("{}", last_words(sig as i32));
-            std::process::exit(128 + sig as i32);
-        }
-        std::thread::sleep(std::time::Duration::from_millis(20));
+    static NEVER: AtomicBool = AtomicBool::new(false);
+    std::thread::spawn(move || {
+        after_stop(&stop, &NEVER, Duration::from_millis(500), |sig| {
+            eprintln!("{}", last_words(sig));
+            std::process::exit(128 + sig);
+        })
     });
+}
+
+/// The signal number held in `stop`, if any.
+pub fn stopped(stop: &AtomicUsize) -> Option<i32> {
+    match stop.load(Ordering::SeqCst) {
+        0 => None,
+        sig => Some(sig as i32),
+    }
+}
+
+/// A watchdog, run on a thread of its own: polls `stop` every 20 ms until it holds a
+/// signal, waits `grace`, then calls `action` with the signal number unless `done` was
+/// set meanwhile (the work ended by itself). Returns as soon as `done` is set.
+pub fn after_stop(
+    stop: &AtomicUsize,
+    done: &AtomicBool,
+    grace: Duration,
+    action: impl FnOnce(i32),
+) {
+    while !done.load(Ordering::SeqCst) {
+        if let Some(sig) = stopped(stop) {
+            std::thread::sleep(grace);
+            if !done.load(Ordering::SeqCst) {
+                action(sig);
+            }
+            return;
+        }
+        std::thread::sleep(Duration::from_millis(20));
+    }
 }
 
 /// Whether the process was started with its standard output closed (`>&-`). Rust's
@@ -169,5 +196,20 @@ mod tests {
     #[test]
     fn pools_have_the_threads_asked_for() {
         assert_eq!(super::pool(Some(3)).unwrap().current_num_threads(), 3);
+    }
+
+    #[test]
+    fn after_stop_acts_once_stopped_unless_done() {
+        use std::sync::atomic::{AtomicBool, AtomicUsize};
+        use std::time::Duration;
+        let (stop, done) = (AtomicUsize::new(15), AtomicBool::new(false));
+        let mut seen = None;
+        super::after_stop(&stop, &done, Duration::ZERO, |sig| seen = Some(sig));
+        assert_eq!(seen, Some(15));
+        assert_eq!(super::stopped(&stop), Some(15));
+        // Done first: it returns without acting, whatever the flag holds.
+        done.store(true, std::sync::atomic::Ordering::SeqCst);
+        super::after_stop(&stop, &done, Duration::ZERO, |_| panic!("acted after done"));
+        assert_eq!(super::stopped(&AtomicUsize::new(0)), None);
     }
 }

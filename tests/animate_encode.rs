@@ -213,3 +213,89 @@ fn encode_checks_the_folder_then_makes_the_video_with_the_options() {
         .assert()
         .code(2);
 }
+
+/// The RGB bytes of every frame of a video, as ffmpeg decodes them.
+fn decoded(video: &std::path::Path) -> Vec<u8> {
+    let out = Command::new("ffmpeg")
+        .args(["-v", "error", "-i"])
+        .arg(video)
+        .args(["-f", "rawvideo", "-pix_fmt", "rgb24", "-"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out.stdout
+}
+
+#[test]
+fn encode_and_verify_read_ppm_raw_and_exr_folders_as_their_pictures() {
+    if !have_ffmpeg() {
+        return;
+    }
+    // The PNG folder's frames are the pictures every other format must give back.
+    let three = circle_manifest("").replace("frames = 12", "frames = 3");
+    let (dir, manifest) = project(&three);
+    animate().arg(&manifest).arg("-q").assert().success();
+    let want: Vec<u8> = (0..3)
+        .flat_map(|f| pixels(&dir.path().join(format!("frames/frame_{f:04}.png"))))
+        .collect();
+    // Lossless in and out (FFV1, planar RGB), so the video holds the frames' bytes.
+    let lossless = ["--codec", "ffv1", "--pix-fmt", "gbrp", "-q"];
+    for format in ["ppm", "raw", "exr"] {
+        let text = three.replace("format = \"png\"", &format!("format = \"{format}\""));
+        std::fs::write(&manifest, text).unwrap();
+        animate().arg(&manifest).arg("-q").assert().success();
+        let out = animate()
+            .args(["status", "--verify"])
+            .arg(&manifest)
+            .output()
+            .unwrap();
+        let text = String::from_utf8_lossy(&out.stdout);
+        assert_eq!(out.status.code(), Some(0), "{format}: {text}");
+        let video = dir.path().join(format!("{format}.mkv"));
+        let out = animate()
+            .arg("encode")
+            .arg(&manifest)
+            .arg("-o")
+            .arg(&video)
+            .args(lossless)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(0), "{format}: {err}");
+        assert_eq!(probe(&video), "ffv1,3", "{format}");
+        assert!(
+            decoded(&video) == want,
+            "{format}: not the PNG frames' pixels"
+        );
+    }
+}
+
+#[test]
+fn the_video_gets_the_permissions_of_a_frame() {
+    use std::os::unix::fs::PermissionsExt;
+    if !have_ffmpeg() {
+        return;
+    }
+    let two = circle_manifest("").replace("frames = 12", "frames = 2");
+    let (dir, manifest) = project(&two);
+    animate().arg(&manifest).arg("-q").assert().success();
+    animate()
+        .arg("encode")
+        .arg(&manifest)
+        .arg("-q")
+        .assert()
+        .success();
+    let mode = |p: &std::path::Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o777;
+    let frame = mode(&dir.path().join("frames/frame_0000.png"));
+    // Not tempfile's private 0600: what the umask leaves of 0666, as for a frame.
+    assert_eq!(mode(&dir.path().join("frames.mp4")), frame);
+    assert_ne!(
+        frame & 0o044,
+        0,
+        "the umask of the test leaves frames readable"
+    );
+}

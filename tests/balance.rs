@@ -17,9 +17,9 @@ fn balanced_shards_of_a_turn_to_glass_have_equal_predicted_costs() {
     let project = Project::load(Path::new(MANIFEST)).unwrap();
     let anim = Animation::new(&project).unwrap();
     let frames: Vec<u32> = (0..project.manifest.frames).collect();
-    let costs = predicted_costs(&project, &anim, &frames).unwrap();
+    let costs = predicted_costs(&anim, &frames).unwrap();
     // The same prediction every time (ray counts, not times).
-    assert_eq!(costs, predicted_costs(&project, &anim, &frames).unwrap());
+    assert_eq!(costs, predicted_costs(&anim, &frames).unwrap());
     let (lo, hi) = (costs.iter().min().unwrap(), costs.iter().max().unwrap());
     assert!(*hi >= 8 * lo, "frames differ only {hi}/{lo}");
     let sums = |b: &[usize]| -> Vec<u64> {

@@ -103,7 +103,7 @@ fn balanced_sizes(manifest: &Path) -> Vec<u32> {
     let project = whitted::anim::Project::load(manifest).unwrap();
     let anim = whitted::anim::Animation::new(&project).unwrap();
     let frames: Vec<u32> = (0..FRAMES).collect();
-    let costs = predicted_costs(&project, &anim, &frames).unwrap();
+    let costs = predicted_costs(&anim, &frames).unwrap();
     let b = split(&costs, TASKS);
     b.windows(2).map(|w| (w[1] - w[0]) as u32).collect()
 }

@@ -1,6 +1,6 @@
 //! `animate job M --openjd`: the Open Job Description template is accepted by `openjd
 //! check` (PyPI openjd-cli) and `openjd run` of its render step renders the 12 frames into
-//! the same bytes as one plain `animate` run; its video step encodes them with ffmpeg.
+//! the same bytes as one plain `animate` run; its video step encodes them with `animate encode`.
 //! Without openjd (or ffmpeg for the video) the test says "skipped:" and passes, except
 //! under CI, where it fails.
 
@@ -58,13 +58,18 @@ fn the_template_has_a_chunked_render_step_and_a_video_step_after_it() {
         "{args}"
     );
     assert_eq!(t["steps"][1]["dependencies"][0]["dependsOn"], "Render");
-    let input = t["steps"][1]["script"]["actions"]["onRun"]["args"].to_string();
-    assert!(input.contains("{{Param.OutDir}}/frame_%04d.png"), "{input}");
+    let video = &t["steps"][1]["script"]["actions"]["onRun"];
+    assert_eq!(video["command"], "{{Param.Animate}}");
+    let args = video["args"].to_string();
+    let encode = r#"["encode","{{Param.Manifest}}","--dir","{{Param.OutDir}}","-o","{{Param.Video}}","--force","--quiet"]"#;
+    assert_eq!(args, encode);
     // A subset of frames is the parameter's range; --chunk-seconds asks the estimate.
     let t = job(&manifest, &["--frames", "0-11x2", "--chunk-seconds", "30"]);
     let param = &t["steps"][0]["parameterSpace"]["taskParameterDefinitions"][0];
     assert_eq!(param["range"], "0,2,4,6,8,10");
     assert_eq!(param["chunks"]["targetRuntimeSeconds"], 30);
+    // `animate encode` needs every frame: a job of some frames has no video step.
+    assert_eq!(t["steps"].as_array().unwrap().len(), 1, "{t}");
     // These frames take milliseconds: 30 s a task is far more than six frames.
     assert!(param["chunks"]["defaultTaskCount"].as_u64().unwrap() > 6);
 }

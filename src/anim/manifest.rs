@@ -94,18 +94,21 @@ impl OutputSpec {
     /// `file_name` without the extension.
     pub fn stem(&self, frame: u32, frames: u32) -> String {
         let needed = frames.saturating_sub(1).to_string().len();
+        let (head, fewest, tail) = self.parts();
+        let width = fewest.max(needed);
+        format!("{head}{frame:0width$}{tail}")
+    }
+
+    /// The name pattern cut around its frame number: the text before it, the fewest
+    /// digits it takes, the text after (`f_###x` → `f_`, 3, `x`; `frame` → `frame_`, 4, ``).
+    pub fn parts(&self) -> (String, usize, &str) {
         let name = &self.name;
         match name.find('#') {
             Some(start) => {
                 let run = name[start..].bytes().take_while(|&b| b == b'#').count();
-                let (head, tail) = (&name[..start], &name[start + run..]);
-                let width = run.max(needed);
-                format!("{head}{frame:0width$}{tail}")
+                (name[..start].to_string(), run, &name[start + run..])
             }
-            None => {
-                let width = needed.max(4);
-                format!("{name}_{frame:0width$}")
-            }
+            None => (format!("{name}_"), 4, ""),
         }
     }
 }

@@ -238,17 +238,30 @@ impl<'p> Animation<'p> {
         )
     }
 
-    /// The seconds `frames` frames are predicted to take, from frame `frame` drawn at
-    /// 1/`SAMPLE_DIVISOR` of each side on the current pool.
-    pub fn predict_seconds(&self, frame: u32, frames: usize) -> Result<f64, AnimError> {
-        let k = estimate::SAMPLE_DIVISOR;
-        let small = Animation {
-            width: (self.width / k).max(1),
-            height: (self.height / k).max(1),
+    /// This animation at 1/`divisor` of each side (at least one pixel), sharing its BVH.
+    /// With `samples`, that many samples a side and no adaptive anti-aliasing (the
+    /// one-sample pre-pass of `balance`); without, its own sampling (the timed picture
+    /// of `predict_seconds`).
+    pub fn scaled(&self, divisor: u32, samples: Option<u32>) -> Animation<'p> {
+        let divisor = divisor.max(1);
+        let mut small = Animation {
+            width: (self.width / divisor).max(1),
+            height: (self.height / divisor).max(1),
             shared: self.shared.clone(),
             observer: None,
             ..*self
         };
+        if let Some(n) = samples {
+            small.samples = n.max(1);
+            small.antialias = None;
+        }
+        small
+    }
+
+    /// The seconds `frames` frames are predicted to take, from frame `frame` drawn at
+    /// 1/`SAMPLE_DIVISOR` of each side on the current pool.
+    pub fn predict_seconds(&self, frame: u32, frames: usize) -> Result<f64, AnimError> {
+        let small = self.scaled(estimate::SAMPLE_DIVISOR, None);
         let start = std::time::Instant::now();
         small.draw(frame)?;
         let took = start.elapsed().as_secs_f64();

@@ -22,7 +22,6 @@ use crate::render::to_byte;
 use exr::meta::attribute::Chromaticities;
 use exr::prelude::*;
 use std::io::Write;
-use std::path::Path;
 use std::result::Result;
 
 /// Encodes `layers` with `meta` as string attributes. The layers are taken: their
@@ -192,15 +191,16 @@ pub(crate) fn half_keeping_byte(c: f64) -> f16 {
     v
 }
 
-/// The beauty of an EXR file as RGB floats, rows top to bottom, with its size.
-pub fn read_beauty(path: &Path) -> Result<(u32, u32, Vec<[f32; 3]>), String> {
+/// The beauty of the EXR file `bytes` as RGB floats, rows top to bottom, with its size
+/// (`read::read_beauty` reads the file).
+pub(super) fn read_beauty(bytes: &[u8]) -> Result<(u32, u32, Vec<[f32; 3]>), String> {
     let image = read()
         .no_deep_data()
         .largest_resolution_level()
         .all_channels()
         .first_valid_layer()
         .all_attributes()
-        .from_file(path)
+        .from_buffered(std::io::Cursor::new(bytes))
         .map_err(|e| e.to_string())?;
     let layer = &image.layer_data;
     let find = |name: &str| {
@@ -210,7 +210,7 @@ pub fn read_beauty(path: &Path) -> Result<(u32, u32, Vec<[f32; 3]>), String> {
             .iter()
             .find(|c| c.name.eq(name))
             .map(|c| c.sample_data.values_as_f32().collect::<Vec<f32>>())
-            .ok_or_else(|| format!("{}: no {name} channel", path.display()))
+            .ok_or_else(|| format!("no {name} channel"))
     };
     let (r, g, b) = (find("R")?, find("G")?, find("B")?);
     let (w, h) = (layer.size.width() as u32, layer.size.height() as u32);
@@ -223,19 +223,15 @@ pub fn read_beauty(path: &Path) -> Result<(u32, u32, Vec<[f32; 3]>), String> {
     Ok((w, h, pixels))
 }
 
-/// Whether an EXR file of `width`×`height` is whole: its header reads, with that size,
-/// and every chunk its offset table names is there.
-pub fn complete(path: &Path, width: u32, height: u32) -> bool {
-    texts_if_whole(path, width, height).is_some()
-}
-
-/// The string attributes of the header of an EXR file of `width`×`height`, from one
-/// reading of the file, when it is whole (as `complete` says); `None` otherwise.
-pub fn texts_if_whole(path: &Path, width: u32, height: u32) -> Option<Vec<(String, String)>> {
-    let file = std::fs::File::open(path).ok()?;
-    let reader =
-        exr::block::reader::Reader::read_from_buffered(std::io::BufReader::new(file), false)
-            .ok()?;
+/// The string attributes of the header of the EXR file `file` reads, of `width`×`height`,
+/// from one reading, when it is whole (its header reads, with that size, and every chunk
+/// its offset table names is there and readable); `None` otherwise.
+pub fn texts_if_whole(
+    file: impl std::io::Read + std::io::Seek,
+    width: u32,
+    height: u32,
+) -> Option<Vec<(String, String)>> {
+    let reader = exr::block::reader::Reader::read_from_buffered(file, false).ok()?;
     let header = reader.headers().first()?;
     if header.layer_size != Vec2(width as usize, height as usize) {
         return None;

@@ -12,6 +12,8 @@
 //! The 8-bit formats take the beauty through the clamp-and-round of §2 (`Layers::to_frame`,
 //! which `render` does directly for the default path) and drop the passes.
 //!
+//! `read_rgb` reads a frame file of any of them back as its 8-bit picture (`read`).
+//!
 //! `write_atomic` writes to a temporary file in the destination folder and renames it into
 //! place, so a file under its final name is always complete.
 
@@ -20,6 +22,9 @@ mod jpeg;
 pub(crate) mod png;
 mod ppm;
 mod raw;
+mod read;
+
+pub use read::{beauty_bytes, read_beauty, read_rgb, ReadError};
 
 use crate::passes::{Layers, PassSet};
 use crate::render::Frame;
@@ -300,6 +305,12 @@ pub fn encode_layers(
 /// `path` once complete. It gets the permissions of an ordinary new file (0666 less the
 /// umask), not tempfile's private 0600, so renamed frames are readable as usual.
 pub fn temp_beside(path: &Path) -> std::io::Result<tempfile::NamedTempFile> {
+    temp_beside_as(path, ".tmp")
+}
+
+/// `temp_beside` ending in `suffix` instead of `.tmp` (`.NAME.XXXXXX.mp4`: a video keeps
+/// its extension, from which ffmpeg picks the container).
+pub fn temp_beside_as(path: &Path, suffix: &str) -> std::io::Result<tempfile::NamedTempFile> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
@@ -307,13 +318,21 @@ pub fn temp_beside(path: &Path) -> std::io::Result<tempfile::NamedTempFile> {
     let name = path.file_name().and_then(|n| n.to_str()).unwrap_or("image");
     let prefix = format!(".{name}.");
     let mut builder = tempfile::Builder::new();
-    builder.prefix(&prefix).suffix(".tmp");
+    builder.prefix(&prefix).suffix(suffix);
     #[cfg(unix)]
     {
         use std::os::unix::fs::PermissionsExt;
         builder.permissions(std::fs::Permissions::from_mode(0o666));
     }
     builder.tempfile_in(dir)
+}
+
+/// The file a hidden temporary of `temp_beside` is for: `.TARGET.XXXXXX.tmp` gives
+/// TARGET; any other name gives `None`.
+pub fn temporary_target(name: &str) -> Option<&str> {
+    let inner = name.strip_prefix('.')?.strip_suffix(".tmp")?;
+    let (target, random) = inner.rsplit_once('.')?;
+    (random.len() == 6 && random.bytes().all(|b| b.is_ascii_alphanumeric())).then_some(target)
 }
 
 /// Writes `frame` to `path` atomically: a temporary file beside it, then a rename. On any

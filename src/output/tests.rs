@@ -91,3 +91,14 @@ fn failed_write_leaves_nothing() {
     assert!(write_atomic(&missing, &frame(), ImageFormat::Png).is_err());
     assert!(!missing.exists());
 }
+
+#[test]
+fn temporaries_are_named_after_their_target() {
+    assert_eq!(
+        temporary_target(".frame_0001.png.a1B2c3.tmp"),
+        Some("frame_0001.png")
+    );
+    assert_eq!(temporary_target("frame_0001.png.a1B2c3.tmp"), None);
+    assert_eq!(temporary_target(".frame_0001.png.a1B2.tmp"), None);
+    assert_eq!(temporary_target(".notes.tmp"), None);
+}

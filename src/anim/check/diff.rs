@@ -93,41 +93,11 @@ pub struct Comparison {
 /// Compares `rendered` with `reference`, which must have the same size.
 pub fn compare(reference: &Frame, rendered: &Frame, tol: Tolerance) -> Comparison {
     debug_assert_eq!(reference.pixels.len(), rendered.pixels.len());
-    let mut max_diff = 0u8;
-    let mut max_at = None;
-    let mut failing = 0u64;
-    let mut abs_sum = 0u64;
-    let mut sq_sum = 0u64;
-    let width = reference.width.max(1) as usize;
-    let pairs = reference
-        .pixels
-        .chunks_exact(3)
-        .zip(rendered.pixels.chunks_exact(3));
-    for (i, (a, b)) in pairs.enumerate() {
-        let mut pixel_fails = false;
-        for c in 0..3 {
-            let d = a[c].abs_diff(b[c]);
-            abs_sum += d as u64;
-            sq_sum += (d as u64) * (d as u64);
-            pixel_fails |= d > tol.fail;
-            if d > max_diff {
-                max_diff = d;
-                max_at = Some(((i % width) as u32, (i / width) as u32, c));
-            }
-        }
-        failing += pixel_fails as u64;
-    }
-    let pixels = (reference.pixels.len() / 3).max(1) as f64;
-    let failing_percent = 100.0 * failing as f64 / pixels;
-    let mse = sq_sum as f64 / (pixels * 3.0);
-    Comparison {
-        max_diff,
-        max_at,
-        failing_pixels: failing,
-        failing_percent,
-        mean_error: abs_sum as f64 / (pixels * 3.0),
-        psnr: (mse > 0.0).then(|| 10.0 * libm::log10(255.0f64 * 255.0 / mse)),
-    }
+    let (a, b) = (&reference.pixels, &rendered.pixels);
+    let pairs = a.len().min(b.len()) / 3;
+    compare_by(pairs, a.len() / 3, reference.width, tol, |i, c| {
+        f64::from(a[3 * i + c].abs_diff(b[3 * i + c]))
+    })
 }
 
 /// Compares two float beauties (EXR frames, rows top to bottom, `width` wide) on the same
@@ -141,14 +111,35 @@ pub fn compare_float(
     width: u32,
     tol: Tolerance,
 ) -> Comparison {
+    let pairs = reference.len().min(rendered.len());
+    compare_by(pairs, reference.len(), width, tol, |i, c| {
+        let d = (f64::from(reference[i][c]) - f64::from(rendered[i][c])).abs() * 255.0;
+        if d.is_nan() {
+            f64::INFINITY
+        } else {
+            d
+        }
+    })
+}
+
+/// The figures of a comparison of the first `pairs` pixels of frames of `pixels` pixels
+/// (the reference's count), `width` wide, whose channel `c` of pixel `i` differs by
+/// `diff(i, c)` levels (whole for 8-bit frames, so every sum is exact in f64 and the
+/// figures are those of integer arithmetic).
+fn compare_by(
+    pairs: usize,
+    pixels: usize,
+    width: u32,
+    tol: Tolerance,
+    diff: impl Fn(usize, usize) -> f64,
+) -> Comparison {
     let (mut max, mut max_at) = (0.0f64, None);
     let (mut failing, mut abs_sum, mut sq_sum) = (0u64, 0.0f64, 0.0f64);
     let width = width.max(1) as usize;
-    for (i, (a, b)) in reference.iter().zip(rendered).enumerate() {
+    for i in 0..pairs {
         let mut pixel_fails = false;
         for c in 0..3 {
-            let d = (f64::from(a[c]) - f64::from(b[c])).abs() * 255.0;
-            let d = if d.is_nan() { f64::INFINITY } else { d };
+            let d = diff(i, c);
             abs_sum += d;
             sq_sum += d * d;
             pixel_fails |= d > f64::from(tol.fail);
@@ -159,15 +150,15 @@ pub fn compare_float(
         }
         failing += pixel_fails as u64;
     }
-    let pixels = reference.len().max(1) as f64;
-    let mse = sq_sum / (pixels * 3.0);
+    let count = pixels.max(1) as f64;
+    let mse = sq_sum / (count * 3.0);
     Comparison {
         // A hard failure is any difference above `hard_fail` levels, fractions included.
         max_diff: max.ceil().min(255.0) as u8,
         max_at,
         failing_pixels: failing,
-        failing_percent: 100.0 * failing as f64 / pixels,
-        mean_error: abs_sum / (pixels * 3.0),
+        failing_percent: 100.0 * failing as f64 / count,
+        mean_error: abs_sum / (count * 3.0),
         psnr: (mse > 0.0).then(|| 10.0 * libm::log10(255.0f64 * 255.0 / mse)),
     }
 }

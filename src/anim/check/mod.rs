@@ -214,34 +214,34 @@ fn draw(anim: &Animation, frame: u32) -> Result<Reference, AnimError> {
     Ok((layers.to_frame(), Some(floats)))
 }
 
-/// Reads the reference of `frame`: an EXR reference's float beauty and its picture, or
-/// an 8-bit reference that `probe_reference` accepts.
+/// Reads the reference of `frame` (that `probe_reference` accepted) with one size check:
+/// an EXR reference's float beauty and its picture, or an 8-bit reference's picture.
 fn load_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<Reference, AnimError> {
+    let path = reference_path(anim, refs, frame);
+    let (width, height) = (anim.width, anim.height);
     if anim.format().is_layered() {
-        let path = probe_reference(anim, refs, frame)?;
-        let (w, h, beauty) = crate::output::exr::read_beauty(&path).map_err(|e| {
-            AnimError::Reference(format!("{}: cannot read it: {e}", path.display()))
-        })?;
-        if (w, h) != (anim.width, anim.height) {
-            return Err(AnimError::Reference(format!(
-                "frame {frame}: the reference {} is {w}×{h}, the frame is {}×{}",
-                path.display(),
-                anim.width,
-                anim.height
-            )));
-        }
-        let bytes = beauty
-            .iter()
-            .flat_map(|c| c.map(|v| crate::render::to_byte(f64::from(v))))
-            .collect();
-        let picture = Frame {
-            width: w,
-            height: h,
-            pixels: bytes,
-        };
-        return Ok((picture, Some(beauty)));
+        let beauty = crate::output::read_beauty(&path, width, height)
+            .map_err(|e| unreadable(frame, &path, e))?;
+        let pixels = crate::output::beauty_bytes(&beauty);
+        return Ok((
+            Frame {
+                width,
+                height,
+                pixels,
+            },
+            Some(beauty),
+        ));
     }
-    load_picture(anim, refs, frame).map(|f| (f, None))
+    let pixels = crate::output::read_rgb(&path, ImageFormat::Png, width, height)
+        .map_err(|e| unreadable(frame, &path, e))?;
+    Ok((
+        Frame {
+            width,
+            height,
+            pixels,
+        },
+        None,
+    ))
 }
 
 /// Refuses a reference that is missing, unreadable or of another size, from its header
@@ -281,22 +281,18 @@ fn probe_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<PathBuf,
     Ok(path)
 }
 
-/// Reads an 8-bit reference that `probe_reference` accepted.
-fn load_picture(anim: &Animation, refs: &Path, frame: u32) -> Result<Frame, AnimError> {
-    let path = probe_reference(anim, refs, frame)?;
-    let image = image::open(&path)
-        .map_err(|e| AnimError::Reference(format!("{}: cannot read it: {e}", path.display())))?
-        .to_rgb8();
-    if (image.width(), image.height()) != (anim.width, anim.height) {
-        return Err(AnimError::Reference(format!(
-            "{}: changed size during the check",
-            path.display()
-        )));
-    }
-    Ok(Frame {
-        width: image.width(),
-        height: image.height(),
-        pixels: image.into_raw(),
+/// The refusal of a reference that gives no picture of the frame's size.
+fn unreadable(frame: u32, path: &Path, e: crate::output::ReadError) -> AnimError {
+    AnimError::Reference(match e {
+        crate::output::ReadError::Size {
+            found,
+            width,
+            height,
+        } => format!(
+            "frame {frame}: the reference {} is {found}, the frame is {width}×{height}",
+            path.display(),
+        ),
+        e => format!("{}: {e}", path.display()),
     })
 }
 

@@ -1,6 +1,7 @@
 //! Shards of equal predicted cost (`--shard K/N --balance`): each frame's cost is predicted
 //! by the rays a pre-pass casts at 1/8 of the width and height with one sample per pixel
-//! (1/64 of the pixels, so about 1/64 of the work at one sample); ray counts, not times,
+//! and no adaptive refinement (1/64 of the pixels, so about 1/64 of the work at one
+//! sample); ray counts, not times,
 //! so every task of an array job computes the same split with no shared state. The split
 //! stays contiguous in frame numbers:
 //!
@@ -12,28 +13,19 @@
 
 use super::select::{in_order, select, sorted};
 use crate::anim::error::AnimError;
-use crate::anim::project::{Animation, Project};
+use crate::anim::project::Animation;
+use crate::render::estimate::SAMPLE_DIVISOR;
 use rayon::prelude::*;
 
-/// The pre-pass draws at 1/`PREPASS_DIVISOR` of the width and of the height.
-pub const PREPASS_DIVISOR: u32 = 8;
-
-/// The pre-pass of `anim`: its frames at 1/8 of each side (at least one pixel), one
-/// sample per pixel.
-pub fn prepass<'p>(project: &'p Project, anim: &Animation) -> Result<Animation<'p>, AnimError> {
-    let side = |s: u32| (s / PREPASS_DIVISOR).max(1);
-    let mut small = Animation::with_size(project, side(anim.width), side(anim.height))?;
-    small.samples = 1;
-    Ok(small)
+/// The pre-pass of `anim`: its frames at 1/`SAMPLE_DIVISOR` (8) of each side (at least
+/// one pixel), one sample per pixel and no adaptive anti-aliasing, on `anim`'s BVH.
+pub fn prepass<'p>(anim: &Animation<'p>) -> Animation<'p> {
+    anim.scaled(SAMPLE_DIVISOR, Some(1))
 }
 
 /// The predicted cost of each of `frames` (in that order): the rays its pre-pass casts.
-pub fn predicted_costs(
-    project: &Project,
-    anim: &Animation,
-    frames: &[u32],
-) -> Result<Vec<u64>, AnimError> {
-    let small = prepass(project, anim)?;
+pub fn predicted_costs(anim: &Animation, frames: &[u32]) -> Result<Vec<u64>, AnimError> {
+    let small = prepass(anim);
     small.check_cameras(frames)?;
     frames
         .par_iter()
@@ -44,7 +36,6 @@ pub fn predicted_costs(
 /// The frames of a run with `--balance`: the `list` (all frames when `None`), then part
 /// `(k, n)` of it by predicted cost, in the list's order.
 pub fn select_balanced(
-    project: &Project,
     anim: &Animation,
     list: Option<&str>,
     shard: Option<(u32, u32)>,
@@ -54,7 +45,7 @@ pub fn select_balanced(
         return Ok(all);
     };
     let by_number = sorted(&all);
-    let costs = predicted_costs(project, anim, &by_number)?;
+    let costs = predicted_costs(anim, &by_number)?;
     Ok(in_order(&all, &balanced_shard(&by_number, &costs, k, n)))
 }
 
@@ -97,6 +88,26 @@ pub fn balanced_shard(sorted: &[u32], costs: &[u64], k: u32, n: u32) -> Vec<u32>
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_prepass_is_an_eighth_a_side_at_one_sample_without_refinement() {
+        let dir = tempfile::tempdir().unwrap();
+        let scene = "67 41  0 1 6  0 1 0  0 0  1 0 0 1\n1.0  0 1 0   1 0.9 0.2 0.1   0.7 0.3 0 1 0 0\n5 10 5  1 1 1  0.9";
+        std::fs::write(dir.path().join("s.txt"), scene).unwrap();
+        let m = dir.path().join("m.toml");
+        let aa = "[render]\nantialias = { mode = \"adaptive\", threshold = 0.1, depth = 3 }\n";
+        std::fs::write(&m, format!("scene = \"s.txt\"\nframes = 2\n{aa}")).unwrap();
+        let project = crate::anim::project::Project::load(&m).unwrap();
+        let anim = Animation::new(&project).unwrap();
+        assert!(anim.antialias.is_some());
+        let small = prepass(&anim);
+        // 67 / 8 = 8, 41 / 8 = 5 (rounded down).
+        assert_eq!((small.width, small.height, small.samples), (8, 5, 1));
+        assert!(small.antialias.is_none());
+        // A frame of it casts one camera ray a pixel.
+        let (_, rays) = small.render(0).unwrap();
+        assert_eq!(rays.primary, 40);
+    }
 
     #[test]
     fn the_doc_example() {

@@ -14,12 +14,11 @@ use super::status::{ranges, status};
 use super::video::{check_target, Ffmpeg};
 use crate::anim::error::AnimError;
 use crate::anim::project::Animation;
-use crate::input::read_regular;
-use crate::limits::MAX_FRAME_BYTES;
-use crate::output::ImageFormat;
+use crate::output::read_rgb;
+use crate::process::stopped;
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::AtomicUsize;
 use std::time::Instant;
 
 /// The video `encode` makes of `dir` when none is named: `dir` + `.mp4`.
@@ -52,25 +51,13 @@ fn ready(anim: &Animation, dir: &Path) -> Result<(), AnimError> {
     }
 }
 
-/// The RGB bytes of frame `frame`'s file in `dir`.
+/// The RGB bytes of frame `frame`'s file in `dir` (`output::read_rgb`).
 fn pixels(anim: &Animation, dir: &Path, frame: u32) -> Result<Vec<u8>, AnimError> {
     let path = anim.frame_path(dir, frame);
-    let bad = |reason: String| AnimError::NotReady {
+    read_rgb(&path, anim.format(), anim.width, anim.height).map_err(|e| AnimError::NotReady {
         dir: dir.to_path_buf(),
-        why: format!("{}: {reason}", path.display()),
-    };
-    let bytes = read_regular(&path, MAX_FRAME_BYTES, "frame").map_err(|e| bad(e.to_string()))?;
-    let rgb = match anim.format() {
-        ImageFormat::Raw => bytes,
-        _ => image::load_from_memory(&bytes)
-            .map_err(|e| bad(format!("cannot decode it: {e}")))?
-            .to_rgb8()
-            .into_raw(),
-    };
-    match rgb.len() == 3 * anim.width as usize * anim.height as usize {
-        true => Ok(rgb),
-        false => Err(bad("not of the manifest's size".into())),
-    }
+        why: format!("{}: {e}", path.display()),
+    })
 }
 
 /// Encodes the frames of `dir` into `video` (see the module's documentation).
@@ -94,8 +81,8 @@ pub fn encode(
             skipped: 0,
         });
         for frame in 0..frames {
-            if let sig @ 1.. = stop.load(Ordering::SeqCst) {
-                return Err(AnimError::Interrupted(sig as i32));
+            if let Some(sig) = stopped(stop) {
+                return Err(AnimError::Interrupted(sig));
             }
             let start = Instant::now();
             let rgb = pixels(anim, dir, frame)?;

@@ -14,7 +14,7 @@
 use super::balance::{predicted_costs, split};
 use super::status::ranges;
 use crate::anim::error::AnimError;
-use crate::anim::project::{Animation, Project};
+use crate::anim::project::Animation;
 use std::fmt::Write;
 use std::time::Instant;
 
@@ -39,10 +39,10 @@ pub struct Estimate {
 
 impl Estimate {
     /// Predicts `frames` (any order) of `anim`; renders their pre-pass and one frame.
-    pub fn new(project: &Project, anim: &Animation, frames: &[u32]) -> Result<Estimate, AnimError> {
+    pub fn new(anim: &Animation, frames: &[u32]) -> Result<Estimate, AnimError> {
         let frames = super::select::sorted(frames);
         let start = Instant::now();
-        let costs = predicted_costs(project, anim, &frames)?;
+        let costs = predicted_costs(anim, &frames)?;
         let prepass_seconds = start.elapsed().as_secs_f64();
         let mut by_cost: Vec<usize> = (0..frames.len()).collect();
         by_cost.sort_by_key(|&i| (costs[i], frames[i]));
@@ -73,8 +73,8 @@ impl Estimate {
 
     /// Expected seconds for pre-pass `rays`, at the timed frame's rate.
     pub fn seconds(&self, rays: u64) -> f64 {
-        let per_ray = self.sample_seconds / self.sample_rays.max(1) as f64;
-        rays as f64 * self.scale * per_ray
+        let full = (rays as f64 * self.scale).round() as u64;
+        crate::render::estimate::predict(full, self.sample_rays, self.sample_seconds)
     }
 
     /// The whole selection's pre-pass rays.

@@ -11,6 +11,7 @@
 
 use super::provenance::{raw_record_path, RAW_RECORDS};
 use crate::anim::project::Animation;
+use crate::output::temporary_target;
 use std::path::{Path, PathBuf};
 
 /// The frame number a file name `name` stands for under `anim`'s name pattern, whatever
@@ -18,14 +19,7 @@ use std::path::{Path, PathBuf};
 fn frame_of(anim: &Animation, name: &str) -> Option<u32> {
     let out = &anim.manifest.output;
     let stem = name.strip_suffix(&format!(".{}", out.format.extension()))?;
-    let pattern = &out.name;
-    let (head, tail, base) = match pattern.find('#') {
-        Some(start) => {
-            let run = pattern[start..].bytes().take_while(|&b| b == b'#').count();
-            (pattern[..start].to_string(), &pattern[start + run..], run)
-        }
-        None => (format!("{pattern}_"), "", 4),
-    };
+    let (head, base, tail) = out.parts();
     let digits = stem.strip_prefix(head.as_str())?.strip_suffix(tail)?;
     if digits.len() < base || !digits.bytes().all(|b| b.is_ascii_digit()) {
         return None;
@@ -50,14 +44,6 @@ pub fn beyond(anim: &Animation, dir: &Path) -> Vec<(u32, PathBuf)> {
         .collect();
     found.sort();
     found
-}
-
-/// Whether `name` is a temporary of `tempfile` beside a file named `target`-like:
-/// `.TARGET.XXXXXX.tmp`, returning TARGET.
-fn temporary_target(name: &str) -> Option<&str> {
-    let inner = name.strip_prefix('.')?.strip_suffix(".tmp")?;
-    let (target, random) = inner.rsplit_once('.')?;
-    (random.len() == 6 && random.bytes().all(|b| b.is_ascii_alphanumeric())).then_some(target)
 }
 
 /// The hidden temporaries of frames (and RAW records) in `dir` that a run left.
@@ -143,16 +129,5 @@ mod tests {
         assert_eq!(frame_of(&anim, "f_0012x.jpg"), None);
         assert_eq!(frame_of(&anim, "f_+012x.png"), None);
         assert_eq!(frame_of(&anim, "g_012x.png"), None);
-    }
-
-    #[test]
-    fn temporaries_are_named_after_their_target() {
-        assert_eq!(
-            temporary_target(".frame_0001.png.a1B2c3.tmp"),
-            Some("frame_0001.png")
-        );
-        assert_eq!(temporary_target("frame_0001.png.a1B2c3.tmp"), None);
-        assert_eq!(temporary_target(".frame_0001.png.a1B2.tmp"), None);
-        assert_eq!(temporary_target(".notes.tmp"), None);
     }
 }

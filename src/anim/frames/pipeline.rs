@@ -18,19 +18,20 @@
 use super::events::{Event, Reporter};
 use super::folder;
 use super::lock::lock;
-use super::provenance::{self, raw_record_path, Inspection, Record};
+use super::provenance::{self, raw_record_path, Inspection};
 use super::run::Policy;
-use super::status::{self, FrameState};
+use super::status;
 use crate::anim::error::AnimError;
 use crate::anim::project::Animation;
 use crate::output::{
     encode, temp_beside, write_atomic_layers, write_atomic_with, ImageFormat, OutputError,
 };
+use crate::process::stopped;
 use crate::trace::RayCount;
 use rayon::prelude::*;
 use std::io::Write;
 use std::path::Path;
-use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::atomic::AtomicUsize;
 use std::sync::Mutex;
 use std::time::Instant;
 
@@ -45,14 +46,6 @@ pub struct Summary {
     pub skipped: usize,
     /// All rays cast by the rendered frames, by kind.
     pub rays: RayCount,
-}
-
-/// The signal number held in `stop`, if any.
-fn stopped(stop: &AtomicUsize) -> Option<i32> {
-    match stop.load(Ordering::SeqCst) {
-        0 => None,
-        sig => Some(sig as i32),
-    }
 }
 
 /// A write error with the frame's path in it: the encoder's own errors (a full disk
@@ -114,22 +107,43 @@ fn write_raw_record(frame_path: &Path, stamp: &[(String, String)]) -> std::io::R
     Ok(())
 }
 
-/// Refuses to overwrite frames of `todo` whose files record another manifest than
-/// `anim`'s (`--force` allows it).
-fn refuse_foreign(anim: &Animation, dir: &Path, todo: &[u32]) -> Result<(), AnimError> {
-    let ours = anim.manifest.path.file_name().map(|n| n.to_string_lossy());
-    let foreign: Vec<(u32, String)> = todo
-        .par_iter()
-        .filter_map(|&f| {
-            let path = anim.frame_path(dir, f);
-            match provenance::inspect(&path, anim.format(), anim.width, anim.height, false) {
-                Inspection::Sound(Record {
-                    manifest: Some(m), ..
-                }) if Some(m.as_str()) != ours.as_deref() => Some((f, m)),
-                _ => None,
-            }
-        })
-        .collect();
+/// What a run makes of the file of a frame it is asked for.
+enum Found {
+    /// Up to date (`--resume`): left as it is.
+    UpToDate,
+    /// Recorded by this other manifest: not overwritten unless forced.
+    Foreign(String),
+    /// Missing, stale or damaged, or the run is not told to look: to render.
+    Render,
+}
+
+/// Looks once at frame `frame`'s file: whether `--resume` may skip it (its record the
+/// digest the manifest now gives, and with `--verify` its pixels decode) and, if not,
+/// whether it records another manifest than `ours`.
+fn found(anim: &Animation, dir: &Path, frame: u32, policy: &Policy, ours: Option<&str>) -> Found {
+    if !policy.resume && policy.force {
+        return Found::Render;
+    }
+    let path = anim.frame_path(dir, frame);
+    let (format, w, h) = (anim.format(), anim.width, anim.height);
+    let Inspection::Sound(record) = provenance::inspect(&path, format, w, h, false) else {
+        return Found::Render;
+    };
+    if policy.resume
+        && record.digest == Some(provenance::digest(anim, frame))
+        && (!policy.verify || provenance::decode(&path, format, w, h).is_ok())
+    {
+        return Found::UpToDate;
+    }
+    match record.manifest {
+        Some(m) if !policy.force && Some(m.as_str()) != ours => Found::Foreign(m),
+        _ => Found::Render,
+    }
+}
+
+/// Refuses to overwrite frames recorded by another manifest than `anim`'s (`foreign`:
+/// each frame and the manifest its file names).
+fn refuse_foreign(dir: &Path, foreign: &[(u32, String)]) -> Result<(), AnimError> {
     match foreign.first() {
         None => Ok(()),
         Some((_, other)) => Err(AnimError::Foreign {
@@ -166,19 +180,21 @@ pub(crate) fn render_to_folder(
         };
         folder::remove(&folder::temporaries(anim, dir)).map_err(folder)?;
     }
-    let mut todo = Vec::with_capacity(frames.len());
-    let mut done = Vec::new();
-    for &f in frames {
-        if policy.resume && status::frame_state(anim, dir, f, policy.verify) == FrameState::UpToDate
-        {
-            done.push(f);
-        } else {
-            todo.push(f);
+    // Each file is inspected once, in parallel, for both answers.
+    let ours = anim.manifest.path.file_name().map(|n| n.to_string_lossy());
+    let seen: Vec<Found> = frames
+        .par_iter()
+        .map(|&f| found(anim, dir, f, policy, ours.as_deref()))
+        .collect();
+    let (mut todo, mut done, mut foreign) = (Vec::new(), Vec::new(), Vec::new());
+    for (&f, seen) in frames.iter().zip(seen) {
+        match seen {
+            Found::UpToDate => done.push(f),
+            Found::Foreign(m) => foreign.push((f, m)),
+            Found::Render => todo.push(f),
         }
     }
-    if !policy.force {
-        refuse_foreign(anim, dir, &todo)?;
-    }
+    refuse_foreign(dir, &foreign)?;
     reporter.event(Event::Started {
         total: frames.len(),
         skipped: done.len(),

@@ -12,11 +12,9 @@
 
 use crate::anim::project::Animation;
 use crate::fog::Fog;
-use crate::output::ImageFormat;
 use crate::scene::{Scene, ShapeSpec};
 use glam::DVec3;
 use sha2::{Digest, Sha256};
-use std::io::Read;
 use std::path::{Path, PathBuf};
 
 /// The keyword of the digest in every format.
@@ -163,49 +161,8 @@ pub(crate) fn raw_record_path(frame_path: &Path) -> PathBuf {
     dir.join(RAW_RECORDS).join(format!("{name}.txt"))
 }
 
-/// Whether a frame file of `width`×`height` ends where its format ends: a PNG with its
-/// IEND chunk, a JPEG with its end marker, a PPM or RAW file of exactly its size. A copy
-/// cut short keeps the record at its head, so the record alone does not make a frame.
-pub fn complete(frame_path: &Path, format: ImageFormat, width: u32, height: u32) -> bool {
-    use std::io::{Seek, SeekFrom};
-    let pixels = 3 * u64::from(width) * u64::from(height);
-    if let ImageFormat::Exr(_) = format {
-        return crate::output::exr::complete(frame_path, width, height);
-    }
-    let Ok(mut file) = std::fs::File::open(frame_path) else {
-        return false;
-    };
-    let Ok(len) = file.metadata().map(|m| m.len()) else {
-        return false;
-    };
-    // The last `n` bytes, or the first: only what the check looks at is read.
-    let mut tail = |n: u64| -> Option<Vec<u8>> {
-        file.seek(SeekFrom::Start(len.checked_sub(n)?)).ok()?;
-        let mut bytes = Vec::new();
-        (&mut file).take(n).read_to_end(&mut bytes).ok()?;
-        Some(bytes)
-    };
-    match format {
-        ImageFormat::Png => tail(12)
-            .is_some_and(|b| b == [0, 0, 0, 0, b'I', b'E', b'N', b'D', 0xAE, 0x42, 0x60, 0x82]),
-        ImageFormat::Jpeg { .. } => tail(2).is_some_and(|b| b == [0xFF, 0xD9]),
-        ImageFormat::Raw => len == pixels,
-        ImageFormat::Ppm => {
-            len >= pixels && {
-                let mut head = Vec::new();
-                let read = (&mut file).take(len - pixels).read_to_end(&mut head);
-                let head = String::from_utf8_lossy(&head);
-                read.is_ok()
-                    && head.starts_with("P6\n")
-                    && head.ends_with(&format!("\n{width} {height}\n255\n"))
-            }
-        }
-        ImageFormat::Exr(_) => unreachable!("answered above"),
-    }
-}
-
 mod inspect;
-pub(crate) use inspect::{inspect, pixels_line, Inspection, Record};
+pub(crate) use inspect::{decode, inspect, pixels_line, Inspection};
 
 #[cfg(test)]
 mod tests;

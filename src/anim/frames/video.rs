@@ -24,6 +24,7 @@ use super::run::{Encoding, Policy};
 use crate::anim::error::AnimError;
 use crate::anim::project::Animation;
 use crate::output::ImageFormat;
+use crate::process::{after_stop, stopped};
 use std::io::Read;
 use std::path::Path;
 use std::process::{Child, ChildStdin, Command, Stdio};
@@ -52,14 +53,6 @@ pub fn render_to_video(
     ffmpeg.feed(stop, |input| {
         render_to_stream(anim, frames, input, ImageFormat::Raw, reporter, stop)
     })
-}
-
-/// The signal number held in `stop`, if any.
-fn stopped(stop: &AtomicUsize) -> Option<i32> {
-    match stop.load(Ordering::SeqCst) {
-        0 => None,
-        sig => Some(sig as i32),
-    }
 }
 
 /// Refuses a video target whose folder is missing, that exists (unless `force`), or
@@ -153,18 +146,8 @@ impl Ffmpeg {
         fps: f64,
         encoding: &Encoding,
     ) -> Result<Ffmpeg, AnimError> {
-        let folder = match file.parent() {
-            Some(d) if !d.as_os_str().is_empty() => d,
-            _ => Path::new("."),
-        };
-        let name = file
-            .file_name()
-            .map_or("video".into(), |n| n.to_string_lossy());
         let ext = file.extension().map_or("".into(), |e| e.to_string_lossy());
-        let temp = tempfile::Builder::new()
-            .prefix(&format!(".{name}."))
-            .suffix(&format!(".{ext}"))
-            .tempfile_in(folder)
+        let temp = crate::output::temp_beside_as(file, &format!(".{ext}"))
             .map_err(|e| AnimError::VideoTarget {
                 path: file.to_path_buf(),
                 reason: format!("cannot create a file in its folder: {e}"),
@@ -222,18 +205,11 @@ impl Ffmpeg {
         let child = &self.child;
         let result = std::thread::scope(|s| {
             s.spawn(|| {
-                while !done.load(Ordering::SeqCst) {
-                    if stopped(stop).is_some() {
-                        std::thread::sleep(STOP_GRACE);
-                        if !done.load(Ordering::SeqCst) {
-                            if let Ok(mut c) = child.lock() {
-                                let _ = c.kill();
-                            }
-                        }
-                        return;
+                after_stop(stop, &done, STOP_GRACE, |_| {
+                    if let Ok(mut c) = child.lock() {
+                        let _ = c.kill();
                     }
-                    std::thread::sleep(Duration::from_millis(20));
-                }
+                })
             });
             let result = work(&mut input);
             done.store(true, Ordering::SeqCst);

@@ -7,8 +7,16 @@
 //! {{Param.Animate}} {{Param.Manifest}} -o {{Param.OutDir}} --frames {{Task.Param.Frame}} --resume --quiet
 //! ```
 //!
-//! (a chunk arrives as an OpenJD range such as `0-3`, which the frame grammar reads), and a
-//! `Video` step that depends on it and encodes the finished frames with ffmpeg. The chunk
+//! (a chunk arrives as an OpenJD range such as `0-3`, which the frame grammar reads), and,
+//! when the job renders the whole sequence, a `Video` step that depends on it and encodes
+//! the finished frames as `animate encode` does (its readiness check, options and
+//! temporary-and-rename):
+//!
+//! ```text
+//! {{Param.Animate}} encode {{Param.Manifest}} --dir {{Param.OutDir}} -o {{Param.Video}} --force --quiet
+//! ```
+//!
+//! The chunk
 //! size is `--chunk N` frames, or comes from `--chunk-seconds S` and the cost estimate
 //! (`frames::estimate`), which also becomes the chunks' `targetRuntimeSeconds` so that a
 //! scheduler that adapts chunk sizes aims at the same duration.
@@ -43,25 +51,6 @@ impl Chunking {
             }
         }
     }
-}
-
-/// The ffmpeg input pattern of the frame files, `frame_%04d.png`: the name pattern's
-/// first run of `#` as `%0Nd`, N as wide as [`OutputSpec::stem`] makes it.
-///
-/// [`OutputSpec::stem`]: crate::anim::manifest::OutputSpec::stem
-pub fn ffmpeg_pattern(m: &Manifest) -> String {
-    let needed = m.frames.saturating_sub(1).to_string().len();
-    let name = &m.output.name;
-    let esc = |s: &str| s.replace('%', "%%");
-    let stem = match name.find('#') {
-        Some(start) => {
-            let run = name[start..].bytes().take_while(|&b| b == b'#').count();
-            let (head, tail) = (&name[..start], &name[start + run..]);
-            format!("{}%0{}d{}", esc(head), run.max(needed), esc(tail))
-        }
-        None => format!("{}_%0{}d", esc(name), needed.max(4)),
-    };
-    format!("{stem}.{}", m.output.format.extension())
 }
 
 /// `path` relative to the folder `base` (both absolute): OpenJD joins a PATH parameter's
@@ -124,45 +113,46 @@ pub fn openjd_template(
         .with_file_name(format!("{dir_name}.mp4"))
         .display()
         .to_string();
-    let first = frames.first().copied().unwrap_or(0);
+    let render = json!({
+        "name": "Render",
+        "parameterSpace": {"taskParameterDefinitions": [{
+            "name": "Frame",
+            "type": "CHUNK[INT]",
+            "range": ranges(frames),
+            "chunks": chunks,
+        }]},
+        "script": {"actions": {"onRun": {
+            "command": "{{Param.Animate}}",
+            "args": ["{{Param.Manifest}}", "-o", "{{Param.OutDir}}",
+                     "--frames", "{{Task.Param.Frame}}", "--resume", "--quiet"],
+        }}},
+    });
+    let mut params = vec![
+        json!({"name": "Animate", "type": "STRING", "default": "animate",
+               "description": "The animate command (a path, or a name on PATH)."}),
+        path_param("Manifest", "FILE", "IN", manifest_path),
+        path_param("OutDir", "DIRECTORY", "OUT", out_dir),
+    ];
+    let mut steps = vec![render];
+    // `animate encode` needs every frame of the manifest: a job of some frames makes none.
+    if frames.iter().copied().eq(0..m.frames) {
+        params.push(path_param("Video", "FILE", "OUT", Path::new(&video)));
+        steps.push(json!({
+            "name": "Video",
+            "dependencies": [{"dependsOn": "Render"}],
+            "script": {"actions": {"onRun": {
+                "command": "{{Param.Animate}}",
+                "args": ["encode", "{{Param.Manifest}}", "--dir", "{{Param.OutDir}}",
+                         "-o", "{{Param.Video}}", "--force", "--quiet"],
+            }}},
+        }));
+    }
     json!({
         "specificationVersion": "jobtemplate-2023-09",
         "extensions": ["TASK_CHUNKING"],
         "name": format!("animate {name}"),
         "description": format!("Render {} frames of {} with animate, then encode them.", frames.len(), manifest_path.display()),
-        "parameterDefinitions": [
-            {"name": "Animate", "type": "STRING", "default": "animate",
-             "description": "The animate command (a path, or a name on PATH)."},
-            path_param("Manifest", "FILE", "IN", manifest_path),
-            path_param("OutDir", "DIRECTORY", "OUT", out_dir),
-            path_param("Video", "FILE", "OUT", Path::new(&video)),
-        ],
-        "steps": [
-            {
-                "name": "Render",
-                "parameterSpace": {"taskParameterDefinitions": [{
-                    "name": "Frame",
-                    "type": "CHUNK[INT]",
-                    "range": ranges(frames),
-                    "chunks": chunks,
-                }]},
-                "script": {"actions": {"onRun": {
-                    "command": "{{Param.Animate}}",
-                    "args": ["{{Param.Manifest}}", "-o", "{{Param.OutDir}}",
-                             "--frames", "{{Task.Param.Frame}}", "--resume", "--quiet"],
-                }}},
-            },
-            {
-                "name": "Video",
-                "dependencies": [{"dependsOn": "Render"}],
-                "script": {"actions": {"onRun": {
-                    "command": "ffmpeg",
-                    "args": ["-y", "-loglevel", "error", "-framerate", m.fps.to_string(),
-                             "-start_number", first.to_string(),
-                             "-i", format!("{{{{Param.OutDir}}}}/{}", ffmpeg_pattern(m)),
-                             "-c:v", "libx264", "-pix_fmt", "yuv420p", "{{Param.Video}}"],
-                }}},
-            },
-        ],
+        "parameterDefinitions": params,
+        "steps": steps,
     })
 }

@@ -183,6 +183,18 @@ fn per_key_look_at_points_are_read() {
 }
 
 #[test]
+fn the_name_pattern_is_cut_around_its_first_run_of_hashes() {
+    let spec = |name: &str| OutputSpec {
+        dir: PathBuf::new(),
+        name: name.into(),
+        format: ImageFormat::Png,
+    };
+    assert_eq!(spec("f_###x").parts(), ("f_".to_string(), 3, "x"));
+    assert_eq!(spec("a#b##").parts(), ("a".to_string(), 1, "b##"));
+    assert_eq!(spec("walk").parts(), ("walk_".to_string(), 4, ""));
+}
+
+#[test]
 fn file_names_are_padded_so_that_they_sort() {
     let spec = |name: &str, format| OutputSpec {
         dir: PathBuf::new(),

@@ -48,7 +48,7 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     }
     let shard = args.shard()?;
     let frames = match args.balance {
-        true => balance::select_balanced(&project, &anim, c.frames.as_deref(), shard)?,
+        true => balance::select_balanced(&anim, c.frames.as_deref(), shard)?,
         false => run::frames_of(&anim, c.frames.as_deref(), shard)?,
     };
     let destination = args.destination(m)?;
@@ -255,7 +255,7 @@ fn status_command(args: StatusArgs) -> anyhow::Result<Outcome> {
     match args.json {
         true => {
             let mut doc = report.json(&dir);
-            let costs = pool.install(|| balance::predicted_costs(&project, &anim, &frames))?;
+            let costs = pool.install(|| balance::predicted_costs(&anim, &frames))?;
             let per_frame: serde_json::Map<String, serde_json::Value> = frames
                 .iter()
                 .zip(costs)
@@ -280,7 +280,7 @@ fn job(args: JobArgs) -> anyhow::Result<Outcome> {
     let frames = sorted(&run::frames_of(&anim, c.frames.as_deref(), None)?);
     let chunking = match args.chunk_seconds {
         Some(target) => {
-            let e = pool(c.threads)?.install(|| Estimate::new(&project, &anim, &frames))?;
+            let e = pool(c.threads)?.install(|| Estimate::new(&anim, &frames))?;
             let per_frame = e.seconds(e.total()) / frames.len().max(1) as f64;
             Chunking::Seconds { target, per_frame }
         }
@@ -331,7 +331,7 @@ fn estimate(args: EstimateArgs) -> anyhow::Result<Outcome> {
     let project = c.load()?;
     let anim = Animation::new(&project)?;
     let frames = run::frames_of(&anim, c.frames.as_deref(), None)?;
-    let e = pool(c.threads)?.install(|| Estimate::new(&project, &anim, &frames))?;
+    let e = pool(c.threads)?.install(|| Estimate::new(&anim, &frames))?;
     print!("{}", e.table(args.shards));
     Ok(Outcome::Success)
 }

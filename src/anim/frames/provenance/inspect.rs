@@ -13,12 +13,12 @@
 //! With `verify`, the image is also decoded whole (PNG's zlib checksums, JPEG's
 //! entropy-coded data). A frame that fails any of this is `Damaged` (to be rendered again).
 
-use super::{complete, raw_record_path, DIGEST_KEY};
+use super::{raw_record_path, DIGEST_KEY};
 use crate::input::open_regular;
 use crate::limits::MAX_FRAME_BYTES;
 use crate::output::ImageFormat;
 use sha2::{Digest, Sha256};
-use std::io::{BufReader, Read};
+use std::io::{BufReader, Read, Seek, SeekFrom};
 use std::path::Path;
 
 /// The key of a RAW record's pixel hash.
@@ -106,18 +106,19 @@ fn inspect_file(
             raw_record(path, file)?
         }
         ImageFormat::Jpeg { .. } | ImageFormat::Ppm => {
-            if !complete(path, format, width, height) {
+            let mut file = file;
+            if !ends_whole(&mut file, len, format, width, height) {
                 return Err("cut short".into());
             }
             let mut head = Vec::new();
-            file.take(70_000)
-                .read_to_end(&mut head)
+            file.seek(SeekFrom::Start(0))
+                .and_then(|_| file.take(70_000).read_to_end(&mut head))
                 .map_err(|e| e.to_string())?;
             header_record(&head, format)
         }
         ImageFormat::Exr(_) => {
             // Every chunk must be there and readable; the record is in the header.
-            let texts = crate::output::exr::texts_if_whole(path, width, height)
+            let texts = crate::output::exr::texts_if_whole(BufReader::new(file), width, height)
                 .ok_or("cut short, or a chunk cannot be read")?;
             Record::from_pairs(texts.iter().map(|(k, v)| (k.as_str(), v.as_str())))
         }
@@ -126,6 +127,30 @@ fn inspect_file(
         decode(path, format, width, height)?;
     }
     Ok(record)
+}
+
+/// Whether the open JPEG or PPM `file` of `len` bytes, `width`×`height`, ends where its
+/// format ends: a JPEG with its end marker, a PPM of exactly its header and pixels. A copy
+/// cut short keeps the record at its head, so the record alone does not make a frame.
+/// Only the bytes looked at are read.
+fn ends_whole(file: &mut std::fs::File, len: u64, format: ImageFormat, w: u32, h: u32) -> bool {
+    let pixels = 3 * u64::from(w) * u64::from(h);
+    let mut read_at = |at: u64, n: u64| -> Option<Vec<u8>> {
+        file.seek(SeekFrom::Start(at)).ok()?;
+        let mut bytes = Vec::new();
+        (&mut *file).take(n).read_to_end(&mut bytes).ok()?;
+        Some(bytes)
+    };
+    match format {
+        ImageFormat::Ppm => {
+            len >= pixels
+                && read_at(0, len - pixels).is_some_and(|head| {
+                    let head = String::from_utf8_lossy(&head);
+                    head.starts_with("P6\n") && head.ends_with(&format!("\n{w} {h}\n255\n"))
+                })
+        }
+        _ => len >= 2 && read_at(len - 2, 2).is_some_and(|b| b == [0xFF, 0xD9]),
+    }
 }
 
 /// The record of a PNG read from its text chunks, every chunk's CRC checked.
@@ -264,32 +289,18 @@ fn header_record(head: &[u8], format: ImageFormat) -> Record {
 }
 
 /// Decodes the whole image (`status --verify`): its pixels must come out, at its size.
-fn decode(path: &Path, format: ImageFormat, width: u32, height: u32) -> Result<(), String> {
+pub(crate) fn decode(
+    path: &Path,
+    format: ImageFormat,
+    width: u32,
+    height: u32,
+) -> Result<(), String> {
     if format == ImageFormat::Raw {
         return Ok(()); // its bytes were hashed already
     }
-    if format.is_layered() {
-        let (w, h, _) =
-            crate::output::exr::read_beauty(path).map_err(|e| format!("cannot decode it: {e}"))?;
-        if (w, h) != (width, height) {
-            return Err(format!("it is {w}×{h}, not {width}×{height}"));
-        }
-        return Ok(());
-    }
-    let image = image::ImageReader::open(path)
-        .and_then(|r| r.with_guessed_format())
-        .map_err(|e| format!("cannot read it: {e}"))?;
-    let image = image
-        .decode()
-        .map_err(|e| format!("cannot decode it: {e}"))?;
-    if (image.width(), image.height()) != (width, height) {
-        return Err(format!(
-            "it is {}×{}, not {width}×{height}",
-            image.width(),
-            image.height()
-        ));
-    }
-    Ok(())
+    crate::output::read_rgb(path, format, width, height)
+        .map(drop)
+        .map_err(|e| e.to_string())
 }
 
 #[cfg(test)]

@@ -1,5 +1,6 @@
 use super::*;
 use crate::anim::project::{Animation, Project};
+use crate::output::ImageFormat;
 use crate::render::Frame;
 
 const SCENE: &str = "8 6  0 1 6  0 1 0  0 0  1 0 0 1
@@ -99,7 +100,7 @@ fn every_format_carries_its_digest() {
 }
 
 #[test]
-fn a_frame_is_complete_where_its_format_ends() {
+fn a_frame_is_sound_only_where_its_format_ends() {
     let dir = tempfile::tempdir().unwrap();
     let frame = Frame {
         width: 3,
@@ -107,26 +108,27 @@ fn a_frame_is_complete_where_its_format_ends() {
         pixels: vec![9; 18],
     };
     let meta = vec![(DIGEST_KEY.to_string(), "ab".to_string())];
+    let sound =
+        |path: &Path, format, h| matches!(inspect(path, format, 3, h, false), Inspection::Sound(_));
     for format in [
         ImageFormat::Png,
         ImageFormat::Jpeg { quality: 90 },
         ImageFormat::Ppm,
-        ImageFormat::Raw,
+        ImageFormat::Exr(Default::default()),
     ] {
         let path = dir.path().join(format!("f.{}", format.extension()));
         crate::output::write_atomic_with(&path, &frame, format, &meta).unwrap();
-        assert!(complete(&path, format, 3, 2), "{format:?}");
-        if matches!(format, ImageFormat::Ppm | ImageFormat::Raw) {
-            assert!(!complete(&path, format, 3, 3), "{format:?}: another size");
+        assert!(sound(&path, format, 2), "{format:?}");
+        if matches!(format, ImageFormat::Ppm | ImageFormat::Exr(_)) {
+            assert!(!sound(&path, format, 3), "{format:?}: another size");
         }
         let bytes = std::fs::read(&path).unwrap();
         std::fs::write(&path, &bytes[..bytes.len() - 1]).unwrap();
-        assert!(!complete(&path, format, 3, 2), "{format:?}: cut short");
+        assert!(!sound(&path, format, 2), "{format:?}: cut short");
     }
-    assert!(!complete(
-        &dir.path().join("none.png"),
-        ImageFormat::Png,
-        3,
-        2
-    ));
+    let none = dir.path().join("none.png");
+    assert_eq!(
+        inspect(&none, ImageFormat::Png, 3, 2, false),
+        Inspection::Missing
+    );
 }

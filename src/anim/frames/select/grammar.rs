@@ -18,7 +18,7 @@
 //! sub-frames (`1.5`) are not frames of a sequence and are refused.
 
 /// The most frames a spec may name before bounds are known (`fileseq`'s MAX_FRAME_SIZE).
-pub const MAX_FRAMES: u64 = 10_000_000;
+pub const MAX_SPEC_FRAMES: u64 = 10_000_000;
 
 /// How an item steps through its range.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -78,8 +78,8 @@ pub enum ListProblem {
     /// A number too large for a frame.
     #[error("{0} is too large for a frame number")]
     TooLarge(String),
-    /// More frames than [`MAX_FRAMES`].
-    #[error("more than {MAX_FRAMES} frames")]
+    /// More frames than [`MAX_SPEC_FRAMES`].
+    #[error("more than {MAX_SPEC_FRAMES} frames")]
     TooMany,
     /// A frame below 0.
     #[error("frame {0} is before the first frame, 0")]
@@ -153,7 +153,7 @@ impl FrameSpec {
                 item.check_bounds(count)?;
             }
             total += item.len_bound();
-            if total > MAX_FRAMES {
+            if total > MAX_SPEC_FRAMES {
                 let column = item.start_column;
                 return Err(SpecError {
                     column,
