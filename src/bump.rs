@@ -34,9 +34,21 @@ fn differences(c: DVec3, eps: f64) -> DVec3 {
 }
 
 impl Bump {
+    /// The bump as Scene.txt records it: `BumpType BumpValue` (0 0 for none, 1 ε
+    /// uniform, 2 ε water), as pictures, records and Cryptomatte names write it.
+    pub fn record(&self) -> (u8, f64) {
+        match *self {
+            Bump::None => (0, 0.0),
+            Bump::Uniform(e) => (1, e),
+            Bump::Water(e) => (2, e),
+        }
+    }
+
     /// The perturbed unit normal for unit normal `n` at point `p`. If the perturbation
-    /// cancels the normal exactly, the normal is left as it was.
-    #[inline]
+    /// cancels the normal exactly, the normal is left as it was. Always inlined: once the
+    /// passes' shading called it beside `shade`, LLVM stopped inlining it into `shade` on
+    /// its own, 15.6 M instructions more on the orbit at one thread (callgrind).
+    #[inline(always)]
     pub fn apply(&self, n: DVec3, p: DVec3) -> DVec3 {
         let delta = match *self {
             Bump::None => return n,
@@ -54,6 +66,13 @@ impl Bump {
 mod tests {
     use super::*;
     use crate::noise::noise;
+
+    #[test]
+    fn records_as_the_file_writes_it() {
+        assert_eq!(Bump::None.record(), (0, 0.0));
+        assert_eq!(Bump::Uniform(0.5).record(), (1, 0.5));
+        assert_eq!(Bump::Water(0.125).record(), (2, 0.125));
+    }
 
     #[test]
     fn none_leaves_the_normal() {

@@ -54,11 +54,6 @@ impl Lens {
         };
         (height * w as f64 / h as f64, height)
     }
-
-    /// True for the report's framing: no field of view, no roll.
-    pub fn is_report(&self) -> bool {
-        self.fov.is_none() && self.roll == 0.0
-    }
 }
 
 /// A camera placed for one image of `width` × `height` pixels.
@@ -71,6 +66,8 @@ pub struct Camera {
     step_x: DVec3,
     /// Step of one pixel down.
     step_y: DVec3,
+    /// The view plane's width and height at distance 1.0 (`Lens::plane`).
+    plane: (f64, f64),
 }
 
 impl Camera {
@@ -100,7 +97,7 @@ impl Camera {
 
     /// A camera whose view plane is `plane` = (width, height) at distance 1.0, turned by
     /// `roll` degrees about the viewing direction.
-    pub fn with_plane(
+    fn with_plane(
         eye: DVec3,
         look_at: DVec3,
         (width, height): (u32, u32),
@@ -131,12 +128,19 @@ impl Camera {
             corner,
             step_x: right * (plane_w / width as f64),
             step_y: up * (plane_h / height as f64),
+            plane: (plane_w, plane_h),
         })
     }
 
     /// The eye position.
     pub fn eye(&self) -> DVec3 {
         self.eye
+    }
+
+    /// The view plane's width and height at distance `VIEW_DISTANCE`: the report's
+    /// 0.5 × 0.35, or the framing's (`Lens::plane`).
+    pub fn plane(&self) -> (f64, f64) {
+        self.plane
     }
 
     /// The camera's unit axes: right (D), up (H') and forward (U).

@@ -43,6 +43,16 @@ impl Fog {
         let f = self.amount(d);
         c * (1.0 - f) + Color::ONE * f
     }
+
+    /// `apply` with the fraction already known: `f` = `self.amount(d)` gives the same
+    /// bits as `self.apply(c, d)` (the recording path hears f and then applies it).
+    #[inline]
+    pub fn apply_amount(&self, c: Color, f: f64) -> Color {
+        if let Fog::None = self {
+            return c;
+        }
+        c * (1.0 - f) + Color::ONE * f
+    }
 }
 
 #[cfg(test)]
@@ -89,6 +99,30 @@ mod tests {
             assert_eq!(fog.apply(black, f64::INFINITY), Color::ONE);
         }
         assert_eq!(Fog::None.apply(black, f64::INFINITY), black);
+    }
+
+    #[test]
+    fn apply_amount_is_apply() {
+        // The same bits as `apply` for every fog, including −0.0 without fog.
+        let fogs = [
+            Fog::None,
+            Fog::Linear(3.0),
+            Fog::Exponential(3.0),
+            Fog::ExponentialSquared(3.0),
+        ];
+        let c = Color::new(-0.0, 0.3, 2.5);
+        for fog in fogs {
+            for d in [0.0, 1.7, 3.0, 40.0, f64::INFINITY] {
+                let (a, b) = (fog.apply(c, d), fog.apply_amount(c, fog.amount(d)));
+                assert_eq!(
+                    a.to_array().map(f64::to_bits),
+                    b.to_array().map(f64::to_bits)
+                );
+            }
+        }
+        // By hand: linear fog 3 at d = 1.5 is f = 0.5: 0.5·c + 0.5.
+        let half = Fog::Linear(3.0).apply_amount(Color::new(1.0, 0.0, 0.5), 0.5);
+        assert_eq!(half, Color::new(1.0, 0.5, 0.75));
     }
 
     #[test]

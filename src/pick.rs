@@ -13,8 +13,7 @@
 use crate::camera::Camera;
 use crate::object::Object;
 use crate::texture::{Color, Texture};
-use crate::trace::Tracer;
-use glam::DVec3;
+use crate::trace::{shading_normal, Tracer};
 use serde::Serialize;
 
 /// What the camera ray through one pixel hits first.
@@ -68,26 +67,16 @@ fn rgb(c: Color) -> [f64; 3] {
 
 impl TextureInfo {
     fn of(t: &Texture) -> TextureInfo {
-        let (kind, colors) = match *t {
-            Texture::Uniform(c) => ("uniform", vec![rgb(c)]),
-            Texture::Checker(a, b) => ("checker", vec![rgb(a), rgb(b)]),
-            Texture::Perlin(a, b, c) => ("perlin", vec![rgb(a), rgb(b), rgb(c)]),
-            Texture::Wood(a, b) => ("wood", vec![rgb(a), rgb(b)]),
-            Texture::Marble(a, b) => ("marble", vec![rgb(a), rgb(b)]),
-        };
+        let (kind, _, colors) = t.record();
+        let colors = colors.into_iter().map(rgb).collect();
         TextureInfo { kind, colors }
     }
 }
 
 impl MaterialInfo {
     fn of(o: &Object) -> MaterialInfo {
-        use crate::bump::Bump;
         let m = &o.material;
-        let (bump_type, bump_value) = match m.bump {
-            Bump::None => (0, 0.0),
-            Bump::Uniform(e) => (1, e),
-            Bump::Water(e) => (2, e),
-        };
+        let (bump_type, bump_value) = m.bump.record();
         MaterialInfo {
             kd: m.kd,
             kr: m.kr,
@@ -104,25 +93,13 @@ impl MaterialInfo {
 /// image).
 pub fn pick(tracer: &Tracer, camera: &Camera, x: u32, y: u32) -> Option<Pick> {
     let ray = camera.ray(f64::from(x) + 0.5, f64::from(y) + 0.5);
-    let (t, obj) = tracer.nearest(&ray)?;
+    let (t, index) = tracer.nearest_index(&ray)?;
     let scene = tracer.scene();
-    let index = scene.objects.iter().position(|o| std::ptr::eq(o, obj))?;
-    let spec = scene.specs.get(index)?;
-    let kind = spec.kind();
-    let n = 1 + scene.specs[..index]
-        .iter()
-        .filter(|s| s.kind() == kind)
-        .count();
+    let obj = scene.objects.get(index)?;
     let p = ray.at(t);
-    let outward = obj.shape.normal(p);
-    let bumped = obj.material.bump.apply(outward, p);
-    let normal: DVec3 = if ray.dir.dot(outward) < 0.0 {
-        bumped
-    } else {
-        -bumped
-    };
+    let (normal, _) = shading_normal(obj, p, ray.dir);
     Some(Pick {
-        object: format!("{kind} {n}"),
+        object: scene.object_name(index)?,
         index,
         texture: TextureInfo::of(&obj.texture),
         material: MaterialInfo::of(obj),
@@ -136,6 +113,7 @@ pub fn pick(tracer: &Tracer, camera: &Camera, x: u32, y: u32) -> Option<Pick> {
 mod tests {
     use super::*;
     use crate::Scene;
+    use glam::DVec3;
 
     /// 40×30, eye at z = 10 looking at the origin; sphere 1 (r 1) at the origin, sphere 2
     /// (r 0.5, bumped) off to the right at x = 1.5, a floor plane y = −1 (checker).

@@ -13,7 +13,7 @@
 use crate::object::{Light, Object};
 use crate::optics::Ray;
 use crate::texture::Color;
-use crate::trace::Record;
+use crate::trace::{NoRecord, Record};
 use glam::DVec3;
 
 /// The report's ambient light intensity.
@@ -72,8 +72,8 @@ impl Occluders for [Object] {
 }
 
 /// The local colour at `p`: ambient plus each light's diffuse and specular, shadowed.
-/// `shadow_rays` counts the shadow rays cast. (`direct_rec` is the same loop telling a
-/// recorder its terms; this one is kept apart, as it was, for the beauty-only path.)
+/// `shadow_rays` counts the shadow rays cast. The beauty-only path's call, kept out of
+/// line as it always was: `direct_rec` with the no-op recorder, whose hooks fold away.
 #[allow(clippy::too_many_arguments)]
 #[inline(never)]
 pub fn direct<O: Occluders + ?Sized>(
@@ -86,37 +86,24 @@ pub fn direct<O: Occluders + ?Sized>(
     kd: f64,
     shadow_rays: &mut u64,
 ) -> Color {
-    let mut out = AMBIENT * color;
-    for (k, light) in lights.iter().enumerate() {
-        let to = light.position - p;
-        let dist = to.length();
-        if dist == 0.0 {
-            continue; // a light on the surface itself lights nothing there
-        }
-        let l = to / dist;
-        let nl = n.dot(l);
-        if nl <= 0.0 {
-            continue;
-        }
-        *shadow_rays += 1;
-        let through = occluders.transmission_to(k, p, to, l, dist);
-        if through == Color::ZERO {
-            continue;
-        }
-        let diffuse = kd * light.intensity * nl * (color * light.color);
-        // Computed even where it is ±0 (Kd = 1, V·R ≤ 0): a branch to skip it alternated
-        // between the sky (Kd = 1) and the floor and cost more than the arithmetic.
-        let r = l - 2.0 * l.dot(n) * n;
-        let spec = (1.0 - kd) * light.intensity * v.dot(r).max(0.0).powi(SHININESS) * light.color;
-        out += through * (diffuse + spec);
-    }
-    out
+    direct_rec(
+        occluders,
+        lights,
+        p,
+        n,
+        v,
+        color,
+        kd,
+        shadow_rays,
+        &mut NoRecord,
+    )
 }
 
 /// `direct`, telling `rec` the ambient term and each light's diffuse and specular terms
 /// (times what the shadow ray let through: the transparent-shadow product goes into the
-/// term it filters). Only the passes' path calls it.
+/// term it filters). Inlined into `direct` and into the passes' shading both.
 #[allow(clippy::too_many_arguments)]
+#[inline(always)]
 pub fn direct_rec<O: Occluders + ?Sized, R: Record>(
     occluders: &O,
     lights: &[Light],

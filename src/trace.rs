@@ -132,7 +132,13 @@ impl<'a> Tracer<'a> {
     #[inline]
     pub fn nearest(&self, ray: &Ray) -> Option<(f64, &'a Object)> {
         let objects = &self.scene.objects;
-        self.accel.nearest(ray).map(|(t, i)| (t, &objects[i]))
+        self.nearest_index(ray).map(|(t, i)| (t, &objects[i]))
+    }
+
+    /// `nearest`, naming the object by its index in the scene's objects.
+    #[inline]
+    pub fn nearest_index(&self, ray: &Ray) -> Option<(f64, usize)> {
+        self.accel.nearest(ray)
     }
 
     /// What a shadow ray from `p` towards a light `dist` away along the unit `to_light`
@@ -177,19 +183,21 @@ impl<'a> Tracer<'a> {
                 // The tile's mirror lists answer for the reflection off that plane only.
                 let mirror = tile.filter(|h| h.mirror_plane() == Some(i));
                 if R::ACTIVE {
+                    // The fog fraction once, for the recorder and the colour both.
                     rec.object(i, t);
-                    rec.fog(self.scene.fog.amount(t));
+                    let f = self.scene.fog.amount(t);
+                    rec.fog(f);
+                    let c = self.shade_rec(ray, t, &objects[i], mirror, 0, 1.0, count, rec);
+                    return self.scene.fog.apply_amount(c, f);
                 }
-                let c = if R::ACTIVE {
-                    self.shade_rec(ray, t, &objects[i], mirror, 0, 1.0, count, rec)
-                } else {
-                    self.shade(ray, t, &objects[i], mirror, 0, 1.0, count)
-                };
+                let c = self.shade(ray, t, &objects[i], mirror, 0, 1.0, count);
                 self.scene.fog.apply(c, t)
             }
             None => {
                 if R::ACTIVE {
-                    rec.fog(self.scene.fog.amount(f64::INFINITY));
+                    let f = self.scene.fog.amount(f64::INFINITY);
+                    rec.fog(f);
+                    return self.scene.fog.apply_amount(Color::ZERO, f);
                 }
                 self.scene.fog.apply(Color::ZERO, f64::INFINITY)
             }
@@ -254,10 +262,7 @@ impl<'a> Tracer<'a> {
         let v = ray.dir;
         let m = &obj.material;
         let c = obj.texture.color_at(p);
-        let outward = obj.shape.normal(p);
-        let entering = v.dot(outward) < 0.0;
-        let bumped = m.bump.apply(outward, p);
-        let n = if entering { bumped } else { -bumped };
+        let (n, entering) = shading_normal(obj, p, v);
         if R::ACTIVE {
             rec.surface(p, n, c);
         }
@@ -305,6 +310,17 @@ impl<'a> Tracer<'a> {
         }
         out
     }
+}
+
+/// The shading normal at `p` on `obj` for a ray along `v`, and whether the ray enters the
+/// object: the outward normal decides entering (V·N < 0), bump perturbs it, and it is
+/// turned to face the ray. What `shade` lights and `pick` answers.
+#[inline(always)]
+pub fn shading_normal(obj: &Object, p: DVec3, v: DVec3) -> (DVec3, bool) {
+    let outward = obj.shape.normal(p);
+    let entering = v.dot(outward) < 0.0;
+    let bumped = obj.material.bump.apply(outward, p);
+    (if entering { bumped } else { -bumped }, entering)
 }
 
 impl Occluders for Tracer<'_> {

@@ -14,7 +14,7 @@ use crate::accel::Accel;
 use crate::camera::{Camera, VIEW_HEIGHT, VIEW_WIDTH};
 use crate::limits::size_ok;
 use crate::output::ImageFormat;
-use crate::passes::record::{finish, PixelSum};
+use crate::passes::record::{finish, PixelSum, Sums};
 use crate::passes::{Layers, PassSet};
 use crate::render::layers::camera_matrices;
 use crate::render::{
@@ -307,7 +307,7 @@ impl<'p> Animation<'p> {
         let _drawing = control::frame_in_progress();
         let (w, h, n) = (self.width, self.height, self.samples);
         let times = self.timeline.times(frame);
-        let mut sums = vec![PixelSum::default(); w as usize * h as usize];
+        let mut sums = Sums::new(w as usize * h as usize, passes);
         let mut rays = RayCount::default();
         for &t in &times {
             let state = self.timeline.at(t);

@@ -128,13 +128,13 @@ fn run(args: Args) -> anyhow::Result<()> {
         let passes = args.pass.map_or(format.passes(), |p| PassSet::of(&[p]));
         let (layers, rays) = pool.install(|| render_layers(&tracer, &camera, w, h, n, passes));
         let frame = match args.pass {
-            Some(p) => picture(&layers, p).context("the pass was not drawn")?,
+            Some(p) => Some(picture(&layers, p).context("the pass was not drawn")?),
             None => {
-                write_atomic_layers(&out, &layers, format, &[])?;
-                layers.to_frame()
+                write_atomic_layers(&out, layers, format, &[])?;
+                None
             }
         };
-        (Some(frame).filter(|_| args.pass.is_some()), rays)
+        (frame, rays)
     } else {
         let (frame, rays) = match &args.display {
             None => pool.install(|| render_with(&tracer, &camera, w, h, aa)),

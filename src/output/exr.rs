@@ -24,34 +24,42 @@ use exr::prelude::*;
 use std::io::Write;
 use std::result::Result;
 
-/// Encodes `layers` with `meta` as string attributes.
+/// Encodes `layers` with `meta` as string attributes. The layers are taken: their
+/// channels' values move into the image instead of being copied (a frame's passes are
+/// most of its memory).
 pub(super) fn encode(
-    layers: &Layers,
+    layers: Layers,
     options: ExrOptions,
     meta: &[(String, String)],
     out: &mut dyn Write,
 ) -> Result<(), OutputError> {
-    let size = (layers.width as usize, layers.height as usize);
+    let Layers {
+        width,
+        height,
+        beauty,
+        channels: passes,
+        crypto: crypto_headers,
+        camera,
+    } = layers;
+    let size = (width as usize, height as usize);
     let mut channels: SmallVec<[AnyChannel<FlatSamples>; 4]> = SmallVec::new();
     for (axis, name) in ["R", "G", "B"].into_iter().enumerate() {
-        let values = layers.beauty.iter().map(|c| c[axis]);
+        let values = beauty.iter().map(|c| c[axis]);
         let samples = match options.depth {
             ExrDepth::Half => FlatSamples::F16(values.map(half_keeping_byte).collect()),
             ExrDepth::Float => FlatSamples::F32(values.map(float_keeping_byte).collect()),
         };
         channels.push(AnyChannel::new(name, samples));
     }
-    for ch in &layers.channels {
-        channels.push(AnyChannel::new(
-            text(&ch.name),
-            FlatSamples::F32(ch.values.clone()),
-        ));
+    drop(beauty);
+    for ch in passes {
+        channels.push(AnyChannel::new(text(&ch.name), FlatSamples::F32(ch.values)));
     }
     let mut attributes = LayerAttributes {
         software_name: Some(text(&format!("whitted {}", env!("CARGO_PKG_VERSION")))),
         ..Default::default()
     };
-    if let Some(cam) = layers.camera {
+    if let Some(cam) = camera {
         attributes.world_to_camera = Some(cam.world_to_camera);
         attributes.world_to_normalized_device = Some(cam.world_to_ndc);
     }
@@ -63,7 +71,7 @@ pub(super) fn encode(
     for (k, v) in meta {
         put(k, v);
     }
-    for c in &layers.crypto {
+    for c in &crypto_headers {
         let key = format!("cryptomatte/{}", crypto::key(&c.name));
         put(&format!("{key}/name"), &c.name);
         put(&format!("{key}/hash"), "MurmurHash3_32");

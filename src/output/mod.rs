@@ -282,15 +282,15 @@ pub fn encode_with(
                 crypto: Vec::new(),
                 camera: None,
             };
-            exr::encode(&layers, options, meta, out)
+            exr::encode(layers, options, meta, out)
         }
     }
 }
 
-/// Encodes a frame of layers: EXR keeps them all, the other formats take the beauty's
-/// clamp-and-round.
+/// Encodes a frame of layers: EXR keeps them all (taking them: their values move into the
+/// file's image), the other formats take the beauty's clamp-and-round.
 pub fn encode_layers(
-    layers: &Layers,
+    layers: Layers,
     format: ImageFormat,
     meta: &[(String, String)],
     out: &mut dyn Write,
@@ -351,10 +351,10 @@ pub fn write_atomic_with(
     write_atomic_by(path, |w| encode_with(frame, format, meta, w))
 }
 
-/// Writes a frame of layers to `path` atomically (see `encode_layers`).
+/// Writes a frame of layers to `path` atomically (see `encode_layers`, which takes them).
 pub fn write_atomic_layers(
     path: &Path,
-    layers: &Layers,
+    layers: Layers,
     format: ImageFormat,
     meta: &[(String, String)],
 ) -> Result<(), OutputError> {

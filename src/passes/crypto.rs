@@ -11,7 +11,6 @@
 //! Scene.txt record of the material (objects with equal coefficients share it).
 
 use super::Channel;
-use crate::bump::Bump;
 use crate::scene::Scene;
 
 /// Ranks a Cryptomatte layer stores (three RGBA groups of two).
@@ -34,27 +33,9 @@ pub fn key(layer: &str) -> String {
     format!("{:08x}", hash(layer))[..7].to_string()
 }
 
-/// The object names, one per object in file order.
+/// The object names, one per object in file order (`Scene::object_names`).
 pub fn object_names(scene: &Scene) -> Vec<String> {
-    let mut seen: Vec<(&str, u32)> = Vec::new();
-    scene
-        .specs
-        .iter()
-        .map(|spec| {
-            let kind = spec.kind();
-            let n = match seen.iter_mut().find(|(k, _)| *k == kind) {
-                Some((_, n)) => {
-                    *n += 1;
-                    *n
-                }
-                None => {
-                    seen.push((kind, 1));
-                    1
-                }
-            };
-            format!("{kind} {n}")
-        })
-        .collect()
+    scene.object_names().collect()
 }
 
 /// The material names, one per object in file order.
@@ -64,11 +45,7 @@ pub fn material_names(scene: &Scene) -> Vec<String> {
         .iter()
         .map(|o| {
             let m = &o.material;
-            let (kind, eps) = match m.bump {
-                Bump::None => (0, 0.0),
-                Bump::Uniform(e) => (1, e),
-                Bump::Water(e) => (2, e),
-            };
+            let (kind, eps) = m.bump.record();
             format!("material {} {} {} {} {kind} {eps}", m.kd, m.kr, m.kt, m.ior)
         })
         .collect()
@@ -140,6 +117,31 @@ pub fn channels(layer: &str, pixels: impl Iterator<Item = Ranked>) -> Vec<Channe
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn names_by_kind_and_material_record() {
+        // Two spheres (the second bumped, water 0.25) and a plane.
+        let scene = crate::Scene::parse(
+            "4 3  0 0 5  0 0 0  0 0  2 1 0 1\n\
+             1 0 0 0  1 1 0 0  0.5 0.3 0 1 0 0\n\
+             1 2 0 0  1 1 0 0  0.7 0 0.2 1.5 2 0.25\n\
+             0 -1 0  0 1 0  1 1 1 1  1 0 0 1 0 0\n\
+             0 5 5  1 1 1  1",
+            "t.txt",
+        )
+        .unwrap();
+        assert_eq!(object_names(&scene), ["sphere 1", "sphere 2", "plane 1"]);
+        assert_eq!(scene.object_name(2).as_deref(), Some("plane 1"));
+        assert_eq!(scene.object_name(3), None);
+        assert_eq!(
+            material_names(&scene),
+            [
+                "material 0.5 0.3 0 1 0 0",
+                "material 0.7 0 0.2 1.5 2 0.25",
+                "material 1 0 0 1 0 0"
+            ]
+        );
+    }
 
     #[test]
     fn ids_are_murmur3_with_a_safe_exponent() {

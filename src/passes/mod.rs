@@ -151,11 +151,6 @@ impl PassSet {
         self.0 == 0
     }
 
-    /// Whether any pass of the light split is in the set.
-    pub fn any_light(self) -> bool {
-        Pass::LIGHT.iter().any(|&p| self.has(p))
-    }
-
     /// The passes of the set, in `Pass::ALL` order.
     pub fn iter(self) -> impl Iterator<Item = Pass> {
         Pass::ALL.into_iter().filter(move |&p| self.has(p))
@@ -224,16 +219,8 @@ impl Layers {
 
     /// The beauty through the clamp-and-round of SPEC §2: the 8-bit picture.
     pub fn to_frame(&self) -> crate::render::Frame {
-        use crate::render::to_byte;
-        crate::render::Frame {
-            width: self.width,
-            height: self.height,
-            pixels: self
-                .beauty
-                .iter()
-                .flat_map(|c| [to_byte(c.x), to_byte(c.y), to_byte(c.z)])
-                .collect(),
-        }
+        let beauty = self.beauty.iter().copied();
+        crate::render::Frame::from_colors(beauty, self.width, self.height)
     }
 }
 
@@ -250,7 +237,6 @@ mod tests {
         let set = PassSet::of(&[Pass::Normal, Pass::Depth]);
         assert!(set.has(Pass::Depth) && set.has(Pass::Normal) && !set.has(Pass::Fog));
         assert_eq!(set.iter().collect::<Vec<_>>(), [Pass::Depth, Pass::Normal]);
-        assert!(!set.any_light() && PassSet::of(&[Pass::Fog]).any_light());
         assert_eq!(
             serde_json::to_string(&set).unwrap(),
             r#"["depth","normal"]"#

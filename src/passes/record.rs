@@ -1,6 +1,7 @@
 //! Recording passes: `Sample` hears one camera ray (`trace::Record`), `PixelSum` adds the
-//! samples of a pixel (over its n×n grid and every motion-blur sub-frame), and `finish`
-//! turns the sums of a frame into its `Layers`.
+//! samples of a pixel (over its n×n grid and every motion-blur sub-frame), `Sums` holds a
+//! frame's (only the beauty colours when no pass is asked), and `finish` turns them into
+//! its `Layers`.
 //!
 //! The light split: the tracer's colour at a hit is ambient + Σ lights (diffuse +
 //! specular, each times the light's shadow transmission) + reflection + transmission, and
@@ -106,9 +107,32 @@ impl PixelSum {
     }
 }
 
-/// The layers of a frame from its pixels' sums over `samples` samples each.
+/// The running sums of a frame of layers, one a pixel (rows top to bottom): the beauty
+/// colours alone when no pass is asked (a frame without passes records nothing and holds
+/// 24 bytes a pixel), else every pass's `PixelSum`.
+#[derive(Clone, Debug)]
+pub enum Sums {
+    /// Σ unclamped beauty only.
+    Beauty(Vec<Color>),
+    /// Everything the passes need.
+    Passes(Vec<PixelSum>),
+}
+
+impl Sums {
+    /// Zeroed sums for `pixels` pixels of a frame carrying `passes`.
+    pub fn new(pixels: usize, passes: PassSet) -> Sums {
+        if passes.is_empty() {
+            Sums::Beauty(vec![Color::ZERO; pixels])
+        } else {
+            Sums::Passes(vec![PixelSum::default(); pixels])
+        }
+    }
+}
+
+/// The layers of a frame from its pixels' sums over `samples` samples each (`passes`: the
+/// set the sums were made for).
 pub fn finish(
-    sums: &[PixelSum],
+    sums: &Sums,
     samples: u32,
     width: u32,
     height: u32,
@@ -117,6 +141,19 @@ pub fn finish(
     camera: Option<CameraMatrices>,
 ) -> Layers {
     let k = f64::from(samples.max(1));
+    let sums = match sums {
+        Sums::Beauty(beauty) => {
+            return Layers {
+                width,
+                height,
+                beauty: beauty.iter().map(|c| *c / k).collect(),
+                channels: Vec::new(),
+                crypto: Vec::new(),
+                camera,
+            };
+        }
+        Sums::Passes(sums) => sums,
+    };
     let beauty = sums.iter().map(|s| s.beauty / k).collect();
     let mut channels = Vec::new();
     let push3 = |channels: &mut Vec<Channel>, pass: Pass, get: &dyn Fn(&PixelSum) -> DVec3| {

@@ -23,7 +23,7 @@
 //! differences (`Measure::Sum`) or the largest single-channel difference
 //! (`Measure::Max`), both on the clamped output values (our output has no gamma).
 
-use super::{render, render_add, to_byte, Frame};
+use super::{render, render_add, Frame};
 use crate::accel::TileView;
 use crate::camera::Camera;
 use crate::texture::Color;
@@ -124,16 +124,7 @@ pub fn render_with(
         Antialias::Grid(n) => render(tracer, camera, width, height, n),
         Antialias::Adaptive(a) => {
             let out = trace(tracer, camera, width, height, a, TILE);
-            let pixels = out
-                .colors
-                .iter()
-                .flat_map(|c| [to_byte(c.x), to_byte(c.y), to_byte(c.z)])
-                .collect();
-            let frame = Frame {
-                width,
-                height,
-                pixels,
-            };
+            let frame = Frame::from_colors(out.colors, width, height);
             (frame, out.rays)
         }
     }
@@ -189,21 +180,26 @@ type BuildPointHasher = std::hash::BuildHasherDefault<PointHasher>;
 /// The finer samples of one pixel row, by lattice point.
 type SampleMap = HashMap<(u32, u32), Color, BuildPointHasher>;
 
-/// One traced lattice: the pixel corners, and the finer samples traced once on demand.
-struct Lattice<'a> {
+/// What traces a lattice point: the tracer, the camera and the lattice's size.
+struct Probe<'a> {
     tracer: &'a Tracer<'a>,
     view: Option<&'a TileView>,
     camera: &'a Camera,
     width: u32,
     height: u32,
     depth: u32,
+}
+
+/// One traced lattice: the pixel corners, and the finer samples traced once on demand.
+struct Lattice<'a> {
+    probe: Probe<'a>,
     /// The pixel corners, (width+1)·(height+1), rows top to bottom.
     corners: Vec<Color>,
     /// The finer samples, one map per pixel row (its inside and its bottom edge).
     memo: Vec<Mutex<SampleMap>>,
 }
 
-impl Lattice<'_> {
+impl Probe<'_> {
     /// The clamped colour of the camera ray through lattice point (x, y).
     fn trace(&self, x: u32, y: u32, count: &mut RayCount) -> Color {
         let step = 1.0 / f64::from(1u32 << self.depth);
@@ -217,18 +213,26 @@ impl Lattice<'_> {
             .primary_in(hint, &ray, count)
             .clamp(Color::ZERO, Color::ONE)
     }
+}
 
+impl Lattice<'_> {
     /// The sample at lattice point (x, y), traced if no one has yet.
     fn sample(&self, x: u32, y: u32, count: &mut RayCount) -> Color {
-        let mask = (1u32 << self.depth) - 1;
+        let Probe {
+            depth,
+            width,
+            height,
+            ..
+        } = self.probe;
+        let mask = (1u32 << depth) - 1;
         if x & mask == 0 && y & mask == 0 {
-            let k = (y >> self.depth) as usize * (self.width as usize + 1);
-            return self.corners[k + (x >> self.depth) as usize];
+            let k = (y >> depth) as usize * (width as usize + 1);
+            return self.corners[k + (x >> depth) as usize];
         }
         let row = if y & mask == 0 && y > 0 {
-            (y >> self.depth) - 1
+            (y >> depth) - 1
         } else {
-            (y >> self.depth).min(self.height - 1)
+            (y >> depth).min(height - 1)
         };
         let lock = || {
             self.memo[row as usize]
@@ -242,7 +246,7 @@ impl Lattice<'_> {
         // on a pixel row's top or bottom edge), the colours are the same and the first
         // one's rays are the ones counted: each point counts once, whoever traced it.
         let mut own = RayCount::default();
-        let c = self.trace(x, y, &mut own);
+        let c = self.probe.trace(x, y, &mut own);
         match lock().entry((x, y)) {
             Entry::Occupied(first) => *first.get(),
             Entry::Vacant(slot) => {
@@ -318,18 +322,17 @@ pub fn trace(
     tile: u32,
 ) -> Adaptively {
     let depth = aa.depth.min(MAX_DEPTH);
+    let aa = Adaptive { depth, ..aa };
     let view = TileView::new(camera, width, height, &tracer.scene().objects);
-    let mut lattice = Lattice {
+    let probe = Probe {
         tracer,
         view: view.as_ref(),
         camera,
         width,
         height,
         depth,
-        corners: vec![Color::ZERO; (width as usize + 1) * (height as usize + 1)],
-        memo: (0..height).map(|_| Mutex::default()).collect(),
     };
-    let mut corners = std::mem::take(&mut lattice.corners);
+    let mut corners = vec![Color::ZERO; (width as usize + 1) * (height as usize + 1)];
     let mut rays = corners
         .par_chunks_mut(width as usize + 1)
         .enumerate()
@@ -339,12 +342,16 @@ pub fn trace(
                 return count; // cancelled: the caller discards the frame
             }
             for (i, c) in row.iter_mut().enumerate() {
-                *c = lattice.trace((i as u32) << depth, (j as u32) << depth, &mut count);
+                *c = probe.trace((i as u32) << depth, (j as u32) << depth, &mut count);
             }
             count
         })
         .reduce(RayCount::default, |a, b| a + b);
-    lattice.corners = corners;
+    let lattice = Lattice {
+        probe,
+        corners,
+        memo: (0..height).map(|_| Mutex::default()).collect(),
+    };
     let tile = tile.max(1);
     let (cols, rows) = (width.div_ceil(tile), height.div_ceil(tile));
     let tiles: Vec<(Vec<(Color, Split)>, RayCount)> = (0..cols * rows)
@@ -355,9 +362,9 @@ pub fn trace(
             let mut out = Vec::new();
             let band = tj * tile..((tj + 1) * tile).min(height);
             if super::control::stop_row() {
-                // Cancelled: the caller discards the frame; the tile keeps its shape.
-                let cells = band.len() * (((ti + 1) * tile).min(width) - ti * tile) as usize;
-                return (vec![(Color::ZERO, Split::default()); cells], count);
+                // Cancelled: the caller discards the frame; an empty tile leaves its
+                // pixels as they were made, zero.
+                return (out, count);
             }
             for j in band.clone() {
                 for i in ti * tile..((ti + 1) * tile).min(width) {
@@ -395,9 +402,10 @@ pub fn trace(
     result
 }
 
-/// Pixel (i, j): its square of the lattice, split as its corners ask.
+/// Pixel (i, j): its square of the lattice, split as its corners ask (`aa.depth` is the
+/// lattice's).
 fn pixel(lattice: &Lattice, aa: &Adaptive, i: u32, j: u32, count: &mut RayCount) -> (Color, Split) {
-    let d = lattice.depth;
+    let d = lattice.probe.depth;
     let (x, y, size) = (i << d, j << d, 1u32 << d);
     let mut sample = |x: u32, y: u32| lattice.sample(x, y, count);
     let c = [
@@ -406,6 +414,5 @@ fn pixel(lattice: &Lattice, aa: &Adaptive, i: u32, j: u32, count: &mut RayCount)
         sample(x, y + size),
         sample(x + size, y + size),
     ];
-    let aa = Adaptive { depth: d, ..*aa };
-    square(&aa, (x, y), size, 0, c, &mut sample)
+    square(aa, (x, y), size, 0, c, &mut sample)
 }

@@ -3,16 +3,18 @@
 //! over rows like `render`. The beauty here is the mean of the unclamped samples (SPEC
 //! §12); with one sample and no motion blur it is exactly the colour `render` rounds.
 
+use super::{par_rows, sub_pixel};
 use crate::accel::TileView;
-use crate::camera::{Camera, VIEW_DISTANCE, VIEW_HEIGHT, VIEW_WIDTH};
-use crate::passes::record::{finish, PixelSum, Sample};
+use crate::camera::{Camera, VIEW_DISTANCE};
+use crate::passes::record::{finish, Sample, Sums};
 use crate::passes::{CameraMatrices, Layers, Pass, PassSet};
 use crate::trace::{RayCount, Tracer};
-use rayon::prelude::*;
 
-/// Adds every pixel's `samples`² samples into `sums` (width·height, rows top to bottom):
-/// one sub-frame of a frame of layers. `passes` says whether Cryptomatte coverage is
-/// kept; the rest is cheap enough to record always.
+/// Adds every pixel's `samples`² samples into `sums` (width·height, rows top to bottom,
+/// made by `Sums::new` for `passes`): one sub-frame of a frame of layers. Without passes
+/// only the beauty is summed, through the tracer's no-op recorder (the same colours the
+/// recording path computes, added in the same order); `passes` also says whether
+/// Cryptomatte coverage is kept; the rest is cheap enough to record always.
 pub fn render_layers_add(
     tracer: &Tracer,
     camera: &Camera,
@@ -20,7 +22,7 @@ pub fn render_layers_add(
     height: u32,
     samples: u32,
     passes: PassSet,
-    sums: &mut [PixelSum],
+    sums: &mut Sums,
 ) -> RayCount {
     let n = samples.max(1);
     let crypto = passes.has(Pass::CryptoObject) || passes.has(Pass::CryptoMaterial);
@@ -28,37 +30,33 @@ pub fn render_layers_add(
     let view = TileView::new(camera, width, height, &tracer.scene().objects);
     let view = view.as_ref();
     let step = 1.0 / n as f64;
-    sums.par_chunks_mut(width.max(1) as usize)
-        .take(height as usize)
-        .enumerate()
-        .map(|(j, row)| {
-            let mut count = RayCount::default();
-            if super::control::stop_row() {
-                return count; // cancelled: the caller discards the frame
-            }
+    match sums {
+        Sums::Beauty(sums) => par_rows(sums, width, height, |j, row, count| {
             for (i, sum) in row.iter_mut().enumerate() {
                 let hint = view.map(|v| v.hint(i as u32, j as u32));
                 for b in 0..n {
                     for a in 0..n {
-                        let (x, y) = if n == 1 {
-                            (i as f64 + 0.5, j as f64 + 0.5)
-                        } else {
-                            (
-                                i as f64 + (a as f64 + 0.5) * step,
-                                j as f64 + (b as f64 + 0.5) * step,
-                            )
-                        };
+                        let (x, y) = sub_pixel(i as f64, j as f64, a, b, step);
+                        *sum += tracer.primary_in(hint, &camera.ray(x, y), count);
+                    }
+                }
+            }
+        }),
+        Sums::Passes(sums) => par_rows(sums, width, height, |j, row, count| {
+            for (i, sum) in row.iter_mut().enumerate() {
+                let hint = view.map(|v| v.hint(i as u32, j as u32));
+                for b in 0..n {
+                    for a in 0..n {
+                        let (x, y) = sub_pixel(i as f64, j as f64, a, b, step);
                         let ray = camera.ray(x, y);
                         let mut s = Sample::default();
-                        let c = tracer.primary_rec(hint, &ray, &mut count, &mut s);
+                        let c = tracer.primary_rec(hint, &ray, count, &mut s);
                         sum.add(c, &s, ray.dir, forward, crypto);
                     }
                 }
             }
-            super::control::row_done();
-            count
-        })
-        .reduce(RayCount::default, |a, b| a + b)
+        }),
+    }
 }
 
 /// Renders the beauty and `passes` of the tracer's scene through `camera`.
@@ -70,7 +68,7 @@ pub fn render_layers(
     samples: u32,
     passes: PassSet,
 ) -> (Layers, RayCount) {
-    let mut sums = vec![PixelSum::default(); width as usize * height as usize];
+    let mut sums = Sums::new(width as usize * height as usize, passes);
     let rays = render_layers_add(tracer, camera, width, height, samples, passes, &mut sums);
     let n = samples.max(1);
     let layers = finish(
@@ -95,11 +93,13 @@ pub fn camera_matrices(camera: &Camera) -> CameraMatrices {
         [r.z, u.z, f.z, 0.0],
         [-e.dot(r), -e.dot(u), -e.dot(f), 1.0],
     ];
-    // x_ndc = x·(2d/W)/z, y_ndc = y·(2d/H)/z, z_ndc = (z − near)/z, w = z.
+    // x_ndc = x·(2d/W)/z, y_ndc = y·(2d/H)/z, z_ndc = (z − near)/z, w = z, with W × H
+    // the camera's own view plane (the report's, or the framing's).
     let near = crate::optics::T_MIN;
+    let (plane_w, plane_h) = camera.plane();
     let proj = [
-        [2.0 * VIEW_DISTANCE / VIEW_WIDTH, 0.0, 0.0, 0.0],
-        [0.0, 2.0 * VIEW_DISTANCE / VIEW_HEIGHT, 0.0, 0.0],
+        [2.0 * VIEW_DISTANCE / plane_w, 0.0, 0.0, 0.0],
+        [0.0, 2.0 * VIEW_DISTANCE / plane_h, 0.0, 0.0],
         [0.0, 0.0, 1.0, 1.0],
         [0.0, 0.0, -near, 0.0],
     ];
@@ -158,6 +158,34 @@ mod tests {
     }
 
     #[test]
+    fn without_passes_the_beauty_alone_is_summed_to_the_same_bits() {
+        // A plain EXR sums colours only (`Sums::Beauty`); its beauty is bit for bit the
+        // beauty of the recording path, so the file's bytes are those it had.
+        let scene = crate::Scene::parse(SCENE, "t.txt").unwrap();
+        let tracer = Tracer::new(&scene);
+        let camera = scene.camera();
+        assert!(matches!(
+            Sums::new(48, PassSet::NONE),
+            Sums::Beauty(ref v) if v.len() == 48
+        ));
+        for n in [1, 2, 3] {
+            let (plain, rays) = render_layers(&tracer, &camera, 8, 6, n, PassSet::NONE);
+            let all = PassSet::of(&Pass::ALL);
+            let (layered, layered_rays) = render_layers(&tracer, &camera, 8, 6, n, all);
+            let bits = |l: &Layers| -> Vec<[u64; 3]> {
+                l.beauty
+                    .iter()
+                    .map(|c| c.to_array().map(f64::to_bits))
+                    .collect()
+            };
+            assert_eq!(bits(&plain), bits(&layered), "{n}² samples");
+            assert!(plain.channels.is_empty() && plain.crypto.is_empty());
+            assert_eq!(plain.camera, layered.camera);
+            assert_eq!(rays, layered_rays);
+        }
+    }
+
+    #[test]
     fn world_to_camera_puts_the_look_at_point_straight_ahead() {
         let cam = Camera::new(glam::DVec3::new(0.0, 0.0, 5.0), glam::DVec3::ZERO, 4, 3).unwrap();
         let m = camera_matrices(&cam);
@@ -168,5 +196,50 @@ mod tests {
         let n = m.world_to_ndc;
         assert_eq!((n[12], n[13], n[15]), (0.0, 0.0, 5.0));
         assert!((n[14] / n[15] - (5.0 - 0.01) / 5.0).abs() < 1e-6);
+    }
+
+    /// The NDC (x, y) of `p` through the header's row-vector matrix.
+    fn ndc(m: &[f32; 16], p: glam::DVec3) -> (f64, f64) {
+        let col = |j: usize| {
+            let m = |i: usize| f64::from(m[4 * i + j]);
+            p.x * m(0) + p.y * m(1) + p.z * m(2) + m(3)
+        };
+        (col(0) / col(3), col(1) / col(3))
+    }
+
+    #[test]
+    fn world_to_ndc_follows_the_framing() {
+        use crate::camera::Lens;
+        use glam::DVec3;
+        // A 16:9 frame of a 4:3 scene, a fov'd one, a rolled one: the point 7 units down
+        // the camera ray through a pixel's centre lands at that pixel's NDC (x right, y
+        // up, −1..1 across the picture).
+        let (eye, at) = (DVec3::new(1.0, 3.0, 12.0), DVec3::new(0.0, 1.0, 0.0));
+        let lenses = [
+            Lens::default(),
+            Lens {
+                fov: Some(60.0),
+                roll: 0.0,
+            },
+            Lens {
+                fov: Some(30.0),
+                roll: 20.0,
+            },
+        ];
+        for lens in lenses {
+            for (w, h) in [(640u32, 480u32), (1920, 1080)] {
+                let cam = Camera::framed(eye, at, (640, 480), (w, h), &lens).unwrap();
+                let m = camera_matrices(&cam).world_to_ndc;
+                for (x, y) in [(0.5, 0.5), (100.5, 400.5), (639.5, 20.5), (320.0, 240.0)] {
+                    let ray = cam.ray(x, y);
+                    let (nx, ny) = ndc(&m, ray.origin + 7.0 * ray.dir);
+                    let want = (2.0 * x / w as f64 - 1.0, 1.0 - 2.0 * y / h as f64);
+                    assert!(
+                        (nx - want.0).abs() < 1e-5 && (ny - want.1).abs() < 1e-5,
+                        "{lens:?} {w}x{h} pixel ({x}, {y}): ndc ({nx}, {ny}), want {want:?}"
+                    );
+                }
+            }
+        }
     }
 }

@@ -112,7 +112,25 @@ pub fn render_add(
     let n = samples.max(1);
     let view = TileView::new(camera, width, height, &tracer.scene().objects);
     let view = view.as_ref();
-    sum.par_chunks_mut(width.max(1) as usize)
+    par_rows(sum, width, height, |j, row, count| {
+        for (i, acc) in row.iter_mut().enumerate() {
+            let c = pixel(tracer, view, camera, i as f64, j as f64, n, count);
+            *acc += c.clamp(Color::ZERO, Color::ONE);
+        }
+    })
+}
+
+/// The first `height` rows of `width` items of `buf` drawn in parallel, `draw(j, row,
+/// rays)` each, unless the render was cancelled (then the row is left as it is and the
+/// caller discards the frame); each row drawn counts as done. The rays of all rows.
+/// (`render` and `render_observed` have `draw_row`, the same loop over rows of bytes.)
+pub(crate) fn par_rows<T: Send>(
+    buf: &mut [T],
+    width: u32,
+    height: u32,
+    draw: impl Fn(usize, &mut [T], &mut RayCount) + Sync,
+) -> RayCount {
+    buf.par_chunks_mut(width.max(1) as usize)
         .take(height as usize)
         .enumerate()
         .map(|(j, row)| {
@@ -120,10 +138,7 @@ pub fn render_add(
             if control::stop_row() {
                 return count; // cancelled: the caller discards the frame
             }
-            for (i, acc) in row.iter_mut().enumerate() {
-                let c = pixel(tracer, view, camera, i as f64, j as f64, n, &mut count);
-                *acc += c.clamp(Color::ZERO, Color::ONE);
-            }
+            draw(j, row, &mut count);
             control::row_done();
             count
         })
@@ -131,21 +146,24 @@ pub fn render_add(
 }
 
 impl Frame {
-    /// The frame whose pixels are `sum / count`, rounded as every pixel is (`to_byte`).
-    pub fn from_sum(sum: &[Color], count: u32, width: u32, height: u32) -> Frame {
-        let k = f64::from(count.max(1));
-        let pixels = sum
-            .iter()
-            .flat_map(|c| {
-                let m = *c / k;
-                [to_byte(m.x), to_byte(m.y), to_byte(m.z)]
-            })
+    /// The frame of `colors` (width·height, rows top to bottom), each channel through the
+    /// clamp-and-round of SPEC §2 (`to_byte`).
+    pub fn from_colors(colors: impl IntoIterator<Item = Color>, width: u32, height: u32) -> Frame {
+        let pixels = colors
+            .into_iter()
+            .flat_map(|c| [to_byte(c.x), to_byte(c.y), to_byte(c.z)])
             .collect();
         Frame {
             width,
             height,
             pixels,
         }
+    }
+
+    /// The frame whose pixels are `sum / count`, rounded as every pixel is (`to_byte`).
+    pub fn from_sum(sum: &[Color], count: u32, width: u32, height: u32) -> Frame {
+        let k = f64::from(count.max(1));
+        Frame::from_colors(sum.iter().map(|c| *c / k), width, height)
     }
 }
 
@@ -169,8 +187,7 @@ fn pixel(
     let mut sum = Color::ZERO;
     for b in 0..n {
         for a in 0..n {
-            let x = i + (a as f64 + 0.5) * step;
-            let y = j + (b as f64 + 0.5) * step;
+            let (x, y) = sub_pixel(i, j, a, b, step);
             let c = tracer.primary_in(view, &camera.ray(x, y), count);
             sum += c.clamp(Color::ZERO, Color::ONE);
         }
@@ -178,9 +195,27 @@ fn pixel(
     sum / (n * n) as f64
 }
 
+/// Where sample (a, b) of pixel (i, j)'s n×n grid (`step` = 1/n) sits: the centre of its
+/// cell, (i + (a + ½)/n, j + (b + ½)/n); with n = 1 exactly the pixel's centre
+/// (i + 0.5, j + 0.5), since (0 + 0.5)·1.0 is 0.5.
+#[inline]
+pub(crate) fn sub_pixel(i: f64, j: f64, a: u32, b: u32, step: f64) -> (f64, f64) {
+    (i + (a as f64 + 0.5) * step, j + (b as f64 + 0.5) * step)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn sub_pixel_by_hand() {
+        // 2×2 grid of pixel (3, 5): the cells' centres at quarters.
+        assert_eq!(sub_pixel(3.0, 5.0, 0, 0, 0.5), (3.25, 5.25));
+        assert_eq!(sub_pixel(3.0, 5.0, 1, 0, 0.5), (3.75, 5.25));
+        assert_eq!(sub_pixel(3.0, 5.0, 1, 1, 0.5), (3.75, 5.75));
+        // One sample: the centre, bit for bit.
+        assert_eq!(sub_pixel(639.0, 479.0, 0, 0, 1.0), (639.5, 479.5));
+    }
 
     #[test]
     fn clamp_then_round() {

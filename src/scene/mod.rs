@@ -78,6 +78,33 @@ impl Scene {
         Ok((scene, bytes))
     }
 
+    /// The objects' names, in order: `KIND N`, N counted from 1 per kind in file order
+    /// (`sphere 3`: the file's third sphere), the names tracks target
+    /// (`anim::timeline::target::objects_of` is the inverse), picking answers and
+    /// Cryptomatte hashes.
+    pub fn object_names(&self) -> impl Iterator<Item = String> + '_ {
+        let mut seen: Vec<(&str, u32)> = Vec::new();
+        self.specs.iter().map(move |spec| {
+            let kind = spec.kind();
+            let n = match seen.iter_mut().find(|(k, _)| *k == kind) {
+                Some((_, n)) => {
+                    *n += 1;
+                    *n
+                }
+                None => {
+                    seen.push((kind, 1));
+                    1
+                }
+            };
+            format!("{kind} {n}")
+        })
+    }
+
+    /// The name of object `index` (see `object_names`); `None` past the last object.
+    pub fn object_name(&self, index: usize) -> Option<String> {
+        self.object_names().nth(index)
+    }
+
     /// The scene's own camera, at its resolution.
     pub fn camera(&self) -> Camera {
         Camera::new(self.eye, self.look_at, self.width, self.height)

@@ -345,7 +345,7 @@ pub fn bless(anim: &Animation, frames: &[u32], refs: &Path) -> Result<Vec<Blesse
                     depth: crate::output::ExrDepth::Float,
                     ..Default::default()
                 });
-                crate::output::write_atomic_layers(&path, &layers, exr, &[])
+                crate::output::write_atomic_layers(&path, layers, exr, &[])
             } else {
                 let (image, _) = anim.render(frame)?;
                 write_atomic(&path, &image, ImageFormat::Png)

@@ -73,7 +73,7 @@ fn write_frame(anim: &Animation, dir: &Path, frame: u32) -> Result<RayCount, Ani
     let rays = if format.is_layered() {
         // EXR: the beauty unclamped and the passes, provenance in the header.
         let (layers, rays) = anim.render_layers(frame, format.passes())?;
-        write_atomic_layers(&path, &layers, format, &stamp)
+        write_atomic_layers(&path, layers, format, &stamp)
             .map_err(|e| write(with_path(&path, e)))?;
         rays
     } else {

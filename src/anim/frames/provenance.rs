@@ -11,10 +11,8 @@
 //! give the same bytes on every run.
 
 use crate::anim::project::Animation;
-use crate::bump::Bump;
 use crate::fog::Fog;
 use crate::scene::{Scene, ShapeSpec};
-use crate::texture::Texture;
 use glam::DVec3;
 use sha2::{Digest, Sha256};
 use std::path::{Path, PathBuf};
@@ -65,14 +63,8 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
                 f(radius);
             }
         }
-        let (kind, colors): (f64, Vec<DVec3>) = match obj.texture {
-            Texture::Uniform(c) => (1.0, vec![c]),
-            Texture::Checker(a, b) => (2.0, vec![a, b]),
-            Texture::Perlin(a, b, c) => (3.0, vec![a, b, c]),
-            Texture::Wood(a, b) => (4.0, vec![a, b]),
-            Texture::Marble(a, b) => (5.0, vec![a, b]),
-        };
-        f(kind);
+        let (_, kind, colors) = obj.texture.record();
+        f(f64::from(kind));
         for c in colors {
             v(c, &mut f);
         }
@@ -80,12 +72,8 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
         for x in [m.kd, m.kr, m.kt, m.ior] {
             f(x);
         }
-        let (bump_kind, eps) = match m.bump {
-            Bump::None => (0.0, 0.0),
-            Bump::Uniform(e) => (1.0, e),
-            Bump::Water(e) => (2.0, e),
-        };
-        f(bump_kind);
+        let (bump_kind, eps) = m.bump.record();
+        f(f64::from(bump_kind));
         f(eps);
     }
     for light in &scene.lights {
