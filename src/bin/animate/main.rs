@@ -47,8 +47,12 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
         anim = anim.observed(observer);
     }
     let shard = args.shard()?;
+    let pool = pool(c.threads)?;
     let frames = match args.balance {
-        true => balance::select_balanced(&project, &anim, c.frames.as_deref(), shard)?,
+        // The pre-pass traces sample frames: on the --threads pool like the render.
+        true => {
+            pool.install(|| balance::select_balanced(&project, &anim, c.frames.as_deref(), shard))?
+        }
         false => run::frames_of(&anim, c.frames.as_deref(), shard)?,
     };
     let destination = args.destination(m)?;
@@ -56,7 +60,7 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     if !c.quiet {
         report::announce(&anim, frames.len(), args.stdout == Some(ImageFormat::Raw));
     }
-    let (stop, pool) = (whitted::process::watch_signals("animate"), pool(c.threads)?);
+    let stop = whitted::process::watch_signals("animate");
     if matches!(destination, Destination::Stream(_)) {
         // A reader that stops reading would hold a write, and the run, forever.
         whitted::process::exit_when_stuck(stop.clone(), |sig| {
