@@ -350,3 +350,33 @@ fn a_missing_manifest_or_a_busy_port_is_bad_input() {
     );
     assert!(String::from_utf8_lossy(&out.stderr).contains("cannot listen on 127.0.0.1:"));
 }
+
+/// A scene of one sphere of radius 1.5 on the point the circle camera looks at.
+const ONE_SPHERE: &str = "64 48\n0 3 8\n0 1 0\n0 40\n1 0 0 1\n\
+1.5  0 1 0   1 0.8 0.2 0.2   0.9 0 0 1 0 0\n5 10 5  1 1 1  0.9\n";
+
+#[test]
+fn picking_uses_the_manifests_camera() {
+    // A 5° field of view: the sphere fills the frame, so the corner pixel shows it; the
+    // report's wider view (about 20°) would see past it there.
+    let (dir, manifest) = project(&circle_manifest(""));
+    let text = std::fs::read_to_string(&manifest).unwrap();
+    std::fs::write(
+        &manifest,
+        text.replace("turns = 1.0\n", "turns = 1.0\nfov = 5.0\n"),
+    )
+    .unwrap();
+    std::fs::write(dir.path().join("scene.txt"), ONE_SPHERE).unwrap();
+    let v = Viewer::start(&manifest, &[]);
+    let (status, p) = v.json("/api/pick?n=0&x=0&y=0");
+    assert_eq!(status, 200, "{p}");
+    assert_eq!(p["hit"]["object"], "sphere 1", "{p}");
+    // And the frame shows the sphere's red there, not the black of a miss.
+    let r = v.get("/api/frame?n=0&format=raw&client=p");
+    assert_eq!(r.status, 200, "{}", r.text());
+    assert!(
+        r.body[0] > 20 && r.body[0] > r.body[1],
+        "{:?}",
+        &r.body[..3]
+    );
+}

@@ -16,6 +16,7 @@ use crate::limits::size_ok;
 use crate::output::ImageFormat;
 use crate::passes::record::{finish, PixelSum};
 use crate::passes::{Layers, PassSet};
+use crate::pick::Pick;
 use crate::render::layers::camera_matrices;
 use crate::render::{
     control, estimate, render_add_with, render_layers_add, render_with, Adaptive, Antialias, Frame,
@@ -224,6 +225,15 @@ impl<'p> Animation<'p> {
             rays = rays + render_add_with(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
         }
         Ok((Frame::from_sum(&sum, times.len() as u32, w, h), rays))
+    }
+
+    /// What the camera ray through the centre of pixel (x, y) of frame `frame` hits
+    /// (`crate::pick`), with this animation's camera (its size, `fov` and `roll`) at the
+    /// frame's own time (motion blur's sub-frames are around it) and its shared tracer.
+    pub fn pick(&self, frame: u32, x: u32, y: u32) -> Result<Option<Pick>, AnimError> {
+        let state = self.timeline.at(f64::from(frame));
+        let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
+        Ok(crate::pick::pick(&self.tracer(&state.scene), &camera, x, y))
     }
 
     /// The camera rays `frames` frames cast (`render::estimate::camera_rays`).

@@ -19,8 +19,6 @@ use super::frames::{scaled_size, Drawn, Encoding, Frames};
 use super::live::{Live, Loaded};
 use crate::anim::frames::status::status;
 use crate::anim::project::Animation;
-use crate::camera::Camera;
-use crate::trace::Tracer;
 use serde_json::{json, Value};
 use std::net::SocketAddr;
 use std::sync::Arc;
@@ -244,16 +242,10 @@ fn pick(ctx: &Context, query: &str) -> Result<Reply, Reply> {
     let n = number(query, "n", 0, p.manifest.frames - 1, None)?;
     let x = number(query, "x", 0, w - 1, None)?;
     let y = number(query, "y", 0, h - 1, None)?;
-    // The frame's own time (motion blur's sub-frames are around it).
-    let snap = p.timeline.at(f64::from(n));
-    let Some(camera) = Camera::new(snap.eye, snap.look_at, w, h) else {
-        return Err(Reply::error(
-            422,
-            format!("frame {n}: the camera is on the point it looks at"),
-        ));
-    };
-    let tracer = Tracer::new(&snap.scene);
-    let hit = crate::pick::pick(&tracer, &camera, x, y);
+    let anim = Animation::new(&p).map_err(|e| Reply::error(422, format!("animate: {e}")))?;
+    let hit = anim
+        .pick(n, x, y)
+        .map_err(|e| Reply::error(422, format!("animate: {e}")))?;
     Ok(Reply::json(
         200,
         json!({ "frame": n, "x": x, "y": y, "hit": hit }),
