@@ -351,6 +351,23 @@ fn a_missing_manifest_or_a_busy_port_is_bad_input() {
     assert!(String::from_utf8_lossy(&out.stderr).contains("cannot listen on 127.0.0.1:"));
 }
 
+#[test]
+fn view_threads_bounds_the_rendering_threads() {
+    // Rayon's global pool would start RAYON_NUM_THREADS threads (kept to the end): with
+    // --threads 1, frames and the strip are drawn on the view's own pool of one.
+    let (_dir, manifest) = project(&circle_manifest(""));
+    let v = Viewer::start_with_env(
+        &manifest,
+        &["--threads", "1"],
+        &[("RAYON_NUM_THREADS", "48")],
+    );
+    let r = v.get("/api/frame?n=2&client=t");
+    assert_eq!(r.status, 200, "{}", r.text());
+    assert_eq!(v.get("/api/status").status, 200);
+    let threads = v.threads();
+    assert!(threads < 40, "{threads} threads with --threads 1");
+}
+
 /// A scene of one sphere of radius 1.5 on the point the circle camera looks at.
 const ONE_SPHERE: &str = "64 48\n0 3 8\n0 1 0\n0 40\n1 0 0 1\n\
 1.5  0 1 0   1 0.8 0.2 0.2   0.9 0 0 1 0 0\n5 10 5  1 1 1  0.9\n";

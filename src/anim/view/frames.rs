@@ -50,11 +50,11 @@ type Key = (u64, u32, u32, Encoding);
 /// A cached frame: its key, bytes and size.
 type Entry = (Key, Arc<Vec<u8>>, u32, u32);
 
-/// The frame service: client slots and the cache.
-#[derive(Default)]
+/// The frame service: client slots, the cache, and the threads that draw.
 pub struct Frames {
     clients: Mutex<HashMap<String, Arc<Slot>>>,
     cache: Mutex<VecDeque<Entry>>,
+    pool: Arc<rayon::ThreadPool>,
 }
 
 /// The size of a project's frames at 1/scale (at least one pixel a side).
@@ -93,6 +93,15 @@ pub fn draw(
 }
 
 impl Frames {
+    /// A frame service drawing on `pool`.
+    pub fn new(pool: Arc<rayon::ThreadPool>) -> Frames {
+        Frames {
+            clients: Mutex::default(),
+            cache: Mutex::default(),
+            pool,
+        }
+    }
+
     fn slot(&self, client: &str) -> Arc<Slot> {
         let mut clients = self.clients.lock().unwrap_or_else(|e| e.into_inner());
         if clients.len() >= MAX_CLIENTS && !clients.contains_key(client) {
@@ -145,7 +154,9 @@ impl Frames {
         if let Some((b, w, h)) = self.cached(&key) {
             return Ok(Drawn::Frame(b, w, h));
         }
-        let (bytes, w, h) = draw(project, frame, scale, encoding)?;
+        let (bytes, w, h) = self
+            .pool
+            .install(|| draw(project, frame, scale, encoding))?;
         let bytes = Arc::new(bytes);
         self.keep(key, Arc::clone(&bytes), w, h);
         Ok(Drawn::Frame(bytes, w, h))

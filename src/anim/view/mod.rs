@@ -45,6 +45,8 @@ pub struct ViewOptions {
     pub bind: IpAddr,
     /// The port (0: any free one).
     pub port: u16,
+    /// The threads that draw frames (`None`: one a core).
+    pub threads: Option<u32>,
 }
 
 /// Why the view could not start.
@@ -70,6 +72,9 @@ pub enum ViewError {
     /// The system refused a file watcher.
     #[error("cannot watch the manifest's folder: {0}")]
     Watch(#[from] notify::Error),
+    /// The system refused the drawing threads.
+    #[error("cannot start the worker threads: {0}")]
+    Threads(#[from] rayon::ThreadPoolBuildError),
 }
 
 impl ViewError {
@@ -132,11 +137,15 @@ pub fn serve(
             addr,
             why: "not an IP socket".into(),
         })?;
+    // Requests are answered on threads of their own; their drawing runs on this pool
+    // (`--threads`), not on rayon's global one.
+    let pool = Arc::new(crate::process::pool(options.threads)?);
     let live = Arc::new(live::Live::new(&options.manifest));
     live::watch(Arc::clone(&live))?;
     let ctx = Arc::new(Context {
         live,
-        frames: frames::Frames::default(),
+        frames: frames::Frames::new(Arc::clone(&pool)),
+        pool,
         bound,
     });
     let (tx, rx) = mpsc::sync_channel::<tiny_http::Request>(QUEUE);

@@ -69,6 +69,8 @@ pub struct Context {
     pub live: Arc<Live>,
     /// The frame service.
     pub frames: Frames,
+    /// The threads that draw (`--threads`).
+    pub pool: Arc<rayon::ThreadPool>,
     /// The address the server is bound to.
     pub bound: SocketAddr,
 }
@@ -263,7 +265,7 @@ fn strip(ctx: &Context) -> Reply {
     };
     let dir = &p.manifest.output.dir;
     let frames: Vec<u32> = (0..p.manifest.frames).collect();
-    let report = status(&anim, dir, &frames, false);
+    let report = ctx.pool.install(|| status(&anim, dir, &frames, false));
     let mut states = vec!["missing"; frames.len()];
     for &f in &report.up_to_date {
         states[f as usize] = "up-to-date";

@@ -194,17 +194,15 @@ fn view(args: ViewArgs) -> anyhow::Result<Outcome> {
         manifest: args.manifest.clone(),
         bind: args.bind,
         port: args.port,
+        threads: args.threads,
     };
     let stop = whitted::process::watch_signals("animate");
-    let pool = pool(args.threads)?;
-    let sig = pool.install(|| {
-        whitted::anim::view::serve(&options, &stop, &|url| {
-            eprintln!(
-                "animate: view of {} at {url} (Ctrl-C to stop)",
-                args.manifest.display()
-            );
-            whitted::anim::view::print_url(url);
-        })
+    let sig = whitted::anim::view::serve(&options, &stop, &|url| {
+        eprintln!(
+            "animate: view of {} at {url} (Ctrl-C to stop)",
+            args.manifest.display()
+        );
+        whitted::anim::view::print_url(url);
     })?;
     Ok(Outcome::Interrupted(sig))
 }
