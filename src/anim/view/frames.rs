@@ -7,7 +7,8 @@
 //!   slot; a request takes a ticket, waits for the slot, and renders only if no newer
 //!   request of that client came meanwhile (else it answers "superseded"), so scrubbing
 //!   never queues stale work.
-//! - Recent frames are kept, up to `CACHE_BYTES`, for the current generation only:
+//! - Recent frames are kept, up to `CACHE_BYTES`, for the current project only (a failed
+//!   reload keeps it; a frame of an older one, finished after a reload, is not kept):
 //!   playing a loop again, or sharpening a frame already drawn, costs nothing.
 
 use super::live::Loaded;
@@ -119,8 +120,13 @@ impl Frames {
             .map(|(_, b, w, h)| (Arc::clone(b), *w, *h))
     }
 
+    /// Keeps a frame of project `key.0`, dropping those of older projects; a frame of an
+    /// older project than one cached (a render begun before a reload) is not kept.
     fn keep(&self, key: Key, bytes: Arc<Vec<u8>>, w: u32, h: u32) {
         let mut cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
+        if cache.iter().any(|(k, ..)| k.0 > key.0) {
+            return;
+        }
         cache.retain(|(k, ..)| k.0 == key.0);
         cache.push_back((key, bytes, w, h));
         let mut total: usize = cache.iter().map(|(_, b, ..)| b.len()).sum();
@@ -141,7 +147,7 @@ impl Frames {
         scale: u32,
         encoding: Encoding,
     ) -> Result<Drawn, AnimError> {
-        let key = (loaded.generation, frame, scale, encoding);
+        let key = (loaded.project_id, frame, scale, encoding);
         let slot = self.slot(client);
         let ticket = slot.latest.fetch_add(1, Ordering::SeqCst) + 1;
         if let Some((b, w, h)) = self.cached(&key) {
@@ -160,5 +166,74 @@ impl Frames {
         let bytes = Arc::new(bytes);
         self.keep(key, Arc::clone(&bytes), w, h);
         Ok(Drawn::Frame(bytes, w, h))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::anim::view::live::Live;
+
+    const SCENE: &str = "16 12  0 1 6  0 1 0  0 0  1 0 0 1
+1.0  0 1 0   1 0.9 0.2 0.1   0.7 0.3 0 1 0 0
+5 10 5  1 1 1  0.9";
+
+    fn live() -> (tempfile::TempDir, std::path::PathBuf, Live) {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("s.txt"), SCENE).unwrap();
+        let path = dir.path().join("m.toml");
+        std::fs::write(&path, "scene = \"s.txt\"\nframes = 4\n").unwrap();
+        let live = Live::new(&path);
+        (dir, path, live)
+    }
+
+    fn service() -> Frames {
+        Frames::new(Arc::new(crate::process::pool(Some(1)).unwrap()))
+    }
+
+    fn frame(frames: &Frames, live: &Live) -> Arc<Vec<u8>> {
+        let loaded = live.current();
+        let project = loaded.project.clone().unwrap();
+        match frames.get(&loaded, &project, "c", 1, 1, Encoding::Raw) {
+            Ok(Drawn::Frame(b, ..)) => b,
+            _ => panic!("no frame"),
+        }
+    }
+
+    #[test]
+    fn a_stale_frame_neither_wipes_nor_joins_the_cache() {
+        let frames = service();
+        let bytes = || Arc::new(vec![1u8; 3]);
+        frames.keep((2, 0, 1, Encoding::Raw), bytes(), 1, 1);
+        // A render begun before the reload ends after it.
+        frames.keep((1, 0, 1, Encoding::Raw), bytes(), 1, 1);
+        assert!(frames.cached(&(2, 0, 1, Encoding::Raw)).is_some());
+        assert!(frames.cached(&(1, 0, 1, Encoding::Raw)).is_none());
+        // A newer generation replaces the older ones.
+        frames.keep((3, 0, 1, Encoding::Raw), bytes(), 1, 1);
+        assert!(frames.cached(&(2, 0, 1, Encoding::Raw)).is_none());
+        assert!(frames.cached(&(3, 0, 1, Encoding::Raw)).is_some());
+    }
+
+    #[test]
+    fn a_failed_reload_keeps_the_cache_and_a_good_one_clears_it() {
+        let (_dir, path, live) = live();
+        let frames = service();
+        let first = frame(&frames, &live);
+        assert!(Arc::ptr_eq(&first, &frame(&frames, &live)), "not cached");
+        let good = std::fs::read_to_string(&path).unwrap();
+        std::fs::write(&path, "scene = \"s.txt\"\nframes = 0\n").unwrap();
+        live.reload();
+        assert!(live.current().error.is_some());
+        assert!(
+            Arc::ptr_eq(&first, &frame(&frames, &live)),
+            "the same project drawn again after a failed reload"
+        );
+        std::fs::write(&path, good).unwrap();
+        live.reload();
+        assert!(
+            !Arc::ptr_eq(&first, &frame(&frames, &live)),
+            "a reload kept old frames"
+        );
     }
 }

@@ -23,8 +23,11 @@ pub const DEBOUNCE: Duration = Duration::from_millis(20);
 /// One load of the manifest.
 #[derive(Clone)]
 pub struct Loaded {
-    /// Counts loads, from 1.
+    /// Counts loads, good or bad, from 1 (a page learns of each, errors included).
     pub generation: u64,
+    /// Counts good loads, from 1 (0: none yet): which project is kept, the key of the
+    /// frames drawn from it (a failed load leaves it).
+    pub project_id: u64,
     /// The last project that loaded (it stays when a later load fails).
     pub project: Option<Arc<Project>>,
     /// The last load's error, as `animate` prints it; `None` when it loaded.
@@ -45,6 +48,7 @@ impl Live {
             manifest: manifest.to_path_buf(),
             state: Mutex::new(Loaded {
                 generation: 0,
+                project_id: 0,
                 project: None,
                 error: None,
             }),
@@ -67,6 +71,7 @@ impl Live {
         match result {
             Ok(p) => {
                 s.project = Some(Arc::new(p));
+                s.project_id += 1;
                 s.error = None;
             }
             Err(e) => s.error = Some(format!("animate: {e}")),
