@@ -397,3 +397,29 @@ fn picking_uses_the_manifests_camera() {
         &r.body[..3]
     );
 }
+
+#[test]
+fn an_exr_manifest_shows_the_pictures_its_files_hold() {
+    // 3×3 samples and a bright light: averaging clamped samples (the PNG way) and
+    // clamping the unclamped mean (an EXR's picture) differ at the highlights' edges.
+    let extra = "\n[render]\nsamples = 3\n";
+    let (dir, manifest) = project(&circle_manifest(extra).replace("\"png\"", "\"exr\""));
+    let scene = dir.path().join("scene.txt");
+    let text = std::fs::read_to_string(&scene).unwrap();
+    std::fs::write(&scene, text.replace("0.9\n-6", "3.0\n-6")).unwrap();
+    let project = whitted::anim::Project::load(&manifest).unwrap();
+    let anim = whitted::anim::Animation::new(&project).unwrap();
+    let picture = anim.render_picture(4).unwrap().0.pixels;
+    assert_ne!(
+        picture,
+        anim.render(4).unwrap().0.pixels,
+        "no difference to see"
+    );
+    let v = Viewer::start(&manifest, &[]);
+    let r = v.get("/api/frame?n=4&format=raw&client=x");
+    assert_eq!(r.status, 200, "{}", r.text());
+    assert!(
+        r.body == picture,
+        "the page's frame 4 is not the EXR's picture"
+    );
+}

@@ -1,6 +1,7 @@
 //! Frames for the page: frame n of the live project at 1/scale of its size, drawn by
-//! `Animation::render` (the very call `animate` writes its frames with, so the whole
-//! frame's pixels are the written frame's pixels) and encoded as PNG (`output::encode`,
+//! `Animation::render_picture` (the picture its frame files hold: `render`, the very call
+//! `animate` writes 8-bit frames with, or an EXR's beauty clamped and rounded, so the
+//! whole frame's pixels are the written frame's pixels) and encoded as PNG (`output::encode`,
 //! without the provenance chunks a frame file carries) or as the raw RGB bytes.
 //!
 //! - At most one render per client at a time: each client (the page's random id) has a
@@ -74,13 +75,8 @@ pub fn draw(
     encoding: Encoding,
 ) -> Result<(Vec<u8>, u32, u32), AnimError> {
     let (w, h) = scaled_size(project, scale);
-    let anim = if scale == 1 {
-        Animation::new(project)?
-    } else {
-        Animation::with_size(project, w, h)?
-    };
-    anim.check_cameras(&[frame])?;
-    let (image, _) = anim.render(frame)?;
+    let anim = Animation::with_size(project, w, h)?;
+    let (image, _) = anim.render_picture(frame)?;
     let bytes = match encoding {
         Encoding::Raw => image.pixels,
         Encoding::Png => {
