@@ -197,10 +197,16 @@ impl<'p> Animation<'p> {
         if let Some(sig) = control::cancelled() {
             return Err(AnimError::Interrupted(sig));
         }
-        if let Some(observe) = &self.observer {
-            observe(frame, &drawn.0);
-        }
+        self.tell(frame, || &drawn.0);
         Ok(drawn)
+    }
+
+    /// Tells the observer (if any) of finished frame `frame`, whose picture `picture`
+    /// makes: the one place `render` and `render_layers` (an EXR's frames) both end in.
+    fn tell<F: std::borrow::Borrow<Frame>>(&self, frame: u32, picture: impl FnOnce() -> F) {
+        if let Some(observe) = &self.observer {
+            observe(frame, picture().borrow());
+        }
     }
 
     fn draw(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
@@ -306,6 +312,7 @@ impl<'p> Animation<'p> {
         let matrices = self.camera(&state).map(|c| camera_matrices(&c));
         let count = n * n * times.len() as u32;
         let layers = finish(&sums, count, w, h, passes, &state.scene, matrices);
+        self.tell(frame, || layers.to_frame());
         Ok((layers, rays))
     }
 
@@ -364,5 +371,6 @@ impl<'p> Animation<'p> {
 /// The memory frames in flight may take (pixels and their encoded copy): 1 GiB.
 pub const FRAME_MEMORY: usize = 1 << 30;
 
+mod display;
 #[cfg(test)]
 mod tests;

@@ -23,7 +23,6 @@ use whitted::anim::job::{openjd_template, relative_to, Chunking};
 use whitted::anim::select::sorted;
 use whitted::anim::view::ViewOptions;
 use whitted::anim::{preview, AnimError, Animation, Reporter};
-use whitted::display::{Display, Tev};
 use whitted::exit::Outcome;
 use whitted::output::ImageFormat;
 
@@ -42,9 +41,8 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     }
     let project = c.load()?;
     let (m, mut anim) = (&project.manifest, Animation::new(&project)?);
-    if let Some(Display::Tev(addr)) = &args.display {
-        let observer = tev_observer(addr, &anim);
-        anim = anim.observed(observer);
+    if let Some(display) = &args.display {
+        anim = anim.displayed(display, "animate");
     }
     let shard = args.shard()?;
     let pool = pool(c.threads)?;
@@ -172,21 +170,6 @@ fn clean_command(args: CleanArgs) -> anyhow::Result<Outcome> {
         cleaned.temporaries
     );
     Ok(Outcome::Success)
-}
-
-/// Sends every finished frame to tev as image `animate: MANIFEST`, replaced frame after
-/// frame (a missing viewer: one warning).
-fn tev_observer(addr: &str, anim: &Animation) -> whitted::anim::project::FrameObserver {
-    let tev = Tev::connect_stderr(addr, "animate");
-    let name = format!("animate: {}", anim.manifest.path.display());
-    if tev.connected() {
-        tev.create(&name, anim.width, anim.height);
-    }
-    std::sync::Arc::new(move |_, frame| {
-        if tev.connected() {
-            tev.rows(&name, frame.width, 0, &frame.pixels);
-        }
-    })
 }
 
 fn view(args: ViewArgs) -> anyhow::Result<Outcome> {
