@@ -18,7 +18,7 @@ use whitted::anim::check::{self, CheckOptions};
 use whitted::anim::frames::estimate::Estimate;
 use whitted::anim::frames::run::{self, Destination, Policy};
 use whitted::anim::frames::status::{ranges, status};
-use whitted::anim::frames::{balance, encode, folder, lock};
+use whitted::anim::frames::{balance, encode, folder};
 use whitted::anim::job::{openjd_template, relative_to, Chunking};
 use whitted::anim::select::sorted;
 use whitted::anim::view::ViewOptions;
@@ -30,9 +30,15 @@ fn pool(threads: Option<u32>) -> anyhow::Result<rayon::ThreadPool> {
     whitted::process::pool(threads).context("cannot start the worker threads")
 }
 
-/// What an interrupted stream or video says: `--resume` does not apply to them.
-const STREAM_STOPPED: &str = "a stream or video cannot be resumed: run the command again, \
-or render into a folder (`--resume` completes that) and `animate encode` it";
+/// What an interrupted stream or video says (`--resume` does not apply to them): its two
+/// lines, whether the run stopped by itself or was ended stuck on a write.
+fn stream_stopped(sig: i32) -> String {
+    format!(
+        "animate: interrupted by signal {sig}\nanimate: hint: a stream or video cannot be \
+         resumed: run the command again, or render into a folder (`--resume` completes \
+         that) and `animate encode` it"
+    )
+}
 
 fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     let c = &args.common;
@@ -61,9 +67,7 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     let stop = whitted::process::watch_signals("animate");
     if matches!(destination, Destination::Stream(_)) {
         // A reader that stops reading would hold a write, and the run, forever.
-        whitted::process::exit_when_stuck(stop.clone(), |sig| {
-            format!("animate: interrupted by signal {sig}\nanimate: hint: {STREAM_STOPPED}")
-        });
+        whitted::process::exit_when_stuck(stop.clone(), stream_stopped);
     }
     if !c.quiet {
         pool.install(|| report::warn_if_enormous(&anim, &frames));
@@ -90,8 +94,7 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     bar.finish();
     let summary = match (summary, &destination) {
         (Err(AnimError::Interrupted(sig)), Destination::Stream(_) | Destination::Video(_)) => {
-            eprintln!("animate: interrupted by signal {sig}");
-            eprintln!("animate: hint: {STREAM_STOPPED}");
+            eprintln!("{}", stream_stopped(sig));
             return Ok(Outcome::Interrupted(sig));
         }
         (summary, _) => summary?,
@@ -154,14 +157,7 @@ fn clean_command(args: CleanArgs) -> anyhow::Result<Outcome> {
         );
         return Ok(Outcome::Success);
     }
-    let held = lock::lock(&dir, &m.path)?;
-    if !held.alone() {
-        let why =
-            "another run of this manifest is writing into the folder: clean when it has ended";
-        return Err(anyhow::anyhow!("{}: {why}", dir.display()));
-    }
-    let cleaned =
-        folder::clean(&anim, &dir).with_context(|| format!("cleaning {}", dir.display()))?;
+    let cleaned = folder::clean(&anim, &dir)?;
     println!(
         "{}: removed {} frame(s) past the end ({}) and {} temporary file(s)",
         dir.display(),
