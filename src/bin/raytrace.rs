@@ -127,14 +127,15 @@ fn run(args: Args) -> anyhow::Result<()> {
     let (frame, rays) = if format.is_layered() || args.pass.is_some() {
         let passes = args.pass.map_or(format.passes(), |p| PassSet::of(&[p]));
         let (layers, rays) = pool.install(|| render_layers(&tracer, &camera, w, h, n, passes));
+        // A --pass is written as a picture below; an .exr is written here, whole.
         let frame = match args.pass {
-            Some(p) => picture(&layers, p).context("the pass was not drawn")?,
+            Some(p) => Some(picture(&layers, p).context("the pass was not drawn")?),
             None => {
                 write_atomic_layers(&out, &layers, format, &[])?;
-                layers.to_frame()
+                None
             }
         };
-        (Some(frame).filter(|_| args.pass.is_some()), rays)
+        (frame, rays)
     } else {
         let (frame, rays) = match &args.display {
             None => pool.install(|| render_with(&tracer, &camera, w, h, aa)),
