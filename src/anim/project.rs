@@ -275,6 +275,26 @@ impl<'p> Animation<'p> {
         ))
     }
 
+    /// Past `estimate::ENORMOUS` camera rays for `frames`: the warning, with the time a
+    /// 1/`SAMPLE_DIVISOR` sample of the first frame predicts on the current pool.
+    pub fn enormous(&self, frames: &[u32]) -> Option<estimate::Enormous> {
+        let rays = self.camera_rays(frames.len());
+        let &first = frames.first()?;
+        if rays <= estimate::ENORMOUS {
+            return None;
+        }
+        let pixels = (u64::from(self.width) * u64::from(self.height)).max(1);
+        Some(estimate::Enormous {
+            rays,
+            frames: Some(frames.len()),
+            width: self.width,
+            height: self.height,
+            per_pixel: self.camera_rays(1) / pixels,
+            seconds: self.predict_seconds(first, frames.len()).ok(),
+            threads: rayon::current_num_threads(),
+        })
+    }
+
     /// The rows of pixels one frame draws: its height, times its motion-blur sub-frames
     /// (the unit of `render::control::rows_done`).
     pub fn rows_per_frame(&self) -> u64 {
