@@ -26,7 +26,7 @@ use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 /// Bumped whenever an intended change of the library moves pixels: frames recorded under
 /// another version are stale (SPEC §8).
@@ -38,6 +38,9 @@ pub struct Project {
     pub manifest: Manifest,
     /// The base scene and everything that changes over time.
     pub timeline: Timeline,
+    /// The acceleration structure of the base scene's objects, built at the first
+    /// `Animation` that shares one and kept for every later one (a view's requests).
+    accel: OnceLock<Arc<Accel>>,
 }
 
 impl Project {
@@ -54,7 +57,23 @@ impl Project {
             other => AnimError::Scene(other),
         })?;
         let timeline = Timeline::new(scene, &manifest)?;
-        Ok(Project { manifest, timeline })
+        Ok(Project {
+            manifest,
+            timeline,
+            accel: OnceLock::new(),
+        })
+    }
+
+    /// The acceleration structure every frame shares, when no track moves geometry:
+    /// built once per project, whatever the number of animations drawn from it.
+    fn shared_accel(&self) -> Option<Arc<Accel>> {
+        let base = &self.timeline.base;
+        (!self.timeline.moves_geometry()).then(|| {
+            Arc::clone(
+                self.accel
+                    .get_or_init(|| Arc::new(Accel::new(&base.objects))),
+            )
+        })
     }
 }
 
@@ -129,12 +148,10 @@ impl<'p> Animation<'p> {
                 height,
             });
         }
-        let timeline = &project.timeline;
-        let shared =
-            (!timeline.moves_geometry()).then(|| Arc::new(Accel::new(&timeline.base.objects)));
+        let shared = project.shared_accel();
         Ok(Animation {
             manifest: &project.manifest,
-            timeline,
+            timeline: &project.timeline,
             width,
             height,
             samples: project.manifest.render.samples.max(1),

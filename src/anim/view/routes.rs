@@ -17,7 +17,7 @@
 
 use super::frames::{scaled_size, Drawn, Encoding, Frames};
 use super::live::{Live, Loaded};
-use crate::anim::frames::status::status;
+use crate::anim::frames::status::states;
 use crate::anim::project::Animation;
 use serde_json::{json, Value};
 use std::net::SocketAddr;
@@ -265,14 +265,7 @@ fn strip(ctx: &Context) -> Reply {
     };
     let dir = &p.manifest.output.dir;
     let frames: Vec<u32> = (0..p.manifest.frames).collect();
-    let report = ctx.pool.install(|| status(&anim, dir, &frames, false));
-    let mut states = vec!["missing"; frames.len()];
-    for &f in &report.up_to_date {
-        states[f as usize] = "up-to-date";
-    }
-    for &f in &report.stale {
-        states[f as usize] = "stale";
-    }
+    let states = ctx.pool.install(|| states(&anim, dir, &frames, false));
     Reply::json(
         200,
         json!({"generation": loaded.generation, "folder": dir.display().to_string(),
