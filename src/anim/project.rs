@@ -44,6 +44,15 @@ pub struct Project {
 }
 
 impl Project {
+    /// The frames' size: the manifest's `[render]` width and height, else the scene's.
+    pub fn size(&self) -> (u32, u32) {
+        let (r, scene) = (&self.manifest.render, &self.timeline.base);
+        (
+            r.width.unwrap_or(scene.width),
+            r.height.unwrap_or(scene.height),
+        )
+    }
+
     /// Loads a manifest, the scene it names and their timeline. A scene file that cannot
     /// be read is reported at the manifest's `scene =` line.
     pub fn load(path: &Path) -> Result<Project, AnimError> {
@@ -128,10 +137,7 @@ pub type FrameObserver = Arc<dyn Fn(u32, &Frame) + Send + Sync>;
 impl<'p> Animation<'p> {
     /// The project at the manifest's size (`[render]` overrides, else the scene's).
     pub fn new(project: &'p Project) -> Result<Animation<'p>, AnimError> {
-        let m = &project.manifest;
-        let scene = &project.timeline.base;
-        let width = m.render.width.unwrap_or(scene.width);
-        let height = m.render.height.unwrap_or(scene.height);
+        let (width, height) = project.size();
         Animation::with_size(project, width, height)
     }
 

@@ -14,6 +14,7 @@
 
 use super::live::Loaded;
 use crate::anim::error::AnimError;
+use crate::anim::preview::scaled;
 use crate::anim::project::{Animation, Project};
 use crate::output::{encode, ImageFormat};
 use std::collections::{HashMap, VecDeque};
@@ -59,12 +60,11 @@ pub struct Frames {
     pool: Arc<rayon::ThreadPool>,
 }
 
-/// The size of a project's frames at 1/scale (at least one pixel a side).
+/// The size of a project's frames at 1/scale, by the preview's rule (`preview::scaled`:
+/// to the nearest pixel, at least one a side).
 pub fn scaled_size(project: &Project, scale: u32) -> (u32, u32) {
-    let m = &project.manifest;
-    let w = m.render.width.unwrap_or(project.timeline.base.width);
-    let h = m.render.height.unwrap_or(project.timeline.base.height);
-    ((w / scale).max(1), (h / scale).max(1))
+    let (w, h) = project.size();
+    (scaled(w, scale), scaled(h, scale))
 }
 
 /// Draws frame `frame` of `project` at 1/scale, encoded.

@@ -15,7 +15,7 @@
 //! parameter gets 400 and `{"error": reason}`; an unknown route 404, a method other than
 //! GET or HEAD 405, all with a JSON reason.
 
-use super::frames::{scaled_size, Drawn, Encoding, Frames};
+use super::frames::{Drawn, Encoding, Frames};
 use super::live::{Live, Loaded};
 use crate::anim::frames::status::states;
 use crate::anim::project::Animation;
@@ -129,7 +129,7 @@ fn state(l: &Loaded, live: &Live) -> Value {
     let manifest = live.manifest().display().to_string();
     match &l.project {
         Some(p) => {
-            let (width, height) = scaled_size(p, 1);
+            let (width, height) = p.size();
             json!({
                 "generation": l.generation, "error": l.error, "manifest": manifest,
                 "frames": p.manifest.frames, "fps": p.manifest.fps,
@@ -240,7 +240,7 @@ fn frame(ctx: &Context, query: &str) -> Result<Reply, Reply> {
 
 fn pick(ctx: &Context, query: &str) -> Result<Reply, Reply> {
     let (_, p) = project(ctx)?;
-    let (w, h) = scaled_size(&p, 1);
+    let (w, h) = p.size();
     let n = number(query, "n", 0, p.manifest.frames - 1, None)?;
     let x = number(query, "x", 0, w - 1, None)?;
     let y = number(query, "y", 0, h - 1, None)?;
