@@ -84,9 +84,25 @@ impl ViewError {
     }
 }
 
+/// A reply's body as tiny_http reads it: the shared bytes themselves (a cached frame is
+/// not copied for each reply).
+struct Body(Arc<Vec<u8>>);
+
+impl AsRef<[u8]> for Body {
+    fn as_ref(&self) -> &[u8] {
+        self.0.as_slice()
+    }
+}
+
 fn respond(request: tiny_http::Request, reply: Reply) {
-    let mut response =
-        tiny_http::Response::from_data(reply.body.as_slice()).with_status_code(reply.status);
+    let length = reply.body.len();
+    let mut response = tiny_http::Response::new(
+        tiny_http::StatusCode(reply.status),
+        Vec::new(),
+        std::io::Cursor::new(Body(reply.body)),
+        Some(length),
+        None,
+    );
     let mut headers = vec![
         ("Content-Type", reply.content_type.to_string()),
         ("Cache-Control", "no-store".to_string()),
