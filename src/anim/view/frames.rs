@@ -179,7 +179,7 @@ mod tests {
         std::fs::write(dir.path().join("s.txt"), SCENE).unwrap();
         let path = dir.path().join("m.toml");
         std::fs::write(&path, "scene = \"s.txt\"\nframes = 4\n").unwrap();
-        let live = Live::new(&path);
+        let live = Live::new(&path).unwrap();
         (dir, path, live)
     }
 

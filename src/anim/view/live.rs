@@ -9,7 +9,9 @@
 //! editor's rename-over save, a deleted and recreated file or a `git checkout` are all
 //! seen; events within `DEBOUNCE` of each other make one reload.
 
+use crate::anim::error::AnimError;
 use crate::anim::project::Project;
+use crate::anim::refusal::ManifestError;
 use notify::{RecursiveMode, Watcher};
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -42,8 +44,13 @@ pub struct Live {
 }
 
 impl Live {
-    /// Loads `manifest` a first time (an error is kept, not returned).
-    pub fn new(manifest: &Path) -> Live {
+    /// Loads `manifest` a first time: an error in it is kept (the page shows it), but a
+    /// manifest that cannot be read at all is refused (`ManifestError::Io`).
+    pub fn new(manifest: &Path) -> Result<Live, AnimError> {
+        let first = Project::load(manifest);
+        if let Err(e @ AnimError::Manifest(ManifestError::Io { .. })) = first {
+            return Err(e);
+        }
         let live = Live {
             manifest: manifest.to_path_buf(),
             state: Mutex::new(Loaded {
@@ -54,8 +61,8 @@ impl Live {
             }),
             changed: Condvar::new(),
         };
-        live.reload();
-        live
+        live.store(first);
+        Ok(live)
     }
 
     /// The manifest's path as given.
@@ -65,7 +72,11 @@ impl Live {
 
     /// Loads the manifest again and wakes every waiting page.
     pub fn reload(&self) {
-        let result = Project::load(&self.manifest);
+        self.store(Project::load(&self.manifest));
+    }
+
+    /// Makes `result` the current load, a new generation, and wakes every waiting page.
+    fn store(&self, result: Result<Project, AnimError>) {
         let mut s = self.lock();
         s.generation += 1;
         match result {

@@ -52,15 +52,10 @@ pub struct ViewOptions {
 /// Why the view could not start.
 #[derive(Debug, thiserror::Error)]
 pub enum ViewError {
-    /// The manifest does not exist or cannot be read.
-    #[error("{path}: cannot read the manifest: {source}")]
-    Manifest {
-        /// The path given.
-        path: String,
-        /// The system's reason.
-        #[source]
-        source: std::io::Error,
-    },
+    /// The manifest does not exist or cannot be read (`ManifestError::Io`, as every
+    /// command says it).
+    #[error(transparent)]
+    Manifest(#[from] crate::anim::error::AnimError),
     /// The address cannot be bound.
     #[error("cannot listen on {addr}: {why}")]
     Bind {
@@ -137,10 +132,7 @@ pub fn serve(
     stop: &AtomicUsize,
     ready: &dyn Fn(&str),
 ) -> Result<i32, ViewError> {
-    std::fs::metadata(&options.manifest).map_err(|source| ViewError::Manifest {
-        path: options.manifest.display().to_string(),
-        source,
-    })?;
+    let live = Arc::new(live::Live::new(&options.manifest)?);
     let addr = SocketAddr::new(options.bind, options.port);
     let server = tiny_http::Server::http(addr).map_err(|e| ViewError::Bind {
         addr,
@@ -156,7 +148,6 @@ pub fn serve(
     // Requests are answered on threads of their own; their drawing runs on this pool
     // (`--threads`), not on rayon's global one.
     let pool = Arc::new(crate::process::pool(options.threads)?);
-    let live = Arc::new(live::Live::new(&options.manifest));
     live::watch(Arc::clone(&live))?;
     let ctx = Arc::new(Context {
         live,
