@@ -39,7 +39,20 @@ pub struct Lens {
     pub roll: f64,
 }
 
+/// The largest roll taken, in degrees (a thousand turns).
+pub const MAX_ROLL: f64 = 360_000.0;
+
 impl Lens {
+    /// Whether `fov` is a vertical field of view taken: strictly between 0 and 180 degrees.
+    pub fn fov_ok(fov: f64) -> bool {
+        fov > 0.0 && fov < 180.0
+    }
+
+    /// Whether `roll` is a roll taken: finite, at most `MAX_ROLL` degrees either way.
+    pub fn roll_ok(roll: f64) -> bool {
+        roll.abs() <= MAX_ROLL
+    }
+
     /// The view plane's width and height (at distance 1.0) for an image of `size`
     /// pixels of a scene whose own size is `native`: the report's 0.5 × 0.35 at the
     /// native shape without a field of view, else square pixels, 0.35 (or the field of

@@ -48,10 +48,12 @@ pub mod output;
 pub mod passes;
 pub mod pick;
 pub mod process;
+pub mod progress;
 pub mod render;
 pub mod scene;
 pub mod shading;
 pub mod shapes;
+pub mod still;
 pub mod texture;
 pub mod trace;
 

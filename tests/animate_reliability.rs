@@ -203,6 +203,14 @@ fn one_folder_one_run_and_no_overwriting_another_manifests_frames() {
     }
     let out = animate().arg(&b).output().unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
+    // Nor is the folder cleaned under a run, of another manifest or of the same one:
+    // bad input (2), nothing removed.
+    for m in [&b, &a] {
+        let clean = animate().arg("clean").arg(m).output().unwrap();
+        let said = String::from_utf8_lossy(&clean.stderr);
+        assert_eq!(clean.status.code(), Some(2), "{said}");
+        assert!(said.contains("is writing into"), "{said}");
+    }
     // A second run of A's manifest shares the folder (as render-farm shards do).
     animate()
         .arg(&a)

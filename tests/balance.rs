@@ -86,3 +86,46 @@ fn estimate_and_status_report_the_prediction() {
     assert_eq!(rays.len(), 12);
     assert!(rays["0"].as_u64().unwrap() > 0);
 }
+
+/// The most threads process `pid` had at once, sampled every few milliseconds until it
+/// ends (Linux: /proc/PID/status).
+fn most_threads(child: &mut std::process::Child) -> u32 {
+    let mut most = 0;
+    while child.try_wait().unwrap().is_none() {
+        let status = std::fs::read_to_string(format!("/proc/{}/status", child.id()));
+        let now = status.ok().and_then(|s| {
+            s.lines()
+                .find_map(|l| l.strip_prefix("Threads:"))
+                .and_then(|v| v.trim().parse().ok())
+        });
+        most = most.max(now.unwrap_or(0));
+        std::thread::sleep(std::time::Duration::from_millis(2));
+    }
+    most
+}
+
+#[test]
+fn the_balance_pre_pass_runs_on_the_threads_pool() {
+    // Rayon's global pool would start RAYON_NUM_THREADS threads (and keep them to the
+    // end); --threads 1 must be the only pool the run uses, pre-pass included.
+    let (dir, manifest) = project(&circle_manifest("\n[render]\nwidth = 256\nheight = 192\n"));
+    let mut child = std::process::Command::new(assert_cmd::cargo::cargo_bin("animate"))
+        .arg(&manifest)
+        .args([
+            "--shard",
+            "0/2",
+            "--balance",
+            "--threads",
+            "1",
+            "--quiet",
+            "-o",
+        ])
+        .arg(dir.path().join("out"))
+        .env("RAYON_NUM_THREADS", "48")
+        .spawn()
+        .unwrap();
+    let most = most_threads(&mut child);
+    assert!(child.wait().unwrap().success());
+    assert!(most > 0, "never sampled the process");
+    assert!(most < 16, "{most} threads at once with --threads 1");
+}

@@ -246,6 +246,36 @@ fn animate_sends_every_frame() {
 }
 
 #[test]
+fn animate_sends_every_frame_of_an_exr_manifest() {
+    // EXR frames are drawn as layers: tev is shown their pictures, one a frame.
+    let (dir, manifest) = project(&circle_manifest("").replace("\"png\"", "\"exr\""));
+    let (port, got) = server();
+    let out = animate()
+        .arg(&manifest)
+        .args(["--frames", "0-2", "-q", "-o"])
+        .arg(dir.path().join("exr"))
+        .args(["--display", &format!("tev=127.0.0.1:{port}")])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let seen = decode(&got.join().unwrap());
+    let mut sent = seen.whole.clone();
+    assert_eq!(sent.len(), 3, "one whole picture a frame");
+    sent.sort();
+    let project = whitted::anim::Project::load(&manifest).unwrap();
+    let anim = whitted::anim::Animation::new(&project).unwrap();
+    let mut want: Vec<Vec<u8>> = (0..3)
+        .map(|f| anim.render_picture(f).unwrap().0.pixels)
+        .collect();
+    want.sort();
+    assert!(sent == want, "tev did not receive the EXR frames' pictures");
+}
+
+#[test]
 fn tevclient_packets_decode_the_same() {
     let python = Command::new("python3")
         .args(["-c", "import tevclient, numpy"])

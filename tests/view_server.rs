@@ -350,3 +350,76 @@ fn a_missing_manifest_or_a_busy_port_is_bad_input() {
     );
     assert!(String::from_utf8_lossy(&out.stderr).contains("cannot listen on 127.0.0.1:"));
 }
+
+#[test]
+fn view_threads_bounds_the_rendering_threads() {
+    // Rayon's global pool would start RAYON_NUM_THREADS threads (kept to the end): with
+    // --threads 1, frames and the strip are drawn on the view's own pool of one.
+    let (_dir, manifest) = project(&circle_manifest(""));
+    let v = Viewer::start_with_env(
+        &manifest,
+        &["--threads", "1"],
+        &[("RAYON_NUM_THREADS", "48")],
+    );
+    let r = v.get("/api/frame?n=2&client=t");
+    assert_eq!(r.status, 200, "{}", r.text());
+    assert_eq!(v.get("/api/status").status, 200);
+    let threads = v.threads();
+    assert!(threads < 40, "{threads} threads with --threads 1");
+}
+
+/// A scene of one sphere of radius 1.5 on the point the circle camera looks at.
+const ONE_SPHERE: &str = "64 48\n0 3 8\n0 1 0\n0 40\n1 0 0 1\n\
+1.5  0 1 0   1 0.8 0.2 0.2   0.9 0 0 1 0 0\n5 10 5  1 1 1  0.9\n";
+
+#[test]
+fn picking_uses_the_manifests_camera() {
+    // A 5° field of view: the sphere fills the frame, so the corner pixel shows it; the
+    // report's wider view (about 20°) would see past it there.
+    let (dir, manifest) = project(&circle_manifest(""));
+    let text = std::fs::read_to_string(&manifest).unwrap();
+    std::fs::write(
+        &manifest,
+        text.replace("turns = 1.0\n", "turns = 1.0\nfov = 5.0\n"),
+    )
+    .unwrap();
+    std::fs::write(dir.path().join("scene.txt"), ONE_SPHERE).unwrap();
+    let v = Viewer::start(&manifest, &[]);
+    let (status, p) = v.json("/api/pick?n=0&x=0&y=0");
+    assert_eq!(status, 200, "{p}");
+    assert_eq!(p["hit"]["object"], "sphere 1", "{p}");
+    // And the frame shows the sphere's red there, not the black of a miss.
+    let r = v.get("/api/frame?n=0&format=raw&client=p");
+    assert_eq!(r.status, 200, "{}", r.text());
+    assert!(
+        r.body[0] > 20 && r.body[0] > r.body[1],
+        "{:?}",
+        &r.body[..3]
+    );
+}
+
+#[test]
+fn an_exr_manifest_shows_the_pictures_its_files_hold() {
+    // 3×3 samples and a bright light: averaging clamped samples (the PNG way) and
+    // clamping the unclamped mean (an EXR's picture) differ at the highlights' edges.
+    let extra = "\n[render]\nsamples = 3\n";
+    let (dir, manifest) = project(&circle_manifest(extra).replace("\"png\"", "\"exr\""));
+    let scene = dir.path().join("scene.txt");
+    let text = std::fs::read_to_string(&scene).unwrap();
+    std::fs::write(&scene, text.replace("0.9\n-6", "3.0\n-6")).unwrap();
+    let project = whitted::anim::Project::load(&manifest).unwrap();
+    let anim = whitted::anim::Animation::new(&project).unwrap();
+    let picture = anim.render_picture(4).unwrap().0.pixels;
+    assert_ne!(
+        picture,
+        anim.render(4).unwrap().0.pixels,
+        "no difference to see"
+    );
+    let v = Viewer::start(&manifest, &[]);
+    let r = v.get("/api/frame?n=4&format=raw&client=x");
+    assert_eq!(r.status, 200, "{}", r.text());
+    assert!(
+        r.body == picture,
+        "the page's frame 4 is not the EXR's picture"
+    );
+}

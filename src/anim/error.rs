@@ -111,6 +111,13 @@ pub enum AnimError {
         /// What the holder wrote in the lock file: its pid, manifest and start time.
         holder: String,
     },
+    /// Another run of the same manifest writes into the folder that `clean` was asked to
+    /// clean (bad input: nothing was removed).
+    #[error("{}: another run of this manifest is writing into the folder: clean when it has ended", shown(.dir))]
+    InUse {
+        /// The frame folder.
+        dir: PathBuf,
+    },
     /// Frames in the folder were recorded by another manifest, and would be overwritten
     /// (bad input: nothing was rendered).
     #[error("{} holds {count} frame(s) rendered by another manifest ({other}: frames {frames}); they would be overwritten", shown(.dir))]
@@ -159,6 +166,7 @@ impl AnimError {
             | AnimError::FfmpegMissing
             | AnimError::VideoTarget { .. }
             | AnimError::Busy { .. }
+            | AnimError::InUse { .. }
             | AnimError::Foreign { .. }
             | AnimError::VideoExists(_)
             | AnimError::NotReady { .. }

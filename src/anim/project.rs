@@ -16,6 +16,7 @@ use crate::limits::size_ok;
 use crate::output::ImageFormat;
 use crate::passes::record::{finish, PixelSum, Sums};
 use crate::passes::{Layers, PassSet};
+use crate::pick::Pick;
 use crate::render::layers::camera_matrices;
 use crate::render::{
     control, estimate, render_add_with, render_layers_add, render_with, Adaptive, Antialias, Frame,
@@ -25,7 +26,7 @@ use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 
 /// Bumped whenever an intended change of the library moves pixels: frames recorded under
 /// another version are stale (SPEC §8).
@@ -37,9 +38,21 @@ pub struct Project {
     pub manifest: Manifest,
     /// The base scene and everything that changes over time.
     pub timeline: Timeline,
+    /// The acceleration structure of the base scene's objects, built at the first
+    /// `Animation` that shares one and kept for every later one (a view's requests).
+    accel: OnceLock<Arc<Accel>>,
 }
 
 impl Project {
+    /// The frames' size: the manifest's `[render]` width and height, else the scene's.
+    pub fn size(&self) -> (u32, u32) {
+        let (r, scene) = (&self.manifest.render, &self.timeline.base);
+        (
+            r.width.unwrap_or(scene.width),
+            r.height.unwrap_or(scene.height),
+        )
+    }
+
     /// Loads a manifest, the scene it names and their timeline. A scene file that cannot
     /// be read is reported at the manifest's `scene =` line.
     pub fn load(path: &Path) -> Result<Project, AnimError> {
@@ -53,7 +66,23 @@ impl Project {
             other => AnimError::Scene(other),
         })?;
         let timeline = Timeline::new(scene, &manifest)?;
-        Ok(Project { manifest, timeline })
+        Ok(Project {
+            manifest,
+            timeline,
+            accel: OnceLock::new(),
+        })
+    }
+
+    /// The acceleration structure every frame shares, when no track moves geometry:
+    /// built once per project, whatever the number of animations drawn from it.
+    fn shared_accel(&self) -> Option<Arc<Accel>> {
+        let base = &self.timeline.base;
+        (!self.timeline.moves_geometry()).then(|| {
+            Arc::clone(
+                self.accel
+                    .get_or_init(|| Arc::new(Accel::new(&base.objects))),
+            )
+        })
     }
 }
 
@@ -108,10 +137,7 @@ pub type FrameObserver = Arc<dyn Fn(u32, &Frame) + Send + Sync>;
 impl<'p> Animation<'p> {
     /// The project at the manifest's size (`[render]` overrides, else the scene's).
     pub fn new(project: &'p Project) -> Result<Animation<'p>, AnimError> {
-        let m = &project.manifest;
-        let scene = &project.timeline.base;
-        let width = m.render.width.unwrap_or(scene.width);
-        let height = m.render.height.unwrap_or(scene.height);
+        let (width, height) = project.size();
         Animation::with_size(project, width, height)
     }
 
@@ -128,12 +154,10 @@ impl<'p> Animation<'p> {
                 height,
             });
         }
-        let timeline = &project.timeline;
-        let shared =
-            (!timeline.moves_geometry()).then(|| Arc::new(Accel::new(&timeline.base.objects)));
+        let shared = project.shared_accel();
         Ok(Animation {
             manifest: &project.manifest,
-            timeline,
+            timeline: &project.timeline,
             width,
             height,
             samples: project.manifest.render.samples.max(1),
@@ -206,10 +230,16 @@ impl<'p> Animation<'p> {
         if let Some(sig) = control::cancelled() {
             return Err(AnimError::Interrupted(sig));
         }
-        if let Some(observe) = &self.observer {
-            observe(frame, &drawn.0);
-        }
+        self.tell(frame, || &drawn.0);
         Ok(drawn)
+    }
+
+    /// Tells the observer (if any) of finished frame `frame`, whose picture `picture`
+    /// makes: the one place `render` and `render_layers` (an EXR's frames) both end in.
+    fn tell<F: std::borrow::Borrow<Frame>>(&self, frame: u32, picture: impl FnOnce() -> F) {
+        if let Some(observe) = &self.observer {
+            observe(frame, picture().borrow());
+        }
     }
 
     fn draw(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
@@ -238,6 +268,15 @@ impl<'p> Animation<'p> {
             rays = rays + render_add_with(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
         }
         Ok((Frame::from_sum(&sum, times.len() as u32, w, h), rays))
+    }
+
+    /// What the camera ray through the centre of pixel (x, y) of frame `frame` hits
+    /// (`crate::pick`), with this animation's camera (its size, `fov` and `roll`) at the
+    /// frame's own time (motion blur's sub-frames are around it) and its shared tracer.
+    pub fn pick(&self, frame: u32, x: u32, y: u32) -> Result<Option<Pick>, AnimError> {
+        let state = self.timeline.at(f64::from(frame));
+        let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
+        Ok(crate::pick::pick(&self.tracer(&state.scene), &camera, x, y))
     }
 
     /// The camera rays `frames` frames cast (`render::estimate::camera_rays`).
@@ -286,6 +325,26 @@ impl<'p> Animation<'p> {
         ))
     }
 
+    /// Past `estimate::ENORMOUS` camera rays for `frames`: the warning, with the time a
+    /// 1/`SAMPLE_DIVISOR` sample of the first frame predicts on the current pool.
+    pub fn enormous(&self, frames: &[u32]) -> Option<estimate::Enormous> {
+        let rays = self.camera_rays(frames.len());
+        let &first = frames.first()?;
+        if rays <= estimate::ENORMOUS {
+            return None;
+        }
+        let pixels = (u64::from(self.width) * u64::from(self.height)).max(1);
+        Some(estimate::Enormous {
+            rays,
+            frames: Some(frames.len()),
+            width: self.width,
+            height: self.height,
+            per_pixel: self.camera_rays(1) / pixels,
+            seconds: self.predict_seconds(first, frames.len()).ok(),
+            threads: rayon::current_num_threads(),
+        })
+    }
+
     /// The rows of pixels one frame draws: its height, times its motion-blur sub-frames
     /// (the unit of `render::control::rows_done`).
     pub fn rows_per_frame(&self) -> u64 {
@@ -325,6 +384,7 @@ impl<'p> Animation<'p> {
         let matrices = self.camera(&state).map(|c| camera_matrices(&c));
         let count = n * n * times.len() as u32;
         let layers = finish(&sums, count, w, h, passes, &state.scene, matrices);
+        self.tell(frame, || layers.to_frame());
         Ok((layers, rays))
     }
 
@@ -383,5 +443,6 @@ impl<'p> Animation<'p> {
 /// The memory frames in flight may take (pixels and their encoded copy): 1 GiB.
 pub const FRAME_MEMORY: usize = 1 << 30;
 
+mod display;
 #[cfg(test)]
 mod tests;

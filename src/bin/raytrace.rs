@@ -13,23 +13,20 @@ use cli::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use std::io::IsTerminal;
 use std::process::ExitCode;
-use whitted::camera::{Camera, Lens};
-use whitted::display::{Display, Tev};
+use whitted::camera::Lens;
 use whitted::exit::Outcome;
 use whitted::output::{check_target, write_atomic, write_atomic_layers, ImageFormat, OutputError};
 use whitted::passes::{visible::picture, PassSet};
-use whitted::render::{control, estimate, render_layers, render_observed, render_with, Antialias};
-use whitted::{render, trace::Tracer, Scene, SceneError};
-
-/// Rows per band streamed to tev: a band is a few milliseconds of work at the report's
-/// sizes, so the picture fills in smoothly.
-const STREAM_BAND: u32 = 16;
+use whitted::progress::RowPoller;
+use whitted::render::Antialias;
+use whitted::still::Still;
+use whitted::{Scene, SceneError};
 
 /// A bar of the image's rows on a terminal (hidden otherwise, or with `--quiet`), moved by
-/// a watcher thread from the rows-done counter until it is finished.
-fn progress(rows: u32, quiet: bool) -> ProgressBar {
+/// the library's rows poller until it is finished.
+fn progress(rows: u32, quiet: bool) -> (ProgressBar, Option<RowPoller>) {
     if quiet || !std::io::stderr().is_terminal() {
-        return ProgressBar::hidden();
+        return (ProgressBar::hidden(), None);
     }
     let bar = ProgressBar::new(u64::from(rows));
     let style = ProgressStyle::with_template(
@@ -37,14 +34,9 @@ fn progress(rows: u32, quiet: bool) -> ProgressBar {
     )
     .unwrap_or_else(|_| ProgressStyle::default_bar());
     bar.set_style(style.progress_chars("=> "));
-    let (watch, base) = (bar.clone(), control::rows_done());
-    std::thread::spawn(move || {
-        while !watch.is_finished() {
-            watch.set_position(control::rows_done().saturating_sub(base));
-            std::thread::sleep(std::time::Duration::from_millis(200));
-        }
-    });
-    bar
+    let watch = bar.clone();
+    let poll = RowPoller::start(move |rows| watch.set_position(rows));
+    (bar, Some(poll))
 }
 
 /// The format of OUT with the EXR options, refusing options its format cannot carry.
@@ -102,31 +94,20 @@ fn run(args: Args) -> anyhow::Result<()> {
         roll: args.roll,
     };
     let (w, h, n) = (scene.width, scene.height, args.samples);
-    let camera = Camera::framed(scene.eye, scene.look_at, native, (w, h), &lens)
-        .expect("the parser refuses an eye placed on its look-at point");
-    let tracer = Tracer::new(&scene);
-    let camera_rays = estimate::camera_rays(w, h, n, 1, 1);
-    if !args.quiet && camera_rays > estimate::ENORMOUS {
-        let k = estimate::SAMPLE_DIVISOR;
-        let small = ((w / k).max(1), (h / k).max(1));
-        let cam = Camera::framed(scene.eye, scene.look_at, native, small, &lens).expect("a camera");
-        let t = std::time::Instant::now();
-        pool.install(|| render(&tracer, &cam, small.0, small.1, n));
-        let sample = estimate::camera_rays(small.0, small.1, n, 1, 1);
-        let s = estimate::predict(camera_rays, sample, t.elapsed().as_secs_f64());
-        eprintln!(
-            "raytrace: warning: {camera_rays} camera rays ({w}×{h}, {} sample(s)/px); a short sample predicts about {} on {} thread(s) (Ctrl-C stops)",
-            n * n,
-            estimate::words(s),
-            pool.current_num_threads()
-        );
-    }
     let aa = args.aa.map_or(Antialias::Grid(n), Antialias::Adaptive);
-    let bar = progress(h, args.quiet);
+    let still = Still::new(&scene, native, (w, h), &lens, aa)
+        .expect("the parser refuses an eye placed on its look-at point");
+    if !args.quiet {
+        if let Some(e) = pool.install(|| still.enormous()) {
+            eprintln!("raytrace: warning: {e} (Ctrl-C stops)");
+        }
+    }
+    let (bar, poll) = progress(h, args.quiet);
     let start = std::time::Instant::now();
     let (frame, rays) = if format.is_layered() || args.pass.is_some() {
         let passes = args.pass.map_or(format.passes(), |p| PassSet::of(&[p]));
-        let (layers, rays) = pool.install(|| render_layers(&tracer, &camera, w, h, n, passes));
+        let (layers, rays) = pool.install(|| still.render_layers(passes));
+        // A --pass is written as a picture below; an .exr is written here, whole.
         let frame = match args.pass {
             Some(p) => Some(picture(&layers, p).context("the pass was not drawn")?),
             None => {
@@ -137,25 +118,15 @@ fn run(args: Args) -> anyhow::Result<()> {
         (frame, rays)
     } else {
         let (frame, rays) = match &args.display {
-            None => pool.install(|| render_with(&tracer, &camera, w, h, aa)),
-            Some(Display::Tev(addr)) => {
-                let tev = Tev::connect_stderr(addr, "raytrace");
+            None => pool.install(|| still.render()),
+            Some(display) => {
                 let name = format!("raytrace: {}", out.display());
-                tev.create(&name, w, h);
-                if let Antialias::Adaptive(_) = aa {
-                    // Adaptive frames are drawn whole (their corner lattice first), then sent.
-                    let drawn = pool.install(|| render_with(&tracer, &camera, w, h, aa));
-                    tev.rows(&name, w, 0, &drawn.0.pixels);
-                    drawn
-                } else {
-                    let band = STREAM_BAND;
-                    let send = |y0: u32, rows: &[u8]| tev.rows(&name, w, y0, rows);
-                    pool.install(|| render_observed(&tracer, &camera, w, h, n, band, &send))
-                }
+                pool.install(|| still.render_shown(display, &name, "raytrace"))
             }
         };
         (Some(frame), rays)
     };
+    drop(poll);
     bar.finish_and_clear();
     let traced = start.elapsed().as_secs_f64();
     if let Some(frame) = &frame {

@@ -37,8 +37,10 @@ pub fn byte_to_float(b: u8) -> f32 {
     f32::from(b) / 255.0
 }
 
-/// The byte a float received from `byte_to_float` came from: round(255·f), clamped.
-pub fn float_to_byte(f: f32) -> u8 {
+/// The byte a float received from `byte_to_float` came from: round(255·f), clamped
+/// (what tev's side does; only the tests need it here).
+#[cfg(test)]
+fn float_to_byte(f: f32) -> u8 {
     (f.clamp(0.0, 1.0) * 255.0).round() as u8
 }
 

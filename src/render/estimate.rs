@@ -24,6 +24,45 @@ pub fn camera_rays(width: u32, height: u32, samples: u32, subframes: u32, frames
         .saturating_mul(frames)
 }
 
+/// A request past `ENORMOUS` camera rays, as a warning says it: the count, the frames
+/// and their size, and the time a short sample predicts.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Enormous {
+    /// The camera rays of the whole request.
+    pub rays: u64,
+    /// The frames of an animation; `None` for one picture.
+    pub frames: Option<usize>,
+    /// The frames' width in pixels.
+    pub width: u32,
+    /// Their height.
+    pub height: u32,
+    /// Camera rays a pixel (samples², times motion-blur sub-frames).
+    pub per_pixel: u64,
+    /// The seconds predicted; `None` when the sample could not be drawn.
+    pub seconds: Option<f64>,
+    /// The threads the sample ran on.
+    pub threads: usize,
+}
+
+impl std::fmt::Display for Enormous {
+    /// `N camera rays (F frame(s) of W×H, S sample(s)/px); a short sample predicts about
+    /// T on K thread(s)`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let frames = self
+            .frames
+            .map_or(String::new(), |n| format!("{n} frame(s) of "));
+        let when = match self.seconds {
+            Some(s) => format!("about {} on {} thread(s)", words(s), self.threads),
+            None => "a long time".into(),
+        };
+        write!(
+            f,
+            "{} camera rays ({frames}{}×{}, {} sample(s)/px); a short sample predicts {when}",
+            self.rays, self.width, self.height, self.per_pixel
+        )
+    }
+}
+
 /// The seconds `total` camera rays take when `sample_rays` of them took `sample_seconds`.
 pub fn predict(total: u64, sample_rays: u64, sample_seconds: f64) -> f64 {
     sample_seconds * total as f64 / sample_rays.max(1) as f64

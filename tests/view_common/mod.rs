@@ -21,11 +21,17 @@ pub struct Viewer {
 impl Viewer {
     /// `animate view MANIFEST --port 0 ARGS`, once it prints its URL.
     pub fn start(manifest: &Path, args: &[&str]) -> Viewer {
+        Viewer::start_with_env(manifest, args, &[])
+    }
+
+    /// `start`, with `env` added to the server's environment.
+    pub fn start_with_env(manifest: &Path, args: &[&str], env: &[(&str, &str)]) -> Viewer {
         let mut child = Command::new(assert_cmd::cargo::cargo_bin("animate"))
             .arg("view")
             .arg(manifest)
             .args(["--port", "0"])
             .args(args)
+            .envs(env.iter().copied())
             .stdout(Stdio::piped())
             .stderr(Stdio::piped())
             .spawn()
@@ -81,10 +87,20 @@ impl Viewer {
 
     /// The server's resident memory in KiB (Linux).
     pub fn rss_kib(&self) -> u64 {
+        self.proc_status("VmRSS:")
+    }
+
+    /// The server's threads (Linux).
+    pub fn threads(&self) -> u64 {
+        self.proc_status("Threads:")
+    }
+
+    /// A number of /proc/PID/status (its `key:` line, a unit such as kB dropped).
+    fn proc_status(&self, key: &str) -> u64 {
         let status = std::fs::read_to_string(format!("/proc/{}/status", self.child.id())).unwrap();
         status
             .lines()
-            .find_map(|l| l.strip_prefix("VmRSS:"))
+            .find_map(|l| l.strip_prefix(key))
             .and_then(|v| v.trim().trim_end_matches("kB").trim().parse().ok())
             .unwrap()
     }

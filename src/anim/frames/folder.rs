@@ -10,6 +10,7 @@
 //! - `clean` (`animate clean`): removes both, and the records of removed RAW frames.
 
 use super::provenance::{raw_record_path, RAW_RECORDS};
+use crate::anim::error::AnimError;
 use crate::anim::project::Animation;
 use crate::output::temporary_target;
 use std::path::{Path, PathBuf};
@@ -93,13 +94,24 @@ pub struct Cleaned {
 }
 
 /// Removes from `dir` the files of frames past the end of `anim`'s sequence (with their
-/// RAW records) and the temporaries of killed runs. The caller holds the folder's lock.
-pub fn clean(anim: &Animation, dir: &Path) -> std::io::Result<Cleaned> {
+/// RAW records) and the temporaries of killed runs, under the folder's lock: refused
+/// while any other run writes into it (`AnimError::Busy`, `AnimError::InUse`).
+pub fn clean(anim: &Animation, dir: &Path) -> Result<Cleaned, AnimError> {
+    let held = super::lock::lock(dir, &anim.manifest.path)?;
+    if !held.alone() {
+        return Err(AnimError::InUse {
+            dir: dir.to_path_buf(),
+        });
+    }
+    let folder = |source| AnimError::Folder {
+        dir: dir.to_path_buf(),
+        source,
+    };
     let past = beyond(anim, dir);
     let paths: Vec<PathBuf> = past.iter().map(|(_, p)| p.clone()).collect();
-    remove(&paths)?;
+    remove(&paths).map_err(folder)?;
     let temps = temporaries(anim, dir);
-    remove(&temps)?;
+    remove(&temps).map_err(folder)?;
     Ok(Cleaned {
         beyond: past.into_iter().map(|(f, _)| f).collect(),
         temporaries: temps.len(),

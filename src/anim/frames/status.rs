@@ -151,6 +151,15 @@ impl StatusReport {
     }
 }
 
+/// The state of each frame of `frames` in `dir`, in their order, read in parallel;
+/// `verify` decodes every image too.
+pub fn states(anim: &Animation, dir: &Path, frames: &[u32], verify: bool) -> Vec<FrameState> {
+    frames
+        .par_iter()
+        .map(|&f| frame_state(anim, dir, f, verify))
+        .collect()
+}
+
 /// The state of every frame of `frames` in `dir`, read in parallel, and the frames past
 /// the end of the sequence that have files there; `verify` decodes every image too.
 pub fn status(anim: &Animation, dir: &Path, frames: &[u32], verify: bool) -> StatusReport {

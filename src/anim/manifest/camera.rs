@@ -23,12 +23,9 @@ use super::raw::{RawCircle, RawSpline, RawStill, Vec3};
 use super::{CameraParts, ManifestError, Source};
 use crate::anim::timeline::LookAt;
 use crate::anim::timeline::{coord_ok, CameraPath, Circle, Key, Spline, SplineError};
-use crate::camera::Lens;
+use crate::camera::{Lens, MAX_ROLL};
 use crate::limits::{MAX_COORD, MAX_TURNS};
 use glam::DVec3;
-
-/// The largest roll taken, in degrees (a thousand turns).
-const MAX_ROLL: f64 = 360_000.0;
 use toml::Spanned;
 
 impl Source<'_> {
@@ -93,7 +90,7 @@ impl Source<'_> {
         roll: Option<&Spanned<f64>>,
     ) -> Result<Lens, ManifestError> {
         let fov = match fov {
-            Some(v) if !(*v.get_ref() > 0.0 && *v.get_ref() < 180.0) => {
+            Some(v) if !Lens::fov_ok(*v.get_ref()) => {
                 let message = format!(
                     "`fov` is the vertical field of view in degrees and must be between 0 and 180 (both excluded), found {}",
                     v.get_ref()

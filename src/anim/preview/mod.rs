@@ -20,6 +20,7 @@ mod legend;
 mod plot;
 mod sheet;
 mod source;
+pub use source::scaled;
 mod view;
 
 pub use gif::GifError;

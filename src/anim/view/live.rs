@@ -9,7 +9,9 @@
 //! editor's rename-over save, a deleted and recreated file or a `git checkout` are all
 //! seen; events within `DEBOUNCE` of each other make one reload.
 
+use crate::anim::error::AnimError;
 use crate::anim::project::Project;
+use crate::anim::refusal::ManifestError;
 use notify::{RecursiveMode, Watcher};
 use std::collections::BTreeSet;
 use std::path::{Path, PathBuf};
@@ -23,8 +25,11 @@ pub const DEBOUNCE: Duration = Duration::from_millis(20);
 /// One load of the manifest.
 #[derive(Clone)]
 pub struct Loaded {
-    /// Counts loads, from 1.
+    /// Counts loads, good or bad, from 1 (a page learns of each, errors included).
     pub generation: u64,
+    /// Counts good loads, from 1 (0: none yet): which project is kept, the key of the
+    /// frames drawn from it (a failed load leaves it).
+    pub project_id: u64,
     /// The last project that loaded (it stays when a later load fails).
     pub project: Option<Arc<Project>>,
     /// The last load's error, as `animate` prints it; `None` when it loaded.
@@ -39,19 +44,25 @@ pub struct Live {
 }
 
 impl Live {
-    /// Loads `manifest` a first time (an error is kept, not returned).
-    pub fn new(manifest: &Path) -> Live {
+    /// Loads `manifest` a first time: an error in it is kept (the page shows it), but a
+    /// manifest that cannot be read at all is refused (`ManifestError::Io`).
+    pub fn new(manifest: &Path) -> Result<Live, AnimError> {
+        let first = Project::load(manifest);
+        if let Err(e @ AnimError::Manifest(ManifestError::Io { .. })) = first {
+            return Err(e);
+        }
         let live = Live {
             manifest: manifest.to_path_buf(),
             state: Mutex::new(Loaded {
                 generation: 0,
+                project_id: 0,
                 project: None,
                 error: None,
             }),
             changed: Condvar::new(),
         };
-        live.reload();
-        live
+        live.store(first);
+        Ok(live)
     }
 
     /// The manifest's path as given.
@@ -61,12 +72,17 @@ impl Live {
 
     /// Loads the manifest again and wakes every waiting page.
     pub fn reload(&self) {
-        let result = Project::load(&self.manifest);
+        self.store(Project::load(&self.manifest));
+    }
+
+    /// Makes `result` the current load, a new generation, and wakes every waiting page.
+    fn store(&self, result: Result<Project, AnimError>) {
         let mut s = self.lock();
         s.generation += 1;
         match result {
             Ok(p) => {
                 s.project = Some(Arc::new(p));
+                s.project_id += 1;
                 s.error = None;
             }
             Err(e) => s.error = Some(format!("animate: {e}")),

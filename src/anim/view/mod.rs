@@ -45,20 +45,17 @@ pub struct ViewOptions {
     pub bind: IpAddr,
     /// The port (0: any free one).
     pub port: u16,
+    /// The threads that draw frames (`None`: one a core).
+    pub threads: Option<u32>,
 }
 
 /// Why the view could not start.
 #[derive(Debug, thiserror::Error)]
 pub enum ViewError {
-    /// The manifest does not exist or cannot be read.
-    #[error("{path}: cannot read the manifest: {source}")]
-    Manifest {
-        /// The path given.
-        path: String,
-        /// The system's reason.
-        #[source]
-        source: std::io::Error,
-    },
+    /// The manifest does not exist or cannot be read (`ManifestError::Io`, as every
+    /// command says it).
+    #[error(transparent)]
+    Manifest(#[from] crate::anim::error::AnimError),
     /// The address cannot be bound.
     #[error("cannot listen on {addr}: {why}")]
     Bind {
@@ -70,6 +67,9 @@ pub enum ViewError {
     /// The system refused a file watcher.
     #[error("cannot watch the manifest's folder: {0}")]
     Watch(#[from] notify::Error),
+    /// The system refused the drawing threads.
+    #[error("cannot start the worker threads: {0}")]
+    Threads(#[from] rayon::ThreadPoolBuildError),
 }
 
 impl ViewError {
@@ -79,9 +79,25 @@ impl ViewError {
     }
 }
 
+/// A reply's body as tiny_http reads it: the shared bytes themselves (a cached frame is
+/// not copied for each reply).
+struct Body(Arc<Vec<u8>>);
+
+impl AsRef<[u8]> for Body {
+    fn as_ref(&self) -> &[u8] {
+        self.0.as_slice()
+    }
+}
+
 fn respond(request: tiny_http::Request, reply: Reply) {
-    let mut response =
-        tiny_http::Response::from_data(reply.body.as_slice()).with_status_code(reply.status);
+    let length = reply.body.len();
+    let mut response = tiny_http::Response::new(
+        tiny_http::StatusCode(reply.status),
+        Vec::new(),
+        std::io::Cursor::new(Body(reply.body)),
+        Some(length),
+        None,
+    );
     let mut headers = vec![
         ("Content-Type", reply.content_type.to_string()),
         ("Cache-Control", "no-store".to_string()),
@@ -116,10 +132,7 @@ pub fn serve(
     stop: &AtomicUsize,
     ready: &dyn Fn(&str),
 ) -> Result<i32, ViewError> {
-    std::fs::metadata(&options.manifest).map_err(|source| ViewError::Manifest {
-        path: options.manifest.display().to_string(),
-        source,
-    })?;
+    let live = Arc::new(live::Live::new(&options.manifest)?);
     let addr = SocketAddr::new(options.bind, options.port);
     let server = tiny_http::Server::http(addr).map_err(|e| ViewError::Bind {
         addr,
@@ -132,11 +145,14 @@ pub fn serve(
             addr,
             why: "not an IP socket".into(),
         })?;
-    let live = Arc::new(live::Live::new(&options.manifest));
+    // Requests are answered on threads of their own; their drawing runs on this pool
+    // (`--threads`), not on rayon's global one.
+    let pool = Arc::new(crate::process::pool(options.threads)?);
     live::watch(Arc::clone(&live))?;
     let ctx = Arc::new(Context {
         live,
-        frames: frames::Frames::default(),
+        frames: frames::Frames::new(Arc::clone(&pool)),
+        pool,
         bound,
     });
     let (tx, rx) = mpsc::sync_channel::<tiny_http::Request>(QUEUE);

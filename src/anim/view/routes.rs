@@ -15,12 +15,10 @@
 //! parameter gets 400 and `{"error": reason}`; an unknown route 404, a method other than
 //! GET or HEAD 405, all with a JSON reason.
 
-use super::frames::{scaled_size, Drawn, Encoding, Frames};
+use super::frames::{Drawn, Encoding, Frames};
 use super::live::{Live, Loaded};
-use crate::anim::frames::status::status;
+use crate::anim::frames::status::states;
 use crate::anim::project::Animation;
-use crate::camera::Camera;
-use crate::trace::Tracer;
 use serde_json::{json, Value};
 use std::net::SocketAddr;
 use std::sync::Arc;
@@ -71,6 +69,8 @@ pub struct Context {
     pub live: Arc<Live>,
     /// The frame service.
     pub frames: Frames,
+    /// The threads that draw (`--threads`).
+    pub pool: Arc<rayon::ThreadPool>,
     /// The address the server is bound to.
     pub bound: SocketAddr,
 }
@@ -129,7 +129,7 @@ fn state(l: &Loaded, live: &Live) -> Value {
     let manifest = live.manifest().display().to_string();
     match &l.project {
         Some(p) => {
-            let (width, height) = scaled_size(p, 1);
+            let (width, height) = p.size();
             json!({
                 "generation": l.generation, "error": l.error, "manifest": manifest,
                 "frames": p.manifest.frames, "fps": p.manifest.fps,
@@ -240,20 +240,14 @@ fn frame(ctx: &Context, query: &str) -> Result<Reply, Reply> {
 
 fn pick(ctx: &Context, query: &str) -> Result<Reply, Reply> {
     let (_, p) = project(ctx)?;
-    let (w, h) = scaled_size(&p, 1);
+    let (w, h) = p.size();
     let n = number(query, "n", 0, p.manifest.frames - 1, None)?;
     let x = number(query, "x", 0, w - 1, None)?;
     let y = number(query, "y", 0, h - 1, None)?;
-    // The frame's own time (motion blur's sub-frames are around it).
-    let snap = p.timeline.at(f64::from(n));
-    let Some(camera) = Camera::new(snap.eye, snap.look_at, w, h) else {
-        return Err(Reply::error(
-            422,
-            format!("frame {n}: the camera is on the point it looks at"),
-        ));
-    };
-    let tracer = Tracer::new(&snap.scene);
-    let hit = crate::pick::pick(&tracer, &camera, x, y);
+    let anim = Animation::new(&p).map_err(|e| Reply::error(422, format!("animate: {e}")))?;
+    let hit = anim
+        .pick(n, x, y)
+        .map_err(|e| Reply::error(422, format!("animate: {e}")))?;
     Ok(Reply::json(
         200,
         json!({ "frame": n, "x": x, "y": y, "hit": hit }),
@@ -271,14 +265,7 @@ fn strip(ctx: &Context) -> Reply {
     };
     let dir = &p.manifest.output.dir;
     let frames: Vec<u32> = (0..p.manifest.frames).collect();
-    let report = status(&anim, dir, &frames, false);
-    let mut states = vec!["missing"; frames.len()];
-    for &f in &report.up_to_date {
-        states[f as usize] = "up-to-date";
-    }
-    for &f in &report.stale {
-        states[f as usize] = "stale";
-    }
+    let states = ctx.pool.install(|| states(&anim, dir, &frames, false));
     Reply::json(
         200,
         json!({"generation": loaded.generation, "folder": dir.display().to_string(),

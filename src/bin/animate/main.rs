@@ -18,12 +18,11 @@ use whitted::anim::check::{self, CheckOptions};
 use whitted::anim::frames::estimate::Estimate;
 use whitted::anim::frames::run::{self, Destination, Policy};
 use whitted::anim::frames::status::{ranges, status};
-use whitted::anim::frames::{balance, encode, folder, lock};
+use whitted::anim::frames::{balance, encode, folder};
 use whitted::anim::job::{openjd_template, relative_to, Chunking};
 use whitted::anim::select::sorted;
 use whitted::anim::view::ViewOptions;
 use whitted::anim::{preview, AnimError, Animation, Reporter};
-use whitted::display::{Display, Tev};
 use whitted::exit::Outcome;
 use whitted::fileloc::shown;
 use whitted::output::ImageFormat;
@@ -32,9 +31,15 @@ fn pool(threads: Option<u32>) -> anyhow::Result<rayon::ThreadPool> {
     whitted::process::pool(threads).context("cannot start the worker threads")
 }
 
-/// What an interrupted stream or video says: `--resume` does not apply to them.
-const STREAM_STOPPED: &str = "a stream or video cannot be resumed: run the command again, \
-or render into a folder (`--resume` completes that) and `animate encode` it";
+/// What an interrupted stream or video says (`--resume` does not apply to them): its two
+/// lines, whether the run stopped by itself or was ended stuck on a write.
+fn stream_stopped(sig: i32) -> String {
+    format!(
+        "animate: interrupted by signal {sig}\nanimate: hint: a stream or video cannot be \
+         resumed: run the command again, or render into a folder (`--resume` completes \
+         that) and `animate encode` it"
+    )
+}
 
 fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     let c = &args.common;
@@ -43,13 +48,14 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     }
     let project = c.load()?;
     let (m, mut anim) = (&project.manifest, Animation::new(&project)?);
-    if let Some(Display::Tev(addr)) = &args.display {
-        let observer = tev_observer(addr, &anim);
-        anim = anim.observed(observer);
+    if let Some(display) = &args.display {
+        anim = anim.displayed(display, "animate");
     }
     let shard = args.shard()?;
+    let pool = pool(c.threads)?;
     let frames = match args.balance {
-        true => balance::select_balanced(&anim, c.frames.as_deref(), shard)?,
+        // The pre-pass traces sample frames: on the --threads pool like the render.
+        true => pool.install(|| balance::select_balanced(&anim, c.frames.as_deref(), shard))?,
         false => run::frames_of(&anim, c.frames.as_deref(), shard)?,
     };
     let destination = args.destination(m)?;
@@ -57,12 +63,10 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     if !c.quiet {
         report::announce(&anim, frames.len(), args.stdout == Some(ImageFormat::Raw));
     }
-    let (stop, pool) = (whitted::process::watch_signals("animate"), pool(c.threads)?);
+    let stop = whitted::process::watch_signals("animate");
     if matches!(destination, Destination::Stream(_)) {
         // A reader that stops reading would hold a write, and the run, forever.
-        whitted::process::exit_when_stuck(stop.clone(), |sig| {
-            format!("animate: interrupted by signal {sig}\nanimate: hint: {STREAM_STOPPED}")
-        });
+        whitted::process::exit_when_stuck(stop.clone(), stream_stopped);
     }
     if !c.quiet {
         pool.install(|| report::warn_if_enormous(&anim, &frames));
@@ -89,8 +93,7 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     bar.finish();
     let summary = match (summary, &destination) {
         (Err(AnimError::Interrupted(sig)), Destination::Stream(_) | Destination::Video(_)) => {
-            eprintln!("animate: interrupted by signal {sig}");
-            eprintln!("animate: hint: {STREAM_STOPPED}");
+            eprintln!("{}", stream_stopped(sig));
             return Ok(Outcome::Interrupted(sig));
         }
         (summary, _) => summary?,
@@ -153,14 +156,7 @@ fn clean_command(args: CleanArgs) -> anyhow::Result<Outcome> {
         );
         return Ok(Outcome::Success);
     }
-    let held = lock::lock(&dir, &m.path)?;
-    if !held.alone() {
-        let why =
-            "another run of this manifest is writing into the folder: clean when it has ended";
-        return Err(anyhow::anyhow!("{}: {why}", shown(&dir)));
-    }
-    let cleaned =
-        folder::clean(&anim, &dir).with_context(|| format!("cleaning {}", shown(&dir)))?;
+    let cleaned = folder::clean(&anim, &dir)?;
     println!(
         "{}: removed {} frame(s) past the end ({}) and {} temporary file(s)",
         shown(&dir),
@@ -171,37 +167,20 @@ fn clean_command(args: CleanArgs) -> anyhow::Result<Outcome> {
     Ok(Outcome::Success)
 }
 
-/// Sends every finished frame to tev as image `animate: MANIFEST`, replaced frame after
-/// frame (a missing viewer: one warning).
-fn tev_observer(addr: &str, anim: &Animation) -> whitted::anim::project::FrameObserver {
-    let tev = Tev::connect_stderr(addr, "animate");
-    let name = format!("animate: {}", anim.manifest.path.display());
-    if tev.connected() {
-        tev.create(&name, anim.width, anim.height);
-    }
-    std::sync::Arc::new(move |_, frame| {
-        if tev.connected() {
-            tev.rows(&name, frame.width, 0, &frame.pixels);
-        }
-    })
-}
-
 fn view(args: ViewArgs) -> anyhow::Result<Outcome> {
     let options = ViewOptions {
         manifest: args.manifest.clone(),
         bind: args.bind,
         port: args.port,
+        threads: args.threads,
     };
     let stop = whitted::process::watch_signals("animate");
-    let pool = pool(args.threads)?;
-    let sig = pool.install(|| {
-        whitted::anim::view::serve(&options, &stop, &|url| {
-            eprintln!(
-                "animate: view of {} at {url} (Ctrl-C to stop)",
-                args.manifest.display()
-            );
-            whitted::anim::view::print_url(url);
-        })
+    let sig = whitted::anim::view::serve(&options, &stop, &|url| {
+        eprintln!(
+            "animate: view of {} at {url} (Ctrl-C to stop)",
+            args.manifest.display()
+        );
+        whitted::anim::view::print_url(url);
     })?;
     Ok(Outcome::Interrupted(sig))
 }

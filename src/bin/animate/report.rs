@@ -14,7 +14,8 @@ use whitted::anim::preview::{PreviewError, PreviewSummary};
 use whitted::anim::select::SelectError;
 use whitted::anim::{AnimError, Animation, Event, Reporter};
 use whitted::exit::Outcome;
-use whitted::render::{control, estimate};
+use whitted::progress::RowPoller;
+use whitted::render::control;
 
 /// The progress bar: frames done (skipped ones count as done), frames/s, ETA.
 pub struct Bar(ProgressBar);
@@ -24,20 +25,16 @@ pub struct Bar(ProgressBar);
 pub struct RowBar {
     bar: ProgressBar,
     rows_per_frame: u64,
-    /// Rows counted before the run (the counter is process-wide), minus skipped frames.
-    base: std::sync::Arc<std::sync::atomic::AtomicU64>,
-    done: std::sync::Arc<std::sync::atomic::AtomicBool>,
+    /// What moves the bar (none when it is hidden); it counts from the rows done before
+    /// the run (the counter is process-wide), minus skipped frames.
+    poll: Option<RowPoller>,
 }
 
 impl RowBar {
     /// A bar for `total` frames of `rows_per_frame` rows each, hidden with `quiet` or when
     /// standard error is not a terminal.
     pub fn new(total: usize, rows_per_frame: u64, quiet: bool) -> RowBar {
-        use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
-        use std::sync::Arc;
         let rows = rows_per_frame.max(1);
-        let base = Arc::new(AtomicU64::new(control::rows_done()));
-        let done = Arc::new(AtomicBool::new(false));
         let hidden = quiet || !std::io::stderr().is_terminal();
         let bar = if hidden {
             ProgressBar::hidden()
@@ -67,26 +64,21 @@ impl RowBar {
             },
         );
         bar.set_style(style.progress_chars("=> "));
-        if !hidden {
-            let (bar, base, done) = (bar.clone(), base.clone(), done.clone());
-            std::thread::spawn(move || {
-                while !done.load(Ordering::Relaxed) {
-                    let pos = control::rows_done().saturating_sub(base.load(Ordering::Relaxed));
-                    bar.set_position(pos);
-                    std::thread::sleep(std::time::Duration::from_millis(200));
-                }
-            });
-        }
+        let poll = (!hidden).then(|| {
+            let bar = bar.clone();
+            RowPoller::start(move |rows| bar.set_position(rows))
+        });
         RowBar {
             bar,
             rows_per_frame: rows,
-            base,
-            done,
+            poll,
         }
     }
 
     pub fn finish(&self) {
-        self.done.store(true, std::sync::atomic::Ordering::Relaxed);
+        if let Some(poll) = &self.poll {
+            poll.stop();
+        }
         self.bar.finish_and_clear();
     }
 }
@@ -96,8 +88,9 @@ impl Reporter for RowBar {
         if let Event::Started { skipped, .. } = event {
             // Skipped frames count as done: move the base back by their rows.
             let rows = skipped as u64 * self.rows_per_frame;
-            let base = control::rows_done().saturating_sub(rows);
-            self.base.store(base, std::sync::atomic::Ordering::Relaxed);
+            if let Some(poll) = &self.poll {
+                poll.set_base(control::rows_done().saturating_sub(rows));
+            }
             self.bar.set_position(rows);
             self.bar.reset_eta();
         }
@@ -198,26 +191,12 @@ pub fn announce(anim: &Animation, frames: usize, raw: bool) {
     }
 }
 
-/// Before a request of more than `ENORMOUS` camera rays: a warning with the count and the
-/// time a 1/8-size sample of its first frame predicts on the current pool.
+/// Before a request of more than `ENORMOUS` camera rays: the library's warning
+/// (`Animation::enormous`), with what the command line can do about it.
 pub fn warn_if_enormous(anim: &Animation, frames: &[u32]) {
-    let rays = anim.camera_rays(frames.len());
-    let Some(&first) = frames.first() else { return };
-    if rays <= estimate::ENORMOUS {
-        return;
+    if let Some(e) = anim.enormous(frames) {
+        eprintln!("animate: warning: {e} (Ctrl-C stops, --resume continues)");
     }
-    let threads = rayon::current_num_threads();
-    let when = match anim.predict_seconds(first, frames.len()) {
-        Ok(s) => format!("about {} on {threads} thread(s)", estimate::words(s)),
-        Err(_) => "a long time".into(),
-    };
-    eprintln!(
-        "animate: warning: {rays} camera rays ({} frame(s) of {}×{}, {} sample(s)/px); a short sample predicts {when} (Ctrl-C stops, --resume continues)",
-        frames.len(),
-        anim.width,
-        anim.height,
-        anim.camera_rays(1) / (u64::from(anim.width) * u64::from(anim.height)).max(1),
-    );
 }
 
 /// The one-line summary: frames, wall time, frames/s, rays/s, where they went.

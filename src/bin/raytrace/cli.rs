@@ -4,6 +4,7 @@
 
 use clap::Parser;
 use std::path::PathBuf;
+use whitted::camera::Lens;
 use whitted::display::Display;
 use whitted::output::ExrDepth;
 use whitted::passes::{Pass, PassSet};
@@ -86,7 +87,7 @@ fn parse_size(s: &str) -> Result<(u32, u32), String> {
 
 fn parse_fov(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
-        Ok(v) if v > 0.0 && v < 180.0 => Ok(v),
+        Ok(v) if Lens::fov_ok(v) => Ok(v),
         _ => Err(format!(
             "expected a vertical field of view in degrees between 0 and 180 (both excluded), found {s:?}"
         )),
@@ -95,7 +96,7 @@ fn parse_fov(s: &str) -> Result<f64, String> {
 
 fn parse_roll(s: &str) -> Result<f64, String> {
     match s.parse::<f64>() {
-        Ok(v) if v.abs() <= 360_000.0 => Ok(v),
+        Ok(v) if Lens::roll_ok(v) => Ok(v),
         _ => Err(format!("expected a roll in degrees, found {s:?}")),
     }
 }

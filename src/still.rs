@@ -1,0 +1,140 @@
+//! One picture of a scene, `raytrace`'s run: the scene's camera at a size and lens, the
+//! warning before an enormous request (`estimate::Enormous`), and the drawing, streamed
+//! to a live display as it goes.
+//!
+//! ```text
+//! let still = Still::new(&scene, native, (w, h), &lens, aa)?;   // None: eye on look_at
+//! still.enormous()                → Some(Enormous { rays, seconds, .. }) past 2^28 rays
+//! still.render_shown(&display, "raytrace: out.png", "raytrace") → (Frame, RayCount)
+//! ```
+
+use crate::camera::{Camera, Lens};
+use crate::display::{Display, Tev};
+use crate::passes::{Layers, PassSet};
+use crate::render::estimate::{self, Enormous};
+use crate::render::{render_layers, render_observed, render_with, Antialias, Frame};
+use crate::scene::Scene;
+use crate::trace::{RayCount, Tracer};
+
+/// Rows per band streamed to tev: a band is a few milliseconds of work at the report's
+/// sizes, so the picture fills in smoothly.
+pub const STREAM_BAND: u32 = 16;
+
+/// A scene ready to draw at a size.
+pub struct Still<'s> {
+    scene: &'s Scene,
+    native: (u32, u32),
+    lens: Lens,
+    /// The picture's width in pixels.
+    pub width: u32,
+    /// Its height.
+    pub height: u32,
+    /// Its anti-aliasing.
+    pub aa: Antialias,
+    camera: Camera,
+    tracer: Tracer<'s>,
+}
+
+impl<'s> Still<'s> {
+    /// `scene` (whose own resolution is `native`) drawn at `size` through `lens`; `None`
+    /// when its eye is on the point it looks at.
+    pub fn new(
+        scene: &'s Scene,
+        native: (u32, u32),
+        size: (u32, u32),
+        lens: &Lens,
+        aa: Antialias,
+    ) -> Option<Still<'s>> {
+        let camera = Camera::framed(scene.eye, scene.look_at, native, size, lens)?;
+        Some(Still {
+            scene,
+            native,
+            lens: *lens,
+            width: size.0,
+            height: size.1,
+            aa,
+            camera,
+            tracer: Tracer::new(scene),
+        })
+    }
+
+    /// n of the n×n grid (1 under adaptive anti-aliasing, whose rays are counted from
+    /// the one corner sample a pixel shares).
+    fn samples(&self) -> u32 {
+        match self.aa {
+            Antialias::Grid(n) => n,
+            Antialias::Adaptive(_) => 1,
+        }
+    }
+
+    /// Past `estimate::ENORMOUS` camera rays: the count and the seconds a 1/8-size sample,
+    /// drawn as the picture will be (its anti-aliasing), predicts on the current pool.
+    pub fn enormous(&self) -> Option<Enormous> {
+        let (w, h, n) = (self.width, self.height, self.samples());
+        let rays = estimate::camera_rays(w, h, n, 1, 1);
+        if rays <= estimate::ENORMOUS {
+            return None;
+        }
+        let k = estimate::SAMPLE_DIVISOR;
+        let small = ((w / k).max(1), (h / k).max(1));
+        let seconds = Camera::framed(
+            self.scene.eye,
+            self.scene.look_at,
+            self.native,
+            small,
+            &self.lens,
+        )
+        .map(|cam| {
+            let t = std::time::Instant::now();
+            render_with(&self.tracer, &cam, small.0, small.1, self.aa);
+            let sample = estimate::camera_rays(small.0, small.1, n, 1, 1);
+            estimate::predict(rays, sample, t.elapsed().as_secs_f64())
+        });
+        Some(Enormous {
+            rays,
+            frames: None,
+            width: w,
+            height: h,
+            per_pixel: u64::from(n) * u64::from(n),
+            seconds,
+            threads: rayon::current_num_threads(),
+        })
+    }
+
+    /// The picture.
+    pub fn render(&self) -> (Frame, RayCount) {
+        render_with(&self.tracer, &self.camera, self.width, self.height, self.aa)
+    }
+
+    /// The picture, shown on `display` as image `name` while it is drawn: a grid's rows
+    /// in bands of `STREAM_BAND` as they finish, an adaptive picture whole once drawn (its
+    /// corner lattice comes first). A missing viewer: one warning, `PROGRAM: warning: …`.
+    pub fn render_shown(
+        &self,
+        display: &Display,
+        name: &str,
+        program: &'static str,
+    ) -> (Frame, RayCount) {
+        let Display::Tev(addr) = display;
+        let tev = Tev::connect_stderr(addr, program);
+        let (w, h) = (self.width, self.height);
+        tev.create(name, w, h);
+        match self.aa {
+            Antialias::Adaptive(_) => {
+                let drawn = self.render();
+                tev.rows(name, w, 0, &drawn.0.pixels);
+                drawn
+            }
+            Antialias::Grid(n) => {
+                let send = |y0: u32, rows: &[u8]| tev.rows(name, w, y0, rows);
+                render_observed(&self.tracer, &self.camera, w, h, n, STREAM_BAND, &send)
+            }
+        }
+    }
+
+    /// The beauty and `passes` (a grid's samples).
+    pub fn render_layers(&self, passes: PassSet) -> (Layers, RayCount) {
+        let (w, h, n) = (self.width, self.height, self.samples());
+        render_layers(&self.tracer, &self.camera, w, h, n, passes)
+    }
+}
