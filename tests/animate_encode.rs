@@ -5,21 +5,12 @@
 //! `animate encode` checks the folder is complete and up to date first. Without ffmpeg
 //! these tests say "skipped" and pass, except under CI.
 
+mod skip;
 mod support;
 
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 use support::*;
-
-fn have_ffmpeg() -> bool {
-    let found = Command::new("ffprobe").arg("-version").output().is_ok()
-        && Command::new("ffmpeg").arg("-version").output().is_ok();
-    if !found {
-        assert!(std::env::var_os("CI").is_none(), "CI must install ffmpeg");
-        eprintln!("skipped: ffmpeg/ffprobe not installed");
-    }
-    found
-}
 
 /// `codec_name,nb_read_frames` of the video's first stream, as ffprobe counts them.
 fn probe(file: &std::path::Path) -> String {
@@ -56,7 +47,7 @@ fn hidden(dir: &std::path::Path) -> Vec<String> {
 
 #[test]
 fn an_interrupted_or_stopped_video_leaves_the_previous_one_whole() {
-    if !have_ffmpeg() {
+    if !skip::ffmpeg() {
         return;
     }
     let (dir, manifest) = project(&circle_manifest(""));
@@ -142,7 +133,7 @@ fn an_interrupted_or_stopped_video_leaves_the_previous_one_whole() {
 
 #[test]
 fn encode_checks_the_folder_then_makes_the_video_with_the_options() {
-    if !have_ffmpeg() {
+    if !skip::ffmpeg() {
         return;
     }
     let (dir, manifest) = project(&circle_manifest(""));

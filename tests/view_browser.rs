@@ -6,6 +6,7 @@
 //! stale cell and a sphere. Screenshots go to docs/view/ (`VIEW_SCREENSHOTS=docs`).
 //! Without Chromium the test says it skipped, unless CI is set.
 
+mod skip;
 mod support;
 mod view_common;
 

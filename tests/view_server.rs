@@ -4,6 +4,7 @@
 //! one, live reload (a bad edit located exactly as the command line prints it, the last
 //! good frame still served, a deleted scene file), and Ctrl-C ending with status 130.
 
+mod skip;
 mod support;
 mod view_common;
 

@@ -5,28 +5,13 @@
 use serde_json::{json, Value};
 use std::io::{BufRead, BufReader};
 use std::net::TcpStream;
-use std::path::PathBuf;
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 use tungstenite::stream::MaybeTlsStream;
 use tungstenite::{Message, WebSocket};
 
-/// `chromium` from PATH (or /usr/bin), or `None` after saying the test skipped; a
-/// failure under `CI`.
-pub fn chromium() -> Option<PathBuf> {
-    let found = std::env::var_os("PATH")
-        .and_then(|paths| {
-            std::env::split_paths(&paths)
-                .map(|dir| dir.join("chromium"))
-                .find(|p| p.is_file())
-        })
-        .or_else(|| Some(PathBuf::from("/usr/bin/chromium")).filter(|p| p.is_file()));
-    if found.is_none() {
-        assert!(std::env::var_os("CI").is_none(), "CI must install chromium");
-        eprintln!("skipped: chromium not found");
-    }
-    found
-}
+/// `chromium` from PATH (or /usr/bin), or `None` after the test skipped (tests/skip).
+pub use crate::skip::chromium;
 
 /// A headless Chromium with one page, ended when dropped.
 pub struct Browser {
