@@ -37,10 +37,10 @@ fn children(pid: u32) -> Vec<u32> {
         .collect()
 }
 
+/// The hidden temporaries of a video (`.v.mp4.XXXX`) in `dir`.
 fn hidden(dir: &std::path::Path) -> Vec<String> {
-    std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+    entries(dir)
+        .into_iter()
         .filter(|n| n.starts_with('.') && n.contains(".mp4."))
         .collect()
 }

@@ -49,12 +49,11 @@ fn interrupted_run_resumes(sig: &str, code: i32) {
         "{err}"
     );
     let frames = dir.path().join("frames");
-    let leftovers: Vec<String> = std::fs::read_dir(&frames)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+    let temps: Vec<String> = entries(&frames)
+        .into_iter()
         .filter(|n| n.ends_with(".tmp"))
         .collect();
-    assert!(leftovers.is_empty(), "{leftovers:?}");
+    assert!(temps.is_empty(), "{temps:?}");
     let done = files(&frames);
     assert!(done.len() < 12, "the signal came too late to test anything");
     for (name, bytes) in &done {
@@ -198,14 +197,11 @@ fn two_resume_runs_racing_on_the_same_frames() {
     }
     let frames = dir.path().join("frames");
     assert_eq!(files(&frames), files(&dir.path().join("single")));
-    let temps = std::fs::read_dir(&frames).unwrap().filter(|e| {
-        e.as_ref()
-            .unwrap()
-            .file_name()
-            .to_string_lossy()
-            .ends_with(".tmp")
-    });
-    assert_eq!(temps.count(), 0);
+    let temps: Vec<String> = entries(&frames)
+        .into_iter()
+        .filter(|n| n.ends_with(".tmp"))
+        .collect();
+    assert!(temps.is_empty(), "{temps:?}");
 }
 
 /// The peak resident memory (VmHWM, KiB) of a running process, polled until it exits.

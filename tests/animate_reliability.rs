@@ -309,7 +309,7 @@ fn a_full_disk_names_the_frame_and_leaves_no_temporary() {
         .output()
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
-    let left: Vec<String> = entries_of(&mnt)
+    let left: Vec<String> = entries(&mnt)
         .into_iter()
         .filter(|n| n.ends_with(".tmp"))
         .collect();
@@ -320,13 +320,6 @@ fn a_full_disk_names_the_frame_and_leaves_no_temporary() {
         "{err}"
     );
     assert!(left.is_empty(), "{left:?}");
-}
-
-fn entries_of(dir: &Path) -> Vec<String> {
-    std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect()
 }
 
 #[test]

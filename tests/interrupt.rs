@@ -76,12 +76,7 @@ fn sigint_stops_a_heavy_frame_between_rows_and_says_so() {
     assert!(n >= 1 && line.contains("in progress"), "{line}");
     // The stopped frames are not written, under a final name or a temporary one.
     let frames = dir.path().join("frames");
-    let left: Vec<String> = std::fs::read_dir(&frames)
-        .map(|d| d.map(|e| e.unwrap().file_name().to_string_lossy().into_owned()))
-        .into_iter()
-        .flatten()
-        .filter(|n| !n.starts_with(".whitted-lock")) // the run's folder lock stays
-        .collect();
+    let left = leftovers(&frames); // the run's folder lock stays
     assert!(left.is_empty(), "{left:?}");
 }
 

@@ -41,10 +41,7 @@ fn a_read_only_folder_is_refused_before_rendering_whether_it_exists_or_not() {
             .unwrap();
         results.push((folder, out));
     }
-    let left: Vec<String> = std::fs::read_dir(mnt.join("existing"))
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
+    let left = entries(&mnt.join("existing"));
     let _ = Command::new("umount").arg(&mnt).status();
     assert!(read_only, "remounting the tmpfs read-only failed");
     for (folder, out) in results {

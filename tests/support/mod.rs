@@ -1,5 +1,5 @@
 //! Shared by the `animate` integration tests: a small scene, manifests written into a
-//! temporary folder, and helpers to run the built binaries and read their frames.
+//! temporary folder, helpers to run the built binaries and read their frames and folders.
 
 #![allow(dead_code)]
 
@@ -82,6 +82,31 @@ pub fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
         .collect();
     out.sort();
     out
+}
+
+/// The names of the entries of `dir`, sorted, hidden ones included.
+pub fn entries(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("cannot list {}: {e}", dir.display()))
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+/// What is left in a frame folder besides the run's folder lock (the library's
+/// `LOCK_FILE` and its `LOCK_FILE-<key>` files), sorted, hidden ones included; nothing when
+/// the folder does not exist.
+pub fn leftovers(dir: &Path) -> Vec<String> {
+    use whitted::anim::frames::lock::LOCK_FILE;
+    if !dir.exists() {
+        return Vec::new();
+    }
+    let own = format!("{LOCK_FILE}-");
+    entries(dir)
+        .into_iter()
+        .filter(|n| n != LOCK_FILE && !n.starts_with(&own))
+        .collect()
 }
 
 /// The RGB pixels of a PNG file.
