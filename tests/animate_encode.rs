@@ -28,15 +28,6 @@ fn probe(file: &std::path::Path) -> String {
     String::from_utf8_lossy(&out.stdout).trim().to_string()
 }
 
-/// The child processes of `pid` (from /proc).
-fn children(pid: u32) -> Vec<u32> {
-    let text =
-        std::fs::read_to_string(format!("/proc/{pid}/task/{pid}/children")).unwrap_or_default();
-    text.split_whitespace()
-        .filter_map(|p| p.parse().ok())
-        .collect()
-}
-
 /// The hidden temporaries of a video (`.v.mp4.XXXX`) in `dir`.
 fn hidden(dir: &std::path::Path) -> Vec<String> {
     entries(dir)
@@ -91,29 +82,14 @@ fn an_interrupted_or_stopped_video_leaves_the_previous_one_whole() {
         std::thread::sleep(Duration::from_millis(800));
         if stop_ffmpeg {
             for c in children(child.id()) {
-                assert!(Command::new("kill")
-                    .args(["-s", "STOP", &c.to_string()])
-                    .status()
-                    .unwrap()
-                    .success());
+                signal_pid(c, "STOP");
             }
             std::thread::sleep(Duration::from_millis(300));
         }
-        let sent = Instant::now();
-        assert!(Command::new("kill")
-            .args(["-s", sig, &child.id().to_string()])
-            .status()
-            .unwrap()
-            .success());
-        while child.try_wait().unwrap().is_none() && sent.elapsed() < Duration::from_secs(5) {
-            std::thread::sleep(Duration::from_millis(10));
-        }
-        let took = sent.elapsed();
-        let _ = child.kill();
-        let status = child.wait().unwrap();
-        let mut err = String::new();
-        std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
-        assert_eq!(status.code(), Some(code), "SIG{sig}: {err}");
+        signal(&child, sig);
+        let (status, took) = wait_within(&mut child, Duration::from_secs(5));
+        let err = stderr_of(&mut child);
+        assert_eq!(status, Some(code), "SIG{sig}: {err}");
         assert!(
             took < Duration::from_secs(1),
             "SIG{sig} (ffmpeg stopped: {stop_ffmpeg}): {took:?}"

@@ -11,21 +11,7 @@ use support::*;
 const SLOW: &str = "\n[render]\nwidth = 320\nheight = 240\nsamples = 3\n";
 
 fn spawn(manifest: &std::path::Path, args: &[&str]) -> std::process::Child {
-    Command::new(assert_cmd::cargo::cargo_bin("animate"))
-        .arg(manifest)
-        .args(args)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap()
-}
-
-fn signal(child: &std::process::Child, sig: &str) {
-    let ok = Command::new("kill")
-        .args(["-s", sig, &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(ok.success());
+    spawn_animate(manifest, args)
 }
 
 /// Sends `sig` mid-run; checks the exit status, that no temporary file is left, that
@@ -42,8 +28,7 @@ fn interrupted_run_resumes(sig: &str, code: i32) {
     let took = sent.elapsed();
     assert_eq!(status.code(), Some(code));
     assert!(took < Duration::from_secs(3), "took {took:?} to stop");
-    let mut err = String::new();
-    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+    let err = stderr_of(&mut child);
     assert!(
         err.contains("interrupted") && err.contains("--resume"),
         "{err}"
@@ -202,25 +187,6 @@ fn two_resume_runs_racing_on_the_same_frames() {
         .filter(|n| n.ends_with(".tmp"))
         .collect();
     assert!(temps.is_empty(), "{temps:?}");
-}
-
-/// The peak resident memory (VmHWM, KiB) of a running process, polled until it exits.
-fn peak_kib_until_exit(mut child: std::process::Child) -> (u64, std::process::ExitStatus) {
-    let status_file = format!("/proc/{}/status", child.id());
-    let mut peak = 0;
-    loop {
-        if let Ok(text) = std::fs::read_to_string(&status_file) {
-            let hwm = text
-                .lines()
-                .find_map(|l| l.strip_prefix("VmHWM:"))
-                .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<u64>().ok());
-            peak = peak.max(hwm.unwrap_or(0));
-        }
-        if let Some(status) = child.try_wait().unwrap() {
-            return (peak, status);
-        }
-        std::thread::sleep(Duration::from_millis(5));
-    }
 }
 
 #[test]

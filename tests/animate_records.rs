@@ -5,18 +5,8 @@
 mod support;
 
 use std::path::Path;
-use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 use support::*;
-
-fn spawn(args: &[&std::ffi::OsStr]) -> Child {
-    Command::new(assert_cmd::cargo::cargo_bin("animate"))
-        .args(args)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap()
-}
 
 /// A small deterministic generator (a 64-bit LCG, Knuth's MMIX constants).
 struct Lcg(u64);
@@ -75,19 +65,14 @@ fn kill_9_and_concurrent_runs_never_leave_a_lying_raw_record() {
         let name = format!("trial {trial} (seed 23)");
         if trial % 2 == 0 {
             // B over A's folder, killed after 5–90 ms.
-            let mut child = spawn(&[
-                b.as_os_str(),
-                "--force".as_ref(),
-                "--threads".as_ref(),
-                "2".as_ref(),
-            ]);
+            let mut child = spawn_animate(&b, &["--force", "--threads", "2"]);
             std::thread::sleep(Duration::from_millis(5 + rng.below(86)));
             child.kill().unwrap();
             child.wait().unwrap();
         } else {
             // A and B at once into one folder: the lock lets one of them in.
-            let mut one = spawn(&[b.as_os_str(), "--force".as_ref()]);
-            let mut two = spawn(&[a.as_os_str(), "--force".as_ref()]);
+            let mut one = spawn_animate(&b, &["--force"]);
+            let mut two = spawn_animate(&a, &["--force"]);
             std::thread::sleep(Duration::from_millis(rng.below(60)));
             if rng.below(2) == 0 {
                 one.kill().unwrap();

@@ -5,40 +5,13 @@
 mod skip;
 mod support;
 
-use std::path::Path;
-use std::process::{Child, Command, Stdio};
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 use support::*;
 
-fn spawn(args: &[&std::ffi::OsStr]) -> Child {
-    Command::new(assert_cmd::cargo::cargo_bin("animate"))
-        .args(args)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap()
-}
-
-fn mkfifo(path: &Path) {
-    assert!(Command::new("mkfifo").arg(path).status().unwrap().success());
-}
-
-/// Runs `cmd` with a deadline: a hang fails instead of blocking the suite.
+/// Runs `cmd` with a deadline of `secs` seconds: a hang fails instead of blocking the suite.
 fn within(cmd: &mut Command, secs: u64) -> std::process::Output {
-    let mut child = cmd
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let start = Instant::now();
-    while child.try_wait().unwrap().is_none() {
-        if start.elapsed() > Duration::from_secs(secs) {
-            child.kill().unwrap();
-            panic!("still running after {secs} s: {cmd:?}");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    child.wait_with_output().unwrap()
+    output_within(cmd, Duration::from_secs(secs))
 }
 
 fn animate_cmd() -> Command {
@@ -129,21 +102,11 @@ fn a_signal_ends_a_run_whose_stdout_reader_never_reads() {
             .spawn()
             .unwrap();
         std::thread::sleep(Duration::from_millis(700));
-        let sent = Instant::now();
-        let ok = Command::new("kill")
-            .args(["-s", sig, &child.id().to_string()])
-            .status();
-        assert!(ok.unwrap().success());
-        while child.try_wait().unwrap().is_none() && sent.elapsed() < Duration::from_secs(5) {
-            std::thread::sleep(Duration::from_millis(10));
-        }
-        let took = sent.elapsed();
-        let _ = child.kill();
-        let status = child.wait().unwrap();
-        assert_eq!(status.code(), Some(code), "SIG{sig}");
+        signal(&child, sig);
+        let (status, took) = wait_within(&mut child, Duration::from_secs(5));
+        assert_eq!(status, Some(code), "SIG{sig}");
         assert!(took < Duration::from_secs(1), "SIG{sig}: {took:?}");
-        let mut err = String::new();
-        std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+        let err = stderr_of(&mut child);
         assert!(
             err.contains("cannot be resumed") && !err.contains("completes the run"),
             "{err}"
@@ -195,7 +158,7 @@ fn one_folder_one_run_and_no_overwriting_another_manifests_frames() {
     let (dir, _) = project(&circle_manifest(""));
     let a = raw_manifest(dir.path(), "a.toml", 4000, 8.0);
     let b = raw_manifest(dir.path(), "b.toml", 12, 9.0);
-    let mut first = spawn(&[a.as_os_str()]);
+    let mut first = spawn_animate(&a, &[]);
     let frames = dir.path().join("frames");
     let start = Instant::now();
     while !frames.join(".whitted-record/frame_0000.raw.txt").exists() {

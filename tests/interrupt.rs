@@ -3,56 +3,15 @@
 
 mod support;
 
-use std::io::Read;
-use std::process::{Child, Command, Stdio};
-use std::time::{Duration, Instant};
+use std::process::Child;
+use std::time::Duration;
 use support::*;
 
 /// Frames that take many seconds each (two threads): 1080p at 4×4 samples.
 const HEAVY: &str = "\n[render]\nwidth = 1920\nheight = 1080\nsamples = 4\n";
 
 fn spawn(manifest: &std::path::Path) -> Child {
-    Command::new(assert_cmd::cargo::cargo_bin("animate"))
-        .arg(manifest)
-        .args(["--threads", "2"])
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap()
-}
-
-fn signal(child: &Child, sig: &str) {
-    let ok = Command::new("kill")
-        .args(["-s", sig, &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(ok.success());
-}
-
-fn stderr(child: &mut Child) -> String {
-    let mut err = String::new();
-    child
-        .stderr
-        .take()
-        .unwrap()
-        .read_to_string(&mut err)
-        .unwrap();
-    err
-}
-
-/// Waits for the child, at most `limit`; kills it and fails past that.
-fn wait_within(child: &mut Child, limit: Duration) -> (Option<i32>, Duration) {
-    let start = Instant::now();
-    loop {
-        if let Some(status) = child.try_wait().unwrap() {
-            return (status.code(), start.elapsed());
-        }
-        if start.elapsed() > limit {
-            let _ = child.kill();
-            panic!("still running {limit:?} after the signal");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    }
+    spawn_animate(manifest, &["--threads", "2"])
 }
 
 #[test]
@@ -65,7 +24,7 @@ fn sigint_stops_a_heavy_frame_between_rows_and_says_so() {
     let (code, took) = wait_within(&mut child, Duration::from_secs(5));
     assert_eq!(code, Some(130));
     assert!(took < Duration::from_secs(2), "took {took:?}");
-    let err = stderr(&mut child);
+    let err = stderr_of(&mut child);
     let line = err.lines().find(|l| l.contains("stopping: ")).unwrap_or("");
     let n: usize = line
         .split("stopping: ")
@@ -95,6 +54,6 @@ fn a_second_signal_ends_the_process_at_once() {
     let (code, took) = wait_within(&mut child, Duration::from_secs(5));
     assert_eq!(code, Some(130), "the second signal's 128 + 2");
     assert!(took < Duration::from_millis(500), "took {took:?}");
-    let err = stderr(&mut child);
+    let err = stderr_of(&mut child);
     assert!(err.contains("stopping: "), "{err}");
 }

@@ -316,12 +316,7 @@ fn the_scene_file_is_watched_and_may_vanish() {
 fn ctrl_c_ends_it_with_130() {
     let (_dir, _m, mut v) = viewer("");
     assert_eq!(v.get("/api/state").status, 200);
-    let pid = v.child.id().to_string();
-    assert!(std::process::Command::new("kill")
-        .args(["-INT", &pid])
-        .status()
-        .unwrap()
-        .success());
+    signal(&v.child, "INT");
     let status = v.child.wait().unwrap();
     assert_eq!(status.code(), Some(130));
 }

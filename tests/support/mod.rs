@@ -1,7 +1,12 @@
 //! Shared by the `animate` integration tests: a small scene, manifests written into a
-//! temporary folder, helpers to run the built binaries and read their frames and folders.
+//! temporary folder, helpers to run the built binaries and read their frames and folders;
+//! processes steered by signals and deadlines are in `process`.
 
 #![allow(dead_code)]
+
+pub mod process;
+#[allow(unused_imports)]
+pub use process::*;
 
 use assert_cmd::Command;
 use std::path::{Path, PathBuf};

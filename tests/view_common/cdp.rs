@@ -11,6 +11,7 @@ use tungstenite::stream::MaybeTlsStream;
 use tungstenite::{Message, WebSocket};
 
 /// `chromium` from PATH (or /usr/bin), or `None` after the test skipped (tests/skip).
+#[allow(unused_imports)]
 pub use crate::skip::chromium;
 
 /// A headless Chromium with one page, ended when dropped.
