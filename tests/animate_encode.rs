@@ -80,8 +80,18 @@ fn an_interrupted_or_stopped_video_leaves_the_previous_one_whole() {
             .spawn()
             .unwrap();
         std::thread::sleep(Duration::from_millis(800));
+        let mut stopped = Vec::new();
         if stop_ffmpeg {
-            for c in children(child.id()) {
+            // The encoder (`ffmpeg … -f rawvideo … -i -`), not the short probe before it.
+            let found = poll_until(Duration::from_secs(30), || {
+                stopped = children(child.id())
+                    .into_iter()
+                    .filter(|&c| cmdline(c).contains("rawvideo"))
+                    .collect();
+                !stopped.is_empty()
+            });
+            assert!(found.is_some(), "animate never started its ffmpeg encoder");
+            for &c in &stopped {
                 signal_pid(c, "STOP");
             }
             std::thread::sleep(Duration::from_millis(300));
@@ -104,6 +114,14 @@ fn an_interrupted_or_stopped_video_leaves_the_previous_one_whole() {
             "SIG{sig}: the previous video changed"
         );
         assert_eq!(hidden(dir.path()), Vec::<String>::new(), "SIG{sig}");
+        // The stopped encoder did not outlive the run.
+        for pid in stopped {
+            let gone = poll_until(Duration::from_secs(10), || !alive(pid));
+            assert!(
+                gone.is_some(),
+                "SIG{sig}: the stopped ffmpeg {pid} is still there"
+            );
+        }
     }
 }
 
