@@ -222,20 +222,32 @@ fn a_hundred_requests_at_once() {
 
 #[test]
 fn a_newer_request_supersedes_an_older_one() {
-    // A slow whole frame (640×480, 3×3 samples) holds the client's slot; of the two
-    // requests that come while it renders, the older is superseded and only the newer
+    // A slow whole frame (1280×960, 4×4 samples: seconds) holds the client's slot; of the
+    // two requests that come while it renders, the older is superseded and only the newer
     // renders.
-    let (_dir, _m, v) = viewer("\n[render]\nwidth = 640\nheight = 480\nsamples = 3\n");
+    let (_dir, _m, v) = viewer("\n[render]\nwidth = 1280\nheight = 960\nsamples = 4\n");
     let port = v.port;
     let host = format!("127.0.0.1:{port}");
     let send = |target: String| {
         let host = host.clone();
         std::thread::spawn(move || get(port, &target, Some(&host)).status)
     };
+    let pid = v.child.id();
+    let idle = cpu_time(pid);
     let slow = send("/api/frame?n=1&client=s".into());
-    std::thread::sleep(Duration::from_millis(150));
+    // The slot is held once the server renders: an idle server spends no CPU.
+    let busy = poll_until(Duration::from_secs(60), || {
+        cpu_time(pid) > idle + Duration::from_millis(300)
+    });
+    assert!(busy.is_some(), "the server never started the slow frame");
     let older = send("/api/frame?n=2&scale=2&client=s".into());
-    std::thread::sleep(Duration::from_millis(150));
+    // The older request must have taken its ticket before the newer one comes (nothing
+    // tells when it has: a second is far more than a request's parsing takes).
+    std::thread::sleep(Duration::from_secs(1));
+    assert!(
+        !slow.is_finished(),
+        "the slow frame ended before the newer request: nothing is tested"
+    );
     let newer = send("/api/frame?n=3&scale=2&client=s".into());
     // Another client is not held up by this one's queue.
     let other = send("/api/frame?n=3&scale=8&client=other".into());
