@@ -9,7 +9,7 @@ mod skip;
 mod support;
 
 use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 use support::*;
 
 /// `codec_name,nb_read_frames` of the video's first stream, as ffprobe counts them.
@@ -97,12 +97,16 @@ fn an_interrupted_or_stopped_video_leaves_the_previous_one_whole() {
             std::thread::sleep(Duration::from_millis(300));
         }
         signal(&child, sig);
-        let (status, took) = wait_within(&mut child, Duration::from_secs(5));
+        let (status, took) = wait_within(&mut child, Duration::from_secs(60));
         let err = stderr_of(&mut child);
         assert_eq!(status, Some(code), "SIG{sig}: {err}");
-        assert!(
-            took < Duration::from_secs(1),
-            "SIG{sig} (ffmpeg stopped: {stop_ffmpeg}): {took:?}"
+        // Within a second (the target); waiting for a stopped ffmpeg or for the 100000
+        // frames would never end.
+        timed(
+            &format!("SIG{sig} to the exit (ffmpeg stopped: {stop_ffmpeg})"),
+            took,
+            Duration::from_secs(1),
+            Duration::from_secs(10),
         );
         assert!(
             err.contains("cannot be resumed") && !err.contains("completes the run"),

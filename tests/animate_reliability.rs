@@ -103,9 +103,15 @@ fn a_signal_ends_a_run_whose_stdout_reader_never_reads() {
             .unwrap();
         std::thread::sleep(Duration::from_millis(700));
         signal(&child, sig);
-        let (status, took) = wait_within(&mut child, Duration::from_secs(5));
+        let (status, took) = wait_within(&mut child, Duration::from_secs(60));
         assert_eq!(status, Some(code), "SIG{sig}");
-        assert!(took < Duration::from_secs(1), "SIG{sig}: {took:?}");
+        // Within a second (the target); a run that waits for its reader never ends.
+        timed(
+            &format!("SIG{sig} to the exit"),
+            took,
+            Duration::from_secs(1),
+            Duration::from_secs(10),
+        );
         let err = stderr_of(&mut child);
         assert!(
             err.contains("cannot be resumed") && !err.contains("completes the run"),

@@ -274,7 +274,7 @@ fn live_reload_locates_a_bad_edit_exactly_as_the_command_line() {
     let before = v.get("/api/frame?n=3&format=raw&client=r").body;
     // A bad value: what `animate status` says of the same file is what the page shows.
     std::fs::write(&manifest, good.replace("radius = 8.0", "radius = -8.0")).unwrap();
-    let s = v.wait_state(Duration::from_secs(2), |s| !s["error"].is_null());
+    let s = v.wait_reload("bad manifest edit → error", |s| !s["error"].is_null());
     assert!(s["generation"].as_u64() > Some(g0));
     let cli = animate().arg("status").arg(&manifest).output().unwrap();
     let said = String::from_utf8_lossy(&cli.stderr);
@@ -287,7 +287,7 @@ fn live_reload_locates_a_bad_edit_exactly_as_the_command_line() {
     let tmp = dir.path().join(".anim.toml.swp");
     std::fs::write(&tmp, good.replace("radius = 8.0", "radius = 9.0")).unwrap();
     std::fs::rename(&tmp, &manifest).unwrap();
-    let s = v.wait_state(Duration::from_secs(2), |s| s["error"].is_null());
+    let s = v.wait_reload("rename-over save → fixed", |s| s["error"].is_null());
     assert!(s["generation"].as_u64() > Some(g0 + 1));
     assert_ne!(v.get("/api/frame?n=3&format=raw&client=r").body, before);
 }
@@ -299,7 +299,7 @@ fn the_scene_file_is_watched_and_may_vanish() {
     let text = std::fs::read_to_string(&scene).unwrap();
     let before = v.get("/api/frame?n=0&format=raw&client=d").body;
     std::fs::remove_file(&scene).unwrap();
-    let s = v.wait_state(Duration::from_secs(2), |s| !s["error"].is_null());
+    let s = v.wait_reload("scene deleted → error", |s| !s["error"].is_null());
     let e = s["error"].as_str().unwrap();
     assert!(
         e.starts_with("animate: ") && e.contains("anim.toml:1:9: scene: cannot read"),
@@ -313,11 +313,11 @@ fn the_scene_file_is_watched_and_may_vanish() {
     );
     // Back, with a brighter light: the error clears and the frame follows the file.
     std::fs::write(&scene, text.replace("0.9\n-6", "0.3\n-6")).unwrap();
-    v.wait_state(Duration::from_secs(2), |s| s["error"].is_null());
+    v.wait_reload("scene back → fixed", |s| s["error"].is_null());
     assert_ne!(v.get("/api/frame?n=0&format=raw&client=d").body, before);
     // A scene edit that breaks it: located in the scene file.
     std::fs::write(&scene, text.replacen("1.0  -1.3", "-1.0  -1.3", 1)).unwrap();
-    let s = v.wait_state(Duration::from_secs(2), |s| !s["error"].is_null());
+    let s = v.wait_reload("broken scene → error", |s| !s["error"].is_null());
     assert!(
         s["error"].as_str().unwrap().contains("scene.txt:6:1"),
         "{s}"
