@@ -300,3 +300,11 @@ fn measure_the_orbit() {
     println!("playing the orbit at a quarter size: {fps:.1} frames/s");
     assert!(fps > 0.0);
 }
+
+#[test]
+fn base64_by_hand() {
+    use view_common::cdp::base64;
+    assert_eq!(base64("TWFu"), b"Man");
+    assert_eq!(base64("TWE="), b"Ma");
+    assert_eq!(base64("TQ=="), b"M");
+}
