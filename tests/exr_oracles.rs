@@ -14,14 +14,14 @@ use skip::have;
 
 /// A 48×36 render of the test scene with every pass, as float EXR, and its PNG.
 fn render_all(dir: &Path, samples: &str) -> (PathBuf, PathBuf) {
-    std::fs::write(dir.join("scene.txt"), scene_with_eye([1.0, 3.0, 8.0])).unwrap();
+    let scene = scene_txt(dir, [1.0, 3.0, 8.0]);
     let (exr, png) = (dir.join("f.exr"), dir.join("f.png"));
     for (out, extra) in [
         (&exr, vec!["--passes", "all", "--exr-depth", "float"]),
         (&png, vec![]),
     ] {
         raytrace()
-            .arg(dir.join("scene.txt"))
+            .arg(&scene)
             .arg("-o")
             .arg(out)
             .args(["--size", "48x36", "--samples", samples, "-q"])

@@ -33,6 +33,13 @@ pub fn scene_with_eye(eye: [f64; 3]) -> String {
     SCENE.replace("{EYE}", &format!("{:?} {:?} {:?}", eye[0], eye[1], eye[2]))
 }
 
+/// Writes `dir/scene.txt`, the scene with its camera at `eye`; its path.
+pub fn scene_txt(dir: &Path, eye: [f64; 3]) -> PathBuf {
+    let path = dir.join("scene.txt");
+    std::fs::write(&path, scene_with_eye(eye)).unwrap();
+    path
+}
+
 /// A 12-frame circle manifest over `scene.txt` in the same folder; `extra` is appended.
 pub fn circle_manifest(extra: &str) -> String {
     format!(
