@@ -22,8 +22,9 @@ fn interrupted_run_resumes(sig: &str, code: i32) {
     render_into(&manifest, &whole, &[]);
     let mut child = spawn(&manifest, &[]);
     std::thread::sleep(Duration::from_millis(400));
-    let sent = Instant::now();
+    // `signal` first waits until animate catches it (a fixed sleep raced its start).
     signal(&child, sig);
+    let sent = Instant::now();
     let status = child.wait().unwrap();
     let took = sent.elapsed();
     assert_eq!(status.code(), Some(code));

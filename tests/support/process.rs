@@ -23,8 +23,21 @@ pub fn spawn_animate(manifest: impl AsRef<OsStr>, args: &[&str]) -> Child {
         .expect("animate starts")
 }
 
-/// Sends `sig` (`INT`, `TERM`, `STOP`, …) to the process `pid`, through kill(1).
+/// Sends `sig` (`INT`, `TERM`, `STOP`, …) to the process `pid`, through kill(1). `INT`
+/// and `TERM` wait first (up to 30 s) until the process catches them: a process that is
+/// still starting has the default action, death by the signal, not the 130 or 143 its
+/// handler exits with; on a loaded machine a fixed sleep is not enough to be past that.
 pub fn signal_pid(pid: u32, sig: &str) {
+    if let Some(number) = match sig {
+        "INT" => Some(2),
+        "TERM" => Some(15),
+        _ => None,
+    } {
+        let ready = poll_until(Duration::from_secs(30), || {
+            !alive(pid) || catches(pid, number)
+        });
+        assert!(ready.is_some(), "process {pid} never caught SIG{sig}");
+    }
     let ok = Command::new("kill")
         .args(["-s", sig, &pid.to_string()])
         .status()
@@ -154,6 +167,16 @@ pub fn cpu_time(pid: u32) -> Duration {
         .sum();
     // USER_HZ is 100 on every Linux the tests run on.
     Duration::from_millis(ticks * 10)
+}
+
+/// Whether the process `pid` has a handler for signal `number` (its `SigCgt` mask).
+pub fn catches(pid: u32, number: u32) -> bool {
+    let status = std::fs::read_to_string(format!("/proc/{pid}/status")).unwrap_or_default();
+    status
+        .lines()
+        .find_map(|l| l.strip_prefix("SigCgt:"))
+        .and_then(|mask| u64::from_str_radix(mask.trim(), 16).ok())
+        .is_some_and(|mask| mask & (1 << (number - 1)) != 0)
 }
 
 /// Whether the process `pid` still exists (a zombie not yet reaped counts as gone).
