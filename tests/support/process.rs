@@ -133,13 +133,24 @@ pub fn peak_kib_until_exit(mut child: Child) -> (u64, ExitStatus) {
     }
 }
 
-/// The child processes of `pid` (from /proc).
+/// The child processes of `pid`, started by any of its threads (from /proc: each
+/// thread's `children` lists only what that thread started).
 pub fn children(pid: u32) -> Vec<u32> {
-    let text =
-        std::fs::read_to_string(format!("/proc/{pid}/task/{pid}/children")).unwrap_or_default();
-    text.split_whitespace()
-        .filter_map(|p| p.parse().ok())
-        .collect()
+    let Ok(tasks) = std::fs::read_dir(format!("/proc/{pid}/task")) else {
+        return Vec::new();
+    };
+    let mut out: Vec<u32> = tasks
+        .filter_map(|t| t.ok())
+        .filter_map(|t| std::fs::read_to_string(t.path().join("children")).ok())
+        .flat_map(|text| {
+            text.split_whitespace()
+                .filter_map(|p| p.parse().ok())
+                .collect::<Vec<u32>>()
+        })
+        .collect();
+    out.sort_unstable();
+    out.dedup();
+    out
 }
 
 /// The command line of the process `pid`, its arguments joined by spaces ("" once gone).
