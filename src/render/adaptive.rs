@@ -6,7 +6,7 @@
 //!
 //! ```toml
 //! [render]
-//! antialias = { mode = "adaptive", threshold = 0.5, depth = 3 }   # raytrace --aa adaptive:0.5:3
+//! antialias = { mode = "adaptive", threshold = 0.5, depth = 2 }   # raytrace --aa adaptive:0.5:2
 //! ```
 //!
 //! Determinism. Every sample sits on the lattice of pitch 2^−D and is named by its
@@ -73,7 +73,7 @@ impl Adaptive {
     /// POV-Ray's `+AM2 +A0.3 +R3` are to its own (benches/pov/adaptive.sh).
     pub const DEFAULT: Adaptive = Adaptive {
         threshold: 0.5,
-        depth: 3,
+        depth: 2,
         measure: Measure::Sum,
     };
 

@@ -1,5 +1,5 @@
 //! The command line's spelling of adaptive anti-aliasing, `adaptive[:T[:D[:MEASURE]]]`
-//! (`raytrace --aa adaptive:0.5:3`; MEASURE `sum`, the default, or `max`, for the
+//! (`raytrace --aa adaptive:0.5:2`; MEASURE `sum`, the default, or `max`, for the
 //! measurements of benches/pov/adaptive.sh), and the bounds every spelling obeys:
 //! 0 ≤ T ≤ 3, 0 ≤ D ≤ `MAX_DEPTH`.
 
@@ -11,7 +11,7 @@ use thiserror::Error;
 #[derive(Debug, Error, PartialEq)]
 pub enum AntialiasError {
     /// Not `adaptive[:T[:D]]`.
-    #[error("expected adaptive[:THRESHOLD[:DEPTH[:sum|max]]], e.g. adaptive:0.5:3, found {0:?}")]
+    #[error("expected adaptive[:THRESHOLD[:DEPTH[:sum|max]]], e.g. adaptive:0.5:2, found {0:?}")]
     Syntax(String),
     /// A threshold out of 0..=3 (or not a number).
     #[error("the threshold must be a number from 0 to 3, found {0}")]
