@@ -5,21 +5,12 @@
 //! `animate encode` checks the folder is complete and up to date first. Without ffmpeg
 //! these tests say "skipped" and pass, except under CI.
 
+mod skip;
 mod support;
 
 use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 use support::*;
-
-fn have_ffmpeg() -> bool {
-    let found = Command::new("ffprobe").arg("-version").output().is_ok()
-        && Command::new("ffmpeg").arg("-version").output().is_ok();
-    if !found {
-        assert!(std::env::var_os("CI").is_none(), "CI must install ffmpeg");
-        eprintln!("skipped: ffmpeg/ffprobe not installed");
-    }
-    found
-}
 
 /// `codec_name,nb_read_frames` of the video's first stream, as ffprobe counts them.
 fn probe(file: &std::path::Path) -> String {
@@ -37,26 +28,17 @@ fn probe(file: &std::path::Path) -> String {
     String::from_utf8_lossy(&out.stdout).trim().to_string()
 }
 
-/// The child processes of `pid` (from /proc).
-fn children(pid: u32) -> Vec<u32> {
-    let text =
-        std::fs::read_to_string(format!("/proc/{pid}/task/{pid}/children")).unwrap_or_default();
-    text.split_whitespace()
-        .filter_map(|p| p.parse().ok())
-        .collect()
-}
-
+/// The hidden temporaries of a video (`.v.mp4.XXXX`) in `dir`.
 fn hidden(dir: &std::path::Path) -> Vec<String> {
-    std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+    entries(dir)
+        .into_iter()
         .filter(|n| n.starts_with('.') && n.contains(".mp4."))
         .collect()
 }
 
 #[test]
 fn an_interrupted_or_stopped_video_leaves_the_previous_one_whole() {
-    if !have_ffmpeg() {
+    if !skip::ffmpeg() {
         return;
     }
     let (dir, manifest) = project(&circle_manifest(""));
@@ -98,34 +80,33 @@ fn an_interrupted_or_stopped_video_leaves_the_previous_one_whole() {
             .spawn()
             .unwrap();
         std::thread::sleep(Duration::from_millis(800));
+        let mut stopped = Vec::new();
         if stop_ffmpeg {
-            for c in children(child.id()) {
-                assert!(Command::new("kill")
-                    .args(["-s", "STOP", &c.to_string()])
-                    .status()
-                    .unwrap()
-                    .success());
+            // The encoder (`ffmpeg … -f rawvideo … -i -`), not the short probe before it.
+            let found = poll_until(Duration::from_secs(30), || {
+                stopped = children(child.id())
+                    .into_iter()
+                    .filter(|&c| cmdline(c).contains("rawvideo"))
+                    .collect();
+                !stopped.is_empty()
+            });
+            assert!(found.is_some(), "animate never started its ffmpeg encoder");
+            for &c in &stopped {
+                signal_pid(c, "STOP");
             }
             std::thread::sleep(Duration::from_millis(300));
         }
-        let sent = Instant::now();
-        assert!(Command::new("kill")
-            .args(["-s", sig, &child.id().to_string()])
-            .status()
-            .unwrap()
-            .success());
-        while child.try_wait().unwrap().is_none() && sent.elapsed() < Duration::from_secs(5) {
-            std::thread::sleep(Duration::from_millis(10));
-        }
-        let took = sent.elapsed();
-        let _ = child.kill();
-        let status = child.wait().unwrap();
-        let mut err = String::new();
-        std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
-        assert_eq!(status.code(), Some(code), "SIG{sig}: {err}");
-        assert!(
-            took < Duration::from_secs(1),
-            "SIG{sig} (ffmpeg stopped: {stop_ffmpeg}): {took:?}"
+        signal(&child, sig);
+        let (status, took) = wait_within(&mut child, Duration::from_secs(60));
+        let err = stderr_of(&mut child);
+        assert_eq!(status, Some(code), "SIG{sig}: {err}");
+        // Within a second (the target); waiting for a stopped ffmpeg or for the 100000
+        // frames would never end.
+        timed(
+            &format!("SIG{sig} to the exit (ffmpeg stopped: {stop_ffmpeg})"),
+            took,
+            Duration::from_secs(1),
+            Duration::from_secs(10),
         );
         assert!(
             err.contains("cannot be resumed") && !err.contains("completes the run"),
@@ -137,12 +118,20 @@ fn an_interrupted_or_stopped_video_leaves_the_previous_one_whole() {
             "SIG{sig}: the previous video changed"
         );
         assert_eq!(hidden(dir.path()), Vec::<String>::new(), "SIG{sig}");
+        // The stopped encoder did not outlive the run.
+        for pid in stopped {
+            let gone = poll_until(Duration::from_secs(10), || !alive(pid));
+            assert!(
+                gone.is_some(),
+                "SIG{sig}: the stopped ffmpeg {pid} is still there"
+            );
+        }
     }
 }
 
 #[test]
 fn encode_checks_the_folder_then_makes_the_video_with_the_options() {
-    if !have_ffmpeg() {
+    if !skip::ffmpeg() {
         return;
     }
     let (dir, manifest) = project(&circle_manifest(""));

@@ -11,21 +11,7 @@ use support::*;
 const SLOW: &str = "\n[render]\nwidth = 320\nheight = 240\nsamples = 3\n";
 
 fn spawn(manifest: &std::path::Path, args: &[&str]) -> std::process::Child {
-    Command::new(assert_cmd::cargo::cargo_bin("animate"))
-        .arg(manifest)
-        .args(args)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap()
-}
-
-fn signal(child: &std::process::Child, sig: &str) {
-    let ok = Command::new("kill")
-        .args(["-s", sig, &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(ok.success());
+    spawn_animate(manifest, args)
 }
 
 /// Sends `sig` mid-run; checks the exit status, that no temporary file is left, that
@@ -36,25 +22,24 @@ fn interrupted_run_resumes(sig: &str, code: i32) {
     render_into(&manifest, &whole, &[]);
     let mut child = spawn(&manifest, &[]);
     std::thread::sleep(Duration::from_millis(400));
-    let sent = Instant::now();
+    // `signal` first waits until animate catches it (a fixed sleep raced its start).
     signal(&child, sig);
+    let sent = Instant::now();
     let status = child.wait().unwrap();
     let took = sent.elapsed();
     assert_eq!(status.code(), Some(code));
     assert!(took < Duration::from_secs(3), "took {took:?} to stop");
-    let mut err = String::new();
-    std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+    let err = stderr_of(&mut child);
     assert!(
         err.contains("interrupted") && err.contains("--resume"),
         "{err}"
     );
     let frames = dir.path().join("frames");
-    let leftovers: Vec<String> = std::fs::read_dir(&frames)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+    let temps: Vec<String> = entries(&frames)
+        .into_iter()
         .filter(|n| n.ends_with(".tmp"))
         .collect();
-    assert!(leftovers.is_empty(), "{leftovers:?}");
+    assert!(temps.is_empty(), "{temps:?}");
     let done = files(&frames);
     assert!(done.len() < 12, "the signal came too late to test anything");
     for (name, bytes) in &done {
@@ -198,33 +183,11 @@ fn two_resume_runs_racing_on_the_same_frames() {
     }
     let frames = dir.path().join("frames");
     assert_eq!(files(&frames), files(&dir.path().join("single")));
-    let temps = std::fs::read_dir(&frames).unwrap().filter(|e| {
-        e.as_ref()
-            .unwrap()
-            .file_name()
-            .to_string_lossy()
-            .ends_with(".tmp")
-    });
-    assert_eq!(temps.count(), 0);
-}
-
-/// The peak resident memory (VmHWM, KiB) of a running process, polled until it exits.
-fn peak_kib_until_exit(mut child: std::process::Child) -> (u64, std::process::ExitStatus) {
-    let status_file = format!("/proc/{}/status", child.id());
-    let mut peak = 0;
-    loop {
-        if let Ok(text) = std::fs::read_to_string(&status_file) {
-            let hwm = text
-                .lines()
-                .find_map(|l| l.strip_prefix("VmHWM:"))
-                .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<u64>().ok());
-            peak = peak.max(hwm.unwrap_or(0));
-        }
-        if let Some(status) = child.try_wait().unwrap() {
-            return (peak, status);
-        }
-        std::thread::sleep(Duration::from_millis(5));
-    }
+    let temps: Vec<String> = entries(&frames)
+        .into_iter()
+        .filter(|n| n.ends_with(".tmp"))
+        .collect();
+    assert!(temps.is_empty(), "{temps:?}");
 }
 
 #[test]

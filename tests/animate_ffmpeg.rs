@@ -8,15 +8,6 @@ mod support;
 use std::process::{Command, Stdio};
 use support::*;
 
-fn have_ffmpeg() -> bool {
-    let found = Command::new("ffprobe").arg("-version").output().is_ok()
-        && Command::new("ffmpeg").arg("-version").output().is_ok();
-    if !found {
-        skip::skip("ffmpeg/ffprobe not installed");
-    }
-    found
-}
-
 /// The number of video frames ffprobe counts in `file`.
 fn frame_count(file: &std::path::Path) -> u32 {
     let out = Command::new("ffprobe")
@@ -38,7 +29,7 @@ fn frame_count(file: &std::path::Path) -> u32 {
 
 #[test]
 fn video_flag_makes_an_mp4_with_every_frame() {
-    if !have_ffmpeg() {
+    if !skip::ffmpeg() {
         return;
     }
     let (dir, manifest) = project(&circle_manifest(""));
@@ -54,7 +45,7 @@ fn video_flag_makes_an_mp4_with_every_frame() {
 
 #[test]
 fn stdout_raw_piped_into_ffmpeg() {
-    if !have_ffmpeg() {
+    if !skip::ffmpeg() {
         return;
     }
     let (dir, manifest) = project(&circle_manifest(""));
@@ -88,7 +79,7 @@ fn stdout_raw_piped_into_ffmpeg() {
 
 #[test]
 fn a_video_target_ffmpeg_cannot_write_is_refused_before_any_frame() {
-    if !have_ffmpeg() {
+    if !skip::ffmpeg() {
         return;
     }
     let (dir, manifest) = project(&circle_manifest(""));

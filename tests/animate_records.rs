@@ -5,18 +5,8 @@
 mod support;
 
 use std::path::Path;
-use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 use support::*;
-
-fn spawn(args: &[&std::ffi::OsStr]) -> Child {
-    Command::new(assert_cmd::cargo::cargo_bin("animate"))
-        .args(args)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap()
-}
 
 /// A small deterministic generator (a 64-bit LCG, Knuth's MMIX constants).
 struct Lcg(u64);
@@ -75,19 +65,14 @@ fn kill_9_and_concurrent_runs_never_leave_a_lying_raw_record() {
         let name = format!("trial {trial} (seed 23)");
         if trial % 2 == 0 {
             // B over A's folder, killed after 5–90 ms.
-            let mut child = spawn(&[
-                b.as_os_str(),
-                "--force".as_ref(),
-                "--threads".as_ref(),
-                "2".as_ref(),
-            ]);
+            let mut child = spawn_animate(&b, &["--force", "--threads", "2"]);
             std::thread::sleep(Duration::from_millis(5 + rng.below(86)));
             child.kill().unwrap();
             child.wait().unwrap();
         } else {
             // A and B at once into one folder: the lock lets one of them in.
-            let mut one = spawn(&[b.as_os_str(), "--force".as_ref()]);
-            let mut two = spawn(&[a.as_os_str(), "--force".as_ref()]);
+            let mut one = spawn_animate(&b, &["--force"]);
+            let mut two = spawn_animate(&a, &["--force"]);
             std::thread::sleep(Duration::from_millis(rng.below(60)));
             if rng.below(2) == 0 {
                 one.kill().unwrap();
@@ -147,7 +132,7 @@ fn damage_inside_a_png_is_seen_and_verify_decodes() {
     for b in &mut bytes[at + 4 + 2..at + 4 + len - 4] {
         *b = 0xFF;
     }
-    let crc = crc32(&bytes[at..at + 4 + len]);
+    let crc = crc32fast::hash(&bytes[at..at + 4 + len]);
     bytes[at + 4 + len..at + 8 + len].copy_from_slice(&crc.to_be_bytes());
     std::fs::write(&f6, bytes).unwrap();
     let out = animate().arg("status").arg(&manifest).output().unwrap();
@@ -181,25 +166,4 @@ fn damage_inside_a_png_is_seen_and_verify_decodes() {
         .arg(&manifest)
         .assert()
         .success();
-}
-
-/// CRC-32 (ISO-HDLC, PNG's), bit by bit.
-fn crc32(bytes: &[u8]) -> u32 {
-    let mut c = 0xFFFF_FFFFu32;
-    for &b in bytes {
-        c ^= u32::from(b);
-        for _ in 0..8 {
-            c = if c & 1 != 0 {
-                0xEDB8_8320 ^ (c >> 1)
-            } else {
-                c >> 1
-            };
-        }
-    }
-    !c
-}
-
-#[test]
-fn png_crc_of_the_test_helper() {
-    assert_eq!(crc32(b"IEND"), 0xAE42_6082);
 }

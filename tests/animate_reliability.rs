@@ -2,42 +2,16 @@
 //! non-regular inputs, stalled consumers, frames past a shortened sequence, one folder for
 //! one manifest, a full disk, and the smaller faults of docs/reliability.md.
 
+mod skip;
 mod support;
 
-use std::path::Path;
-use std::process::{Child, Command, Stdio};
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 use support::*;
 
-fn spawn(args: &[&std::ffi::OsStr]) -> Child {
-    Command::new(assert_cmd::cargo::cargo_bin("animate"))
-        .args(args)
-        .stdout(Stdio::null())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap()
-}
-
-fn mkfifo(path: &Path) {
-    assert!(Command::new("mkfifo").arg(path).status().unwrap().success());
-}
-
-/// Runs `cmd` with a deadline: a hang fails instead of blocking the suite.
+/// Runs `cmd` with a deadline of `secs` seconds: a hang fails instead of blocking the suite.
 fn within(cmd: &mut Command, secs: u64) -> std::process::Output {
-    let mut child = cmd
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let start = Instant::now();
-    while child.try_wait().unwrap().is_none() {
-        if start.elapsed() > Duration::from_secs(secs) {
-            child.kill().unwrap();
-            panic!("still running after {secs} s: {cmd:?}");
-        }
-        std::thread::sleep(Duration::from_millis(20));
-    }
-    child.wait_with_output().unwrap()
+    output_within(cmd, Duration::from_secs(secs))
 }
 
 fn animate_cmd() -> Command {
@@ -128,21 +102,17 @@ fn a_signal_ends_a_run_whose_stdout_reader_never_reads() {
             .spawn()
             .unwrap();
         std::thread::sleep(Duration::from_millis(700));
-        let sent = Instant::now();
-        let ok = Command::new("kill")
-            .args(["-s", sig, &child.id().to_string()])
-            .status();
-        assert!(ok.unwrap().success());
-        while child.try_wait().unwrap().is_none() && sent.elapsed() < Duration::from_secs(5) {
-            std::thread::sleep(Duration::from_millis(10));
-        }
-        let took = sent.elapsed();
-        let _ = child.kill();
-        let status = child.wait().unwrap();
-        assert_eq!(status.code(), Some(code), "SIG{sig}");
-        assert!(took < Duration::from_secs(1), "SIG{sig}: {took:?}");
-        let mut err = String::new();
-        std::io::Read::read_to_string(&mut child.stderr.take().unwrap(), &mut err).unwrap();
+        signal(&child, sig);
+        let (status, took) = wait_within(&mut child, Duration::from_secs(60));
+        assert_eq!(status, Some(code), "SIG{sig}");
+        // Within a second (the target); a run that waits for its reader never ends.
+        timed(
+            &format!("SIG{sig} to the exit"),
+            took,
+            Duration::from_secs(1),
+            Duration::from_secs(10),
+        );
+        let err = stderr_of(&mut child);
         assert!(
             err.contains("cannot be resumed") && !err.contains("completes the run"),
             "{err}"
@@ -194,7 +164,7 @@ fn one_folder_one_run_and_no_overwriting_another_manifests_frames() {
     let (dir, _) = project(&circle_manifest(""));
     let a = raw_manifest(dir.path(), "a.toml", 4000, 8.0);
     let b = raw_manifest(dir.path(), "b.toml", 12, 9.0);
-    let mut first = spawn(&[a.as_os_str()]);
+    let mut first = spawn_animate(&a, &[]);
     let frames = dir.path().join("frames");
     let start = Instant::now();
     while !frames.join(".whitted-record/frame_0000.raw.txt").exists() {
@@ -305,11 +275,7 @@ fn a_full_disk_names_the_frame_and_leaves_no_temporary() {
         .status()
         .is_ok_and(|s| s.success());
     if !mounted {
-        assert!(
-            std::env::var_os("CI").is_none(),
-            "CI runs as root and can mount a tmpfs"
-        );
-        eprintln!("skipped: cannot mount a small tmpfs here (not root?)");
+        skip::skip("cannot mount a small tmpfs here (not root?); CI runs as root");
         return;
     }
     let out = animate()
@@ -320,7 +286,7 @@ fn a_full_disk_names_the_frame_and_leaves_no_temporary() {
         .output()
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
-    let left: Vec<String> = entries_of(&mnt)
+    let left: Vec<String> = entries(&mnt)
         .into_iter()
         .filter(|n| n.ends_with(".tmp"))
         .collect();
@@ -331,13 +297,6 @@ fn a_full_disk_names_the_frame_and_leaves_no_temporary() {
         "{err}"
     );
     assert!(left.is_empty(), "{left:?}");
-}
-
-fn entries_of(dir: &Path) -> Vec<String> {
-    std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect()
 }
 
 #[test]

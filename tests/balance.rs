@@ -28,7 +28,9 @@ fn balanced_shards_of_a_turn_to_glass_have_equal_predicted_costs() {
             .collect()
     };
     let balanced = sums(&split(&costs, 4));
-    let equal = sums(&[0, 16, 32, 48, 64]);
+    // Four shards of equal frame counts (the last takes the rest).
+    let equal: Vec<usize> = (0..=4).map(|k| k * frames.len() / 4).collect();
+    let equal = sums(&equal);
     let ratio = |s: &[u64]| *s.iter().max().unwrap() as f64 / *s.iter().min().unwrap() as f64;
     assert!(ratio(&balanced) <= 1.10, "balanced {balanced:?}");
     assert!(ratio(&equal) >= 3.0, "equal counts {equal:?}");
@@ -39,21 +41,29 @@ fn balanced_shards_render_every_frame_once_into_the_plain_bytes() {
     // The small manifest of the other farm tests, with a `[render]` size: 12 frames.
     let (dir, manifest) = project(&circle_manifest("\n[render]\nwidth = 48\nheight = 36\n"));
     render_into(&manifest, &dir.path().join("plain"), &[]);
-    let out = dir.path().join("farm");
-    let mut seen = 0;
+    // Each shard into a folder of its own: no frame is in two of them, and together they
+    // are the plain run's files.
+    let mut union = std::collections::BTreeMap::new();
     for k in 0..4 {
         let shard = format!("{k}/4");
+        let out = dir.path().join(format!("shard{k}"));
         animate()
             .arg(&manifest)
             .args(["--shard", &shard, "--balance", "--quiet", "-o"])
             .arg(&out)
             .assert()
             .success();
-        let now = files(&out).len();
-        assert!(now >= seen, "{shard}");
-        seen = now;
+        let mine = files(&out);
+        assert!(!mine.is_empty(), "shard {shard} rendered nothing");
+        for (name, bytes) in mine {
+            assert!(
+                union.insert(name.clone(), bytes).is_none(),
+                "{name} rendered twice (again by shard {shard})"
+            );
+        }
     }
-    assert_eq!(files(&out), files(&dir.path().join("plain")));
+    let union: Vec<(String, Vec<u8>)> = union.into_iter().collect();
+    assert_eq!(union, files(&dir.path().join("plain")));
     // --balance needs a shard.
     animate().arg(&manifest).arg("--balance").assert().code(2);
 }

@@ -4,27 +4,7 @@
 mod support;
 
 use std::process::{Command, Stdio};
-use std::time::Duration;
 use support::*;
-
-/// The peak resident memory (VmHWM) of `child`, polled until it exits, in KiB.
-fn peak_kib_until_exit(mut child: std::process::Child) -> (u64, std::process::ExitStatus) {
-    let status_file = format!("/proc/{}/status", child.id());
-    let mut peak = 0;
-    loop {
-        if let Ok(text) = std::fs::read_to_string(&status_file) {
-            let hwm = text
-                .lines()
-                .find_map(|l| l.strip_prefix("VmHWM:"))
-                .and_then(|v| v.trim().trim_end_matches("kB").trim().parse::<u64>().ok());
-            peak = peak.max(hwm.unwrap_or(0));
-        }
-        if let Some(status) = child.try_wait().unwrap() {
-            return (peak, status);
-        }
-        std::thread::sleep(Duration::from_millis(2));
-    }
-}
 
 /// The peak memory of `animate check` over the first `n` frames of a blessed
 /// 400-frame 160×120 sequence.

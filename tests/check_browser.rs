@@ -6,22 +6,9 @@
 mod skip;
 mod support;
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 use support::*;
-
-/// `chromium` from PATH, or `None` (outside CI) after saying the test skipped.
-fn chromium() -> Option<PathBuf> {
-    let found = std::env::var_os("PATH").and_then(|paths| {
-        std::env::split_paths(&paths)
-            .map(|dir| dir.join("chromium"))
-            .find(|p| p.is_file())
-    });
-    if found.is_none() {
-        skip::skip("chromium not found");
-    }
-    found
-}
 
 /// A screenshot of `page` at `width`×`height`, taken by headless Chromium.
 fn screenshot(browser: &Path, page: &Path, out: &Path, width: u32, height: u32) {
@@ -53,7 +40,9 @@ fn screenshot(browser: &Path, page: &Path, out: &Path, width: u32, height: u32) 
 
 #[test]
 fn report_page_draws_its_pictures_in_chromium() {
-    let Some(browser) = chromium() else { return };
+    let Some(browser) = skip::chromium() else {
+        return;
+    };
     let (dir, manifest) = project(&circle_manifest(
         "\n[check]\nframes = [0, 5]\nreferences = \"refs\"\n",
     ));

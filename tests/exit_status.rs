@@ -26,9 +26,8 @@
 mod support;
 
 use std::os::unix::fs::PermissionsExt;
-use std::path::Path;
 use std::process::{Command, Stdio};
-use std::time::{Duration, Instant};
+use std::time::Duration;
 use support::*;
 
 /// The status and standard error of a finished command.
@@ -38,16 +37,6 @@ fn run(cmd: &mut assert_cmd::Command) -> (Option<i32>, String) {
         out.status.code(),
         String::from_utf8_lossy(&out.stderr).into_owned(),
     )
-}
-
-/// The visible and hidden entries of a folder, sorted.
-fn entries(dir: &Path) -> Vec<String> {
-    let mut names: Vec<String> = std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    names.sort();
-    names
 }
 
 #[test]
@@ -68,17 +57,15 @@ fn raytrace_stopped_by_a_signal_is_128_plus_n() {
             .spawn()
             .unwrap();
         std::thread::sleep(Duration::from_millis(300));
-        let sent = Instant::now();
-        let kill = Command::new("kill")
-            .args(["-s", sig, &child.id().to_string()])
-            .status()
-            .unwrap();
-        assert!(kill.success());
-        let status = child.wait().unwrap();
-        assert_eq!(status.code(), Some(code), "SIG{sig}: {status}");
-        assert!(
-            sent.elapsed() < Duration::from_secs(2),
-            "SIG{sig}: slow stop"
+        // `signal` waits until raytrace catches the signal (a fixed sleep raced its start).
+        signal(&child, sig);
+        let (status, took) = wait_within(&mut child, Duration::from_secs(60));
+        assert_eq!(status, Some(code), "SIG{sig}");
+        timed(
+            &format!("SIG{sig} to the exit"),
+            took,
+            Duration::from_secs(2),
+            Duration::from_secs(10),
         );
         assert_eq!(entries(dir.path()), ["scene.txt"], "SIG{sig}: files left");
     }

@@ -102,12 +102,7 @@ fn depth_position_and_normal_at_hand_computed_pixels_of_one_sphere() {
 #[test]
 fn the_beauty_rounds_to_the_png_at_one_sample_in_half_and_float() {
     let dir = tempfile::tempdir().unwrap();
-    std::fs::write(
-        dir.path().join("scene.txt"),
-        scene_with_eye([1.0, 3.0, 8.0]),
-    )
-    .unwrap();
-    let scene = dir.path().join("scene.txt");
+    let scene = scene_txt(dir.path(), [1.0, 3.0, 8.0]);
     raytrace()
         .arg(&scene)
         .arg("-o")
@@ -142,12 +137,7 @@ fn the_beauty_rounds_to_the_png_at_one_sample_in_half_and_float() {
 #[test]
 fn the_same_bytes_on_any_thread_count_and_run() {
     let dir = tempfile::tempdir().unwrap();
-    std::fs::write(
-        dir.path().join("scene.txt"),
-        scene_with_eye([1.0, 3.0, 8.0]),
-    )
-    .unwrap();
-    let scene = dir.path().join("scene.txt");
+    let scene = scene_txt(dir.path(), [1.0, 3.0, 8.0]);
     let mut all = Vec::new();
     for (k, threads) in ["1", "2", "2", "3"].iter().enumerate() {
         let out = dir.path().join(format!("t{k}.exr"));

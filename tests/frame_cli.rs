@@ -84,8 +84,7 @@ fn check_frames_take_the_grammar_with_located_errors() {
         .arg("--quiet")
         .assert()
         .success();
-    let mut refs = entries_of(&dir.path().join("refs"));
-    refs.sort();
+    let refs = entries(&dir.path().join("refs"));
     assert_eq!(refs, ["frame_0000.png", "frame_0004.png", "frame_0008.png"]);
     // The error points into the string, at the step's 0.
     let (_dir, manifest) = project(&check("\"0-11x0\""));
@@ -106,15 +105,6 @@ fn check_frames_take_the_grammar_with_located_errors() {
     );
 }
 
-/// The files of a frame folder, less the run's folder lock (`.whitted-lock*`).
-fn entries_of(dir: &std::path::Path) -> Vec<String> {
-    std::fs::read_dir(dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .filter(|n| !n.starts_with(".whitted-lock"))
-        .collect()
-}
-
 #[test]
 fn output_names_in_every_spelling() {
     for (name, first) in [
@@ -128,7 +118,7 @@ fn output_names_in_every_spelling() {
             circle_manifest("").replace("name = \"frame_####\"", &format!("name = \"{name}\""));
         let (dir, manifest) = project(&text);
         render_into(&manifest, &dir.path().join("out"), &["--frames", "0"]);
-        assert_eq!(entries_of(&dir.path().join("out")), [first], "{name}");
+        assert_eq!(leftovers(&dir.path().join("out")), [first], "{name}");
     }
     let text = circle_manifest("").replace("name = \"frame_####\"", "name = \"a@@_$F4\"");
     let (_dir, manifest) = project(&text);

@@ -4,6 +4,8 @@
 //! when python3 or fileseq is missing, and fails under CI), and a property: every frame of
 //! any spec is rendered exactly once whatever the shard count and order.
 
+mod skip;
+
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use std::collections::BTreeMap;
@@ -95,11 +97,7 @@ fn oracle(specs: &[String]) -> Option<Vec<Option<Vec<i64>>>> {
     match fileseq(specs) {
         Ok(answers) => Some(answers),
         Err(why) => {
-            assert!(
-                std::env::var_os("CI").is_none(),
-                "CI must run fileseq: {why}"
-            );
-            eprintln!("skipped: {why}");
+            skip::skip(&format!("fileseq does not answer: {why}"));
             None
         }
     }

@@ -4,26 +4,12 @@
 //! Without openjd (or ffmpeg for the video) the test says "skipped:" and passes, except
 //! under CI, where it fails.
 
+mod skip;
 mod support;
 
 use std::path::Path;
 use std::process::Command;
 use support::*;
-
-fn have(tool: &str, arg: &str) -> bool {
-    Command::new(tool)
-        .arg(arg)
-        .output()
-        .is_ok_and(|o| o.status.success())
-}
-
-fn skip(why: &str) {
-    assert!(
-        std::env::var_os("CI").is_none(),
-        "CI must run the OpenJD test: {why}"
-    );
-    eprintln!("skipped: {why}");
-}
 
 fn job(manifest: &Path, args: &[&str]) -> serde_json::Value {
     let out = animate()
@@ -76,8 +62,8 @@ fn the_template_has_a_chunked_render_step_and_a_video_step_after_it() {
 
 #[test]
 fn openjd_checks_and_runs_the_template_into_the_bytes_of_a_plain_run() {
-    if !have("openjd", "--version") {
-        return skip("openjd (PyPI openjd-cli) is not installed");
+    if !skip::have("openjd", &["--version"]) {
+        return;
     }
     let (dir, manifest) = project(&circle_manifest(""));
     let work = dir.path();
@@ -127,8 +113,8 @@ fn openjd_checks_and_runs_the_template_into_the_bytes_of_a_plain_run() {
     let chunks = log.matches("Frame(CHUNK[INT]) = ").count();
     assert_eq!(chunks, 3, "{log}");
     assert_eq!(files(&out_dir), files(&work.join("plain")));
-    if !have("ffmpeg", "-version") {
-        return skip("ffmpeg is not installed (the video step)");
+    if !skip::have("ffmpeg", &["-version"]) {
+        return;
     }
     run("Video", &["--no-run-dependencies"]);
     let video = std::fs::metadata(work.join("farm.mp4")).unwrap();

@@ -6,32 +6,54 @@ mod support;
 
 use std::io::{BufRead, BufReader};
 use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
 use support::*;
 
 /// Runs `cmd` until a line of its standard error contains `want`, then stops it with
-/// SIGINT; returns that line (or panics with what it printed).
+/// SIGINT; returns that line. The lines are read in a thread: if none has `want` within
+/// 30 s (or the process ends first) the process is killed and the test fails with what it
+/// printed, instead of waiting for a render that takes hours.
 fn first_line_with(cmd: &mut Command, want: &str) -> String {
     let mut child = cmd
         .stderr(Stdio::piped())
         .stdout(Stdio::null())
         .spawn()
         .unwrap();
-    let mut seen = String::new();
-    let mut found = None;
-    for line in BufReader::new(child.stderr.take().unwrap()).lines() {
-        let line = line.unwrap();
-        if line.contains(want) {
-            found = Some(line);
-            break;
+    let pipe = child.stderr.take().unwrap();
+    let (send, lines) = std::sync::mpsc::channel();
+    std::thread::spawn(move || {
+        for line in BufReader::new(pipe).lines() {
+            if send.send(line.unwrap()).is_err() {
+                break;
+            }
         }
-        seen.push_str(&line);
-        seen.push('\n');
+    });
+    let limit = Duration::from_secs(30);
+    let start = Instant::now();
+    let mut seen = String::new();
+    let found = loop {
+        let left = limit.saturating_sub(start.elapsed());
+        match lines.recv_timeout(left) {
+            Ok(line) if line.contains(want) => break Some(line),
+            Ok(line) => {
+                seen.push_str(&line);
+                seen.push('\n');
+            }
+            Err(_) => break None, // the time ran out, or the process ended
+        }
+    };
+    if found.is_some() {
+        signal(&child, "INT");
+    } else {
+        let _ = child.kill();
     }
-    let _ = Command::new("kill")
-        .args(["-s", "INT", &child.id().to_string()])
-        .status();
     let _ = child.wait();
-    found.unwrap_or_else(|| panic!("no line with {want:?} in:\n{seen}"))
+    found.unwrap_or_else(|| {
+        panic!(
+            "no line with {want:?} within {limit:?} ({:?} waited) in:\n{seen}",
+            start.elapsed()
+        )
+    })
 }
 
 #[test]

@@ -4,6 +4,7 @@
 //! one, live reload (a bad edit located exactly as the command line prints it, the last
 //! good frame still served, a deleted scene file), and Ctrl-C ending with status 130.
 
+mod skip;
 mod support;
 mod view_common;
 
@@ -221,20 +222,32 @@ fn a_hundred_requests_at_once() {
 
 #[test]
 fn a_newer_request_supersedes_an_older_one() {
-    // A slow whole frame (640×480, 3×3 samples) holds the client's slot; of the two
-    // requests that come while it renders, the older is superseded and only the newer
+    // A slow whole frame (1280×960, 4×4 samples: seconds) holds the client's slot; of the
+    // two requests that come while it renders, the older is superseded and only the newer
     // renders.
-    let (_dir, _m, v) = viewer("\n[render]\nwidth = 640\nheight = 480\nsamples = 3\n");
+    let (_dir, _m, v) = viewer("\n[render]\nwidth = 1280\nheight = 960\nsamples = 4\n");
     let port = v.port;
     let host = format!("127.0.0.1:{port}");
     let send = |target: String| {
         let host = host.clone();
         std::thread::spawn(move || get(port, &target, Some(&host)).status)
     };
+    let pid = v.child.id();
+    let idle = cpu_time(pid);
     let slow = send("/api/frame?n=1&client=s".into());
-    std::thread::sleep(Duration::from_millis(150));
+    // The slot is held once the server renders: an idle server spends no CPU.
+    let busy = poll_until(Duration::from_secs(60), || {
+        cpu_time(pid) > idle + Duration::from_millis(300)
+    });
+    assert!(busy.is_some(), "the server never started the slow frame");
     let older = send("/api/frame?n=2&scale=2&client=s".into());
-    std::thread::sleep(Duration::from_millis(150));
+    // The older request must have taken its ticket before the newer one comes (nothing
+    // tells when it has: a second is far more than a request's parsing takes).
+    std::thread::sleep(Duration::from_secs(1));
+    assert!(
+        !slow.is_finished(),
+        "the slow frame ended before the newer request: nothing is tested"
+    );
     let newer = send("/api/frame?n=3&scale=2&client=s".into());
     // Another client is not held up by this one's queue.
     let other = send("/api/frame?n=3&scale=8&client=other".into());
@@ -261,7 +274,7 @@ fn live_reload_locates_a_bad_edit_exactly_as_the_command_line() {
     let before = v.get("/api/frame?n=3&format=raw&client=r").body;
     // A bad value: what `animate status` says of the same file is what the page shows.
     std::fs::write(&manifest, good.replace("radius = 8.0", "radius = -8.0")).unwrap();
-    let s = v.wait_state(Duration::from_secs(2), |s| !s["error"].is_null());
+    let s = v.wait_reload("bad manifest edit → error", |s| !s["error"].is_null());
     assert!(s["generation"].as_u64() > Some(g0));
     let cli = animate().arg("status").arg(&manifest).output().unwrap();
     let said = String::from_utf8_lossy(&cli.stderr);
@@ -274,7 +287,7 @@ fn live_reload_locates_a_bad_edit_exactly_as_the_command_line() {
     let tmp = dir.path().join(".anim.toml.swp");
     std::fs::write(&tmp, good.replace("radius = 8.0", "radius = 9.0")).unwrap();
     std::fs::rename(&tmp, &manifest).unwrap();
-    let s = v.wait_state(Duration::from_secs(2), |s| s["error"].is_null());
+    let s = v.wait_reload("rename-over save → fixed", |s| s["error"].is_null());
     assert!(s["generation"].as_u64() > Some(g0 + 1));
     assert_ne!(v.get("/api/frame?n=3&format=raw&client=r").body, before);
 }
@@ -286,7 +299,7 @@ fn the_scene_file_is_watched_and_may_vanish() {
     let text = std::fs::read_to_string(&scene).unwrap();
     let before = v.get("/api/frame?n=0&format=raw&client=d").body;
     std::fs::remove_file(&scene).unwrap();
-    let s = v.wait_state(Duration::from_secs(2), |s| !s["error"].is_null());
+    let s = v.wait_reload("scene deleted → error", |s| !s["error"].is_null());
     let e = s["error"].as_str().unwrap();
     assert!(
         e.starts_with("animate: ") && e.contains("anim.toml:1:9: scene: cannot read"),
@@ -300,11 +313,11 @@ fn the_scene_file_is_watched_and_may_vanish() {
     );
     // Back, with a brighter light: the error clears and the frame follows the file.
     std::fs::write(&scene, text.replace("0.9\n-6", "0.3\n-6")).unwrap();
-    v.wait_state(Duration::from_secs(2), |s| s["error"].is_null());
+    v.wait_reload("scene back → fixed", |s| s["error"].is_null());
     assert_ne!(v.get("/api/frame?n=0&format=raw&client=d").body, before);
     // A scene edit that breaks it: located in the scene file.
     std::fs::write(&scene, text.replacen("1.0  -1.3", "-1.0  -1.3", 1)).unwrap();
-    let s = v.wait_state(Duration::from_secs(2), |s| !s["error"].is_null());
+    let s = v.wait_reload("broken scene → error", |s| !s["error"].is_null());
     assert!(
         s["error"].as_str().unwrap().contains("scene.txt:6:1"),
         "{s}"
@@ -315,12 +328,7 @@ fn the_scene_file_is_watched_and_may_vanish() {
 fn ctrl_c_ends_it_with_130() {
     let (_dir, _m, mut v) = viewer("");
     assert_eq!(v.get("/api/state").status, 200);
-    let pid = v.child.id().to_string();
-    assert!(std::process::Command::new("kill")
-        .args(["-INT", &pid])
-        .status()
-        .unwrap()
-        .success());
+    signal(&v.child, "INT");
     let status = v.child.wait().unwrap();
     assert_eq!(status.code(), Some(130));
 }

@@ -180,4 +180,22 @@ fn a_record_of_the_stretched_view_is_stale_and_the_report_view_keeps_its_digest(
         Some(1),
         "a roll makes the frames stale: {out:?}"
     );
+    // The report's view has no field of view and no roll (`fov` has no value that is the
+    // report's plane): frames drawn with no [camera] keep their digest when the manifest
+    // spells the default roll out.
+    std::fs::write(&path, base).unwrap();
+    render_into(&path, &dir.path().join("g"), &[]);
+    std::fs::write(&path, format!("{base}[camera]\nroll = 0.0\n")).unwrap();
+    let out = animate()
+        .args(["status"])
+        .arg(&path)
+        .arg("-o")
+        .arg(dir.path().join("g"))
+        .output()
+        .unwrap();
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "roll = 0.0 is the report's view, the frames are up to date: {out:?}"
+    );
 }

@@ -22,31 +22,16 @@
 # holding raytrace, animate and examples/aa_figures (cargo build --release --bins
 # --example aa_figures); THREADS (default 2); KEEP=1 keeps the images (and writes
 # heat.png, the leaves-per-pixel map of frame 0 at the chosen threshold).
+# POV-Ray: `apt-get install povray` (see common.sh, which this sources).
 set -euo pipefail
 N=${1:-10}
-THREADS=${THREADS:-2}
-here=$(cd "$(dirname "$0")" && pwd)
-repo=$(cd "$here/../.." && pwd)
-BIN_DIR=${BIN_DIR:-${CARGO_TARGET_DIR:-$repo/target}/release}
+. "$(dirname "$0")/common.sh"
+pov_setup adaptive
 FIG="$BIN_DIR/examples/aa_figures"
-work=$(mktemp -d /tmp/pov-adaptive.XXXXXX)
-[ "${KEEP:-0}" = 1 ] || trap 'rm -rf "$work"' EXIT
-command -v povray >/dev/null || { echo "povray is not installed" >&2; exit 2; }
 for b in "$BIN_DIR/raytrace" "$BIN_DIR/animate" "$FIG"; do
   [ -x "$b" ] || { echo "no $b: cargo build --release --bins --example aa_figures" >&2; exit 2; }
 done
 
-times() { # wall and CPU seconds from a /usr/bin/time -v report
-  awk -F': ' '
-    /Elapsed \(wall clock\)/ { n = split($2, a, ":"); w = 0; for (i = 1; i <= n; i++) w = w * 60 + a[i] }
-    /User time/ { u = $2 } /System time/ { s = $2 }
-    END { printf "%.3f %.3f\n", w, u + s }' "$1"
-}
-pov() { # pov OUT.png TIMEFILE [options...]: POV-Ray on orbit.pov
-  local out=$1 tf=$2; shift 2
-  /usr/bin/time -v -o "$tf" povray +I"$here/orbit.pov" +O"$out" +W640 +H480 +WT"$THREADS" \
-    -D +FN File_Gamma=1.0 -GA "$@" >"$work/pov.log" 2>&1 || { tail -20 "$work/pov.log" >&2; exit 1; }
-}
 ours() { # ours OUT.png [raytrace options...]: prints "camera-rays/px all-rays"
   local out=$1; shift
   "$BIN_DIR/raytrace" "$here/orbit.txt" -o "$out" --threads "$THREADS" "$@" 2>"$work/ours.log"
@@ -96,32 +81,9 @@ if [ "${KEEP:-0}" = 1 ]; then
   echo "kept in $work (heat.png: leaves per pixel at T = $chosen, D = $chosen_d)"
 fi
 
-manifest() { # manifest FILE OUTDIR RENDER-LINES
-  cat >"$1" <<TOML
-scene = "$here/orbit.txt"
-frames = $N
-fps = 25
-
-[camera]
-path = "circle"
-center = [0.0, 1.0, 0.0]
-radius = 12.0
-height = 3.0
-start_angle = 0.0
-turns = 1.0
-
-[output]
-dir = "$2"
-name = "frame_####"
-format = "png"
-
-[render]
-$3
-TOML
-}
 animate_run() { # animate_run NAME RENDER-LINE: prints "wall cpu rays"
   rm -rf "$work/$1"
-  manifest "$work/$1.toml" "$work/$1" "$2"
+  orbit_manifest "$work/$1.toml" "$N" "$work/$1" "$2"
   /usr/bin/time -v -o "$work/$1.time" "$BIN_DIR/animate" "$work/$1.toml" --events \
     --threads "$THREADS" 2>"$work/$1.events" >/dev/null
   read -r w c < <(times "$work/$1.time")
@@ -131,11 +93,11 @@ animate_run() { # animate_run NAME RENDER-LINE: prints "wall cpu rays"
 
 echo
 echo "== 2. the orbit, $N frames 640x480, $THREADS threads: POV-Ray +AM2 +A0.3 +R3 vs ours adaptive T=$chosen D=$chosen_d =="
-last=$((N - 1))
 printf "%-5s %16s %16s %8s %8s\n" "pair" "POV-Ray wall/CPU" "ours wall/CPU" "wall x" "CPU x"
 for pair in 1 2; do
   mkdir -p "$work/povorbit"
-  pov "$work/povorbit/frame.png" "$work/pt" +A0.3 +AM2 +R3 +KFI0 +KFF"$last" +KI0 +KF"$last" Declare=Frames="$N"
+  # shellcheck disable=SC2046 # the frame options are words
+  pov "$work/povorbit/frame.png" "$work/pt" +A0.3 +AM2 +R3 $(pov_frames "$N")
   read -r pw pc < <(times "$work/pt")
   read -r ow oc _ < <(animate_run "adaptive" "antialias = { mode = \"adaptive\", threshold = $chosen, depth = $chosen_d }")
   awk -v k="$pair" -v pw="$pw" -v pc="$pc" -v ow="$ow" -v oc="$oc" \

@@ -11,56 +11,24 @@
 # otherwise `raytrace` looped over per-frame scene files made with sed beforehand (not
 # timed). POV-Ray: one `povray` run over the animation (+KFI0 +KFF<N-1>, clock = frame).
 # Both are timed with /usr/bin/time -v: wall clock, and CPU = user + sys.
+# POV-Ray: `apt-get install povray` (see common.sh, which this sources).
 set -euo pipefail
 N=${1:-25}
-THREADS=${THREADS:-2}
-here=$(cd "$(dirname "$0")" && pwd)
-repo=$(cd "$here/../.." && pwd)
-BIN_DIR=${BIN_DIR:-${CARGO_TARGET_DIR:-$repo/target}/release}
-work=$(mktemp -d /tmp/pov-compare.XXXXXX)
-[ "${KEEP:-0}" = 1 ] || trap 'rm -rf "$work"' EXIT
-command -v povray >/dev/null || { echo "povray is not installed" >&2; exit 2; }
+. "$(dirname "$0")/common.sh"
+pov_setup compare
 [ -x "$BIN_DIR/raytrace" ] || { echo "no $BIN_DIR/raytrace: cargo build --release" >&2; exit 2; }
-
-# wall and CPU seconds from a /usr/bin/time -v report
-times() {
-  awk -F': ' '
-    /Elapsed \(wall clock\)/ { n = split($2, a, ":"); w = 0; for (i = 1; i <= n; i++) w = w * 60 + a[i] }
-    /User time/ { u = $2 } /System time/ { s = $2 }
-    END { printf "%.3f %.3f\n", w, u + s }' "$1"
-}
 
 # --- POV-Ray -----------------------------------------------------------------------
 mkdir -p "$work/pov"
-last=$((N - 1))
-/usr/bin/time -v -o "$work/pov.time" \
-  povray +I"$here/orbit.pov" +O"$work/pov/frame.png" +W640 +H480 +WT"$THREADS" -A -D +FN \
-    File_Gamma=1.0 +KFI0 +KFF"$last" +KI0 +KF"$last" Declare=Frames="$N" -GA \
-    >"$work/pov.log" 2>&1 || { tail -20 "$work/pov.log" >&2; exit 1; }
+# shellcheck disable=SC2046 # the frame options are words
+pov "$work/pov/frame.png" "$work/pov.time" -A $(pov_frames "$N")
 read -r pov_wall pov_cpu < <(times "$work/pov.time")
 
 # --- ours --------------------------------------------------------------------------
 mkdir -p "$work/ours"
 how=""
 if [ -x "$BIN_DIR/animate" ]; then
-  cat >"$work/orbit.toml" <<TOML
-scene = "$here/orbit.txt"
-frames = $N
-fps = 25
-
-[camera]
-path = "circle"
-center = [0.0, 1.0, 0.0]
-radius = 12.0
-height = 3.0
-start_angle = 0.0
-turns = 1.0
-
-[output]
-dir = "$work/ours"
-name = "frame_####"
-format = "png"
-TOML
+  orbit_manifest "$work/orbit.toml" "$N" "$work/ours"
   if /usr/bin/time -v -o "$work/ours.time" "$BIN_DIR/animate" "$work/orbit.toml" -q \
        --threads "$THREADS" >"$work/ours.log" 2>&1 \
      && [ "$(ls "$work/ours" | grep -c '\.png$')" -eq "$N" ]; then

@@ -1,7 +1,12 @@
 //! Shared by the `animate` integration tests: a small scene, manifests written into a
-//! temporary folder, and helpers to run the built binaries and read their frames.
+//! temporary folder, helpers to run the built binaries and read their frames and folders;
+//! processes steered by signals and deadlines are in `process`.
 
 #![allow(dead_code)]
+
+pub mod process;
+#[allow(unused_imports)]
+pub use process::*;
 
 use assert_cmd::Command;
 use std::path::{Path, PathBuf};
@@ -26,6 +31,13 @@ pub const SCENE: &str = "\
 /// The scene with its camera at `eye`.
 pub fn scene_with_eye(eye: [f64; 3]) -> String {
     SCENE.replace("{EYE}", &format!("{:?} {:?} {:?}", eye[0], eye[1], eye[2]))
+}
+
+/// Writes `dir/scene.txt`, the scene with its camera at `eye`; its path.
+pub fn scene_txt(dir: &Path, eye: [f64; 3]) -> PathBuf {
+    let path = dir.join("scene.txt");
+    std::fs::write(&path, scene_with_eye(eye)).unwrap();
+    path
 }
 
 /// A 12-frame circle manifest over `scene.txt` in the same folder; `extra` is appended.
@@ -82,6 +94,31 @@ pub fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
         .collect();
     out.sort();
     out
+}
+
+/// The names of the entries of `dir`, sorted, hidden ones included.
+pub fn entries(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap_or_else(|e| panic!("cannot list {}: {e}", dir.display()))
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    names
+}
+
+/// What is left in a frame folder besides the run's folder lock (the library's
+/// `LOCK_FILE` and its `LOCK_FILE-<key>` files), sorted, hidden ones included; nothing when
+/// the folder does not exist.
+pub fn leftovers(dir: &Path) -> Vec<String> {
+    use whitted::anim::frames::lock::LOCK_FILE;
+    if !dir.exists() {
+        return Vec::new();
+    }
+    let own = format!("{LOCK_FILE}-");
+    entries(dir)
+        .into_iter()
+        .filter(|n| n != LOCK_FILE && !n.starts_with(&own))
+        .collect()
 }
 
 /// The RGB pixels of a PNG file.

@@ -5,28 +5,14 @@
 use serde_json::{json, Value};
 use std::io::{BufRead, BufReader};
 use std::net::TcpStream;
-use std::path::PathBuf;
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 use tungstenite::stream::MaybeTlsStream;
 use tungstenite::{Message, WebSocket};
 
-/// `chromium` from PATH (or /usr/bin), or `None` after saying the test skipped; a
-/// failure under `CI`.
-pub fn chromium() -> Option<PathBuf> {
-    let found = std::env::var_os("PATH")
-        .and_then(|paths| {
-            std::env::split_paths(&paths)
-                .map(|dir| dir.join("chromium"))
-                .find(|p| p.is_file())
-        })
-        .or_else(|| Some(PathBuf::from("/usr/bin/chromium")).filter(|p| p.is_file()));
-    if found.is_none() {
-        assert!(std::env::var_os("CI").is_none(), "CI must install chromium");
-        eprintln!("skipped: chromium not found");
-    }
-    found
-}
+/// `chromium` from PATH (or /usr/bin), or `None` after the test skipped (tests/skip).
+#[allow(unused_imports)]
+pub use crate::skip::chromium;
 
 /// A headless Chromium with one page, ended when dropped.
 pub struct Browser {
@@ -208,8 +194,9 @@ impl Browser {
     }
 }
 
-/// Standard base64 (with padding) to bytes.
-fn base64(s: &str) -> Vec<u8> {
+/// Standard base64 (with padding) to bytes (tested in view_browser.rs, which takes the
+/// screenshots).
+pub fn base64(s: &str) -> Vec<u8> {
     let val = |c: u8| match c {
         b'A'..=b'Z' => c - b'A',
         b'a'..=b'z' => c - b'a' + 26,
@@ -231,11 +218,4 @@ fn base64(s: &str) -> Vec<u8> {
         out.extend_from_slice(&acc.to_be_bytes()[1..chunk.len()]);
     }
     out
-}
-
-#[test]
-fn base64_by_hand() {
-    assert_eq!(base64("TWFu"), b"Man");
-    assert_eq!(base64("TWE="), b"Ma");
-    assert_eq!(base64("TQ=="), b"M");
 }

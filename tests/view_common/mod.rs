@@ -11,6 +11,13 @@ use std::path::Path;
 use std::process::{Child, Command, Stdio};
 use std::time::{Duration, Instant};
 
+/// What an edit on disk to the reloaded state (or the page's new picture) aims at
+/// (SPEC §13); measured by view_browser's ignored measurement test.
+pub const RELOAD_TARGET: Duration = Duration::from_secs(2);
+/// When a reload fails a test: generous for inotify, a render and Chromium on a loaded
+/// two-core machine, still far below "never".
+pub const RELOAD_BOUND: Duration = Duration::from_secs(30);
+
 /// A running `animate view`, killed when dropped.
 pub struct Viewer {
     pub child: Child,
@@ -83,6 +90,19 @@ impl Viewer {
             assert!(start.elapsed() < limit, "state never came: {s}");
             std::thread::sleep(Duration::from_millis(20));
         }
+    }
+
+    /// Waits for a reload: until `/api/state` satisfies `ok`, failing only past
+    /// `RELOAD_BOUND`; the time it took is printed beside the 2 s target (`timed`).
+    pub fn wait_reload(
+        &self,
+        what: &str,
+        ok: impl Fn(&serde_json::Value) -> bool,
+    ) -> serde_json::Value {
+        let start = Instant::now();
+        let s = self.wait_state(RELOAD_BOUND, ok);
+        crate::support::timed(what, start.elapsed(), RELOAD_TARGET, RELOAD_BOUND);
+        s
     }
 
     /// The server's resident memory in KiB (Linux).
