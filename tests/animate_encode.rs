@@ -221,7 +221,7 @@ fn decoded(video: &std::path::Path) -> Vec<u8> {
 
 #[test]
 fn encode_and_verify_read_ppm_raw_and_exr_folders_as_their_pictures() {
-    if !have_ffmpeg() {
+    if !skip::ffmpeg() {
         return;
     }
     // The PNG folder's frames are the pictures every other format must give back.
@@ -266,7 +266,7 @@ fn encode_and_verify_read_ppm_raw_and_exr_folders_as_their_pictures() {
 #[test]
 fn the_video_gets_the_permissions_of_a_frame() {
     use std::os::unix::fs::PermissionsExt;
-    if !have_ffmpeg() {
+    if !skip::ffmpeg() {
         return;
     }
     let two = circle_manifest("").replace("frames = 12", "frames = 2");

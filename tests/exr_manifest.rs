@@ -4,21 +4,13 @@
 //! take the frames through the clamp-and-round, so they are the PNG manifest's pictures.
 //! The video tests need ffmpeg: without it they say "skipped" and pass, except under CI.
 
+mod skip;
 mod support;
 
 use exr::prelude::*;
 use std::path::Path;
 use std::process::Command;
 use support::*;
-
-fn have_ffmpeg() -> bool {
-    let found = Command::new("ffmpeg").arg("-version").output().is_ok();
-    if !found {
-        assert!(std::env::var_os("CI").is_none(), "CI must install ffmpeg");
-        eprintln!("skipped: ffmpeg not installed");
-    }
-    found
-}
 
 /// The circle manifest with `frames` frames in `format`, `extra` appended.
 fn manifest(format: &str, frames: u32, extra: &str) -> String {
@@ -133,7 +125,7 @@ fn the_preview_of_an_exr_manifest_is_the_png_manifests() {
 
 #[test]
 fn video_and_encode_of_an_exr_manifest_are_its_clamped_beauty() {
-    if !have_ffmpeg() {
+    if !skip::ffmpeg() {
         return;
     }
     let (dir, m) = project(&manifest("exr", 3, ""));

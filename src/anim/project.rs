@@ -275,7 +275,9 @@ impl<'p> Animation<'p> {
     /// frame's own time (motion blur's sub-frames are around it) and its shared tracer.
     pub fn pick(&self, frame: u32, x: u32, y: u32) -> Result<Option<Pick>, AnimError> {
         let state = self.timeline.at(f64::from(frame));
-        let camera = self.camera(&state).ok_or(AnimError::Camera { frame })?;
+        let camera = self
+            .camera(&state)
+            .ok_or_else(|| self.camera_error(frame))?;
         Ok(crate::pick::pick(&self.tracer(&state.scene), &camera, x, y))
     }
 
