@@ -49,7 +49,7 @@ pub struct Args {
     pub samples: u32,
     /// Adaptive anti-aliasing instead of the grid: pixel corners shared, squares split
     /// where corners differ by more than THRESHOLD (0..=3, default 0.5), down to DEPTH
-    /// (0..=6, default 3).
+    /// (0..=6, default 2).
     #[arg(long, value_name = "adaptive[:T[:D]]", conflicts_with = "samples",
           value_parser = |s: &str| s.parse::<Adaptive>().map_err(|e| e.to_string()))]
     pub aa: Option<Adaptive>,
