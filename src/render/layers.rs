@@ -4,8 +4,9 @@
 //! §12); with one sample and no motion blur it is exactly the colour `render` rounds.
 
 use super::{par_rows, sub_pixel};
-use crate::accel::TileView;
+use crate::accel::{Hint, TileView};
 use crate::camera::{Camera, VIEW_DISTANCE};
+use crate::optics::Ray;
 use crate::passes::record::{finish, Sample, Sums};
 use crate::passes::{CameraMatrices, Layers, Pass, PassSet};
 use crate::trace::{RayCount, Tracer};
@@ -29,33 +30,42 @@ pub fn render_layers_add(
     let forward = camera.basis().2;
     let view = TileView::new(camera, width, height, &tracer.scene().objects);
     let view = view.as_ref();
-    let step = 1.0 / n as f64;
     match sums {
         Sums::Beauty(sums) => par_rows(sums, width, height, |j, row, count| {
-            for (i, sum) in row.iter_mut().enumerate() {
-                let hint = view.map(|v| v.hint(i as u32, j as u32));
-                for b in 0..n {
-                    for a in 0..n {
-                        let (x, y) = sub_pixel(i as f64, j as f64, a, b, step);
-                        *sum += tracer.primary_in(hint, &camera.ray(x, y), count);
-                    }
-                }
-            }
+            row_samples(camera, view, width, n, j, count, |i, hint, ray, count| {
+                row[i] += tracer.primary_in(hint, ray, count);
+            });
         }),
         Sums::Passes(sums) => par_rows(sums, width, height, |j, row, count| {
-            for (i, sum) in row.iter_mut().enumerate() {
-                let hint = view.map(|v| v.hint(i as u32, j as u32));
-                for b in 0..n {
-                    for a in 0..n {
-                        let (x, y) = sub_pixel(i as f64, j as f64, a, b, step);
-                        let ray = camera.ray(x, y);
-                        let mut s = Sample::default();
-                        let c = tracer.primary_rec(hint, &ray, count, &mut s);
-                        sum.add(c, &s, ray.dir, forward, crypto);
-                    }
-                }
-            }
+            row_samples(camera, view, width, n, j, count, |i, hint, ray, count| {
+                let mut s = Sample::default();
+                let c = tracer.primary_rec(hint, ray, count, &mut s);
+                row[i].add(c, &s, ray.dir, forward, crypto);
+            });
         }),
+    }
+}
+
+/// Every camera ray of row `j`, pixel by pixel and each pixel's n×n grid in order:
+/// `add(i, hint, ray, count)` for the samples of pixel i.
+fn row_samples(
+    camera: &Camera,
+    view: Option<&TileView>,
+    width: u32,
+    n: u32,
+    j: usize,
+    count: &mut RayCount,
+    mut add: impl FnMut(usize, Option<Hint>, &Ray, &mut RayCount),
+) {
+    let step = 1.0 / n as f64;
+    for i in 0..width as usize {
+        let hint = view.map(|v| v.hint(i as u32, j as u32));
+        for b in 0..n {
+            for a in 0..n {
+                let (x, y) = sub_pixel(i as f64, j as f64, a, b, step);
+                add(i, hint, &camera.ray(x, y), count);
+            }
+        }
     }
 }
 
