@@ -203,22 +203,6 @@ fn encode_checks_the_folder_then_makes_the_video_with_the_options() {
         .code(2);
 }
 
-/// The RGB bytes of every frame of a video, as ffmpeg decodes them.
-fn decoded(video: &std::path::Path) -> Vec<u8> {
-    let out = Command::new("ffmpeg")
-        .args(["-v", "error", "-i"])
-        .arg(video)
-        .args(["-f", "rawvideo", "-pix_fmt", "rgb24", "-"])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    out.stdout
-}
-
 #[test]
 fn encode_and_verify_read_ppm_raw_and_exr_folders_as_their_pictures() {
     if !skip::ffmpeg() {

@@ -5,9 +5,6 @@
 
 mod support;
 
-use exr::prelude::*;
-use std::collections::HashMap;
-use std::path::Path;
 use support::*;
 
 /// 5×5 pixels, eye at z = 5 looking at the origin, no fog, one unit sphere (colour
@@ -15,28 +12,6 @@ use support::*;
 const ONE_SPHERE: &str = "5 5  0 0 5  0 0 0  0 0  1 0 0 1\n\
     1 0 0 0  1 0.8 0.4 0.2  1 0 0 1 0 0\n\
     0 5 5  1 1 1  1\n";
-
-/// Every channel of an EXR file by name, as floats.
-fn channels(path: &Path) -> HashMap<String, Vec<f32>> {
-    let image = read()
-        .no_deep_data()
-        .largest_resolution_level()
-        .all_channels()
-        .first_valid_layer()
-        .all_attributes()
-        .from_file(path)
-        .unwrap();
-    image
-        .layer_data
-        .channel_data
-        .list
-        .iter()
-        .map(|c| {
-            let name = String::from_utf8_lossy(c.name.bytes()).into_owned();
-            (name, c.sample_data.values_as_f32().collect())
-        })
-        .collect()
-}
 
 /// The ray of pixel (i, j) of a 5×5 frame of the camera above, by SPEC §2: U = −z, D = +x,
 /// H' = +y.
@@ -59,7 +34,7 @@ fn depth_position_and_normal_at_hand_computed_pixels_of_one_sphere() {
         .args(["--passes", "depth,position,normal,albedo", "-q"])
         .assert()
         .success();
-    let ch = channels(&out);
+    let ch = exr_channels(&out);
     let at = |name: &str, i: usize, j: usize| f64::from(ch[name][j * 5 + i]);
     // Centre pixel (2, 2): the ray is −z exactly; it meets the sphere at t = 4, p = (0, 0, 1),
     // N = +z, depth (along the view axis) 4, albedo the sphere's colour.
@@ -120,7 +95,7 @@ fn the_beauty_rounds_to_the_png_at_one_sample_in_half_and_float() {
             .args(["--exr-depth", depth, "-q"])
             .assert()
             .success();
-        let ch = channels(&out);
+        let ch = exr_channels(&out);
         let byte = |v: f32| (f64::from(v).clamp(0.0, 1.0) * 255.0).round() as u8;
         let bytes: Vec<u8> = (0..png.len() / 3)
             .flat_map(|k| ["R", "G", "B"].map(|c| byte(ch[c][k])))

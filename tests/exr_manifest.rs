@@ -7,9 +7,8 @@
 mod skip;
 mod support;
 
-use exr::prelude::*;
+use exr::prelude::write_rgb_file;
 use std::path::Path;
-use std::process::Command;
 use support::*;
 
 /// The circle manifest with `frames` frames in `format`, `extra` appended.
@@ -21,36 +20,8 @@ fn manifest(format: &str, frames: u32, extra: &str) -> String {
 
 /// The R, G, B channels of an EXR file's beauty, as floats.
 fn beauty(path: &Path) -> [Vec<f32>; 3] {
-    let image = read()
-        .no_deep_data()
-        .largest_resolution_level()
-        .all_channels()
-        .first_valid_layer()
-        .all_attributes()
-        .from_file(path)
-        .unwrap();
-    let channel = |name: &str| {
-        let list = &image.layer_data.channel_data.list;
-        let c = list.iter().find(|c| c.name.eq(name)).unwrap();
-        c.sample_data.values_as_f32().collect::<Vec<f32>>()
-    };
-    [channel("R"), channel("G"), channel("B")]
-}
-
-/// The RGB bytes of every frame of a video, as ffmpeg decodes them.
-fn decoded(video: &Path) -> Vec<u8> {
-    let out = Command::new("ffmpeg")
-        .args(["-v", "error", "-i"])
-        .arg(video)
-        .args(["-f", "rawvideo", "-pix_fmt", "rgb24", "-"])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    out.stdout
+    let mut ch = exr_channels(path);
+    ["R", "G", "B"].map(|c| ch.remove(c).unwrap())
 }
 
 const CHECK: &str = "\n[check]\nframes = [0, 2]\nreferences = \"refs\"\nfail = 0\n\

@@ -1,10 +1,14 @@
 //! Shared by the `animate` integration tests: a small scene, manifests written into a
 //! temporary folder, helpers to run the built binaries and read their frames and folders;
-//! processes steered by signals and deadlines are in `process`.
+//! processes steered by signals and deadlines are in `process`; videos and EXR files read
+//! by outside readers in `media`.
 
 #![allow(dead_code)]
 
+pub mod media;
 pub mod process;
+#[allow(unused_imports)]
+pub use media::*;
 #[allow(unused_imports)]
 pub use process::*;
 

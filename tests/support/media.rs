@@ -1,0 +1,45 @@
+//! Reading what the binaries wrote with outside readers, not the library's: a video's
+//! frames as ffmpeg decodes them, an EXR file's channels as the `exr` crate reads them.
+
+use exr::prelude::*;
+use std::collections::HashMap;
+use std::path::Path;
+use std::process::Command;
+
+/// The RGB bytes of every frame of a video, as ffmpeg decodes them.
+pub fn decoded(video: &Path) -> Vec<u8> {
+    let out = Command::new("ffmpeg")
+        .args(["-v", "error", "-i"])
+        .arg(video)
+        .args(["-f", "rawvideo", "-pix_fmt", "rgb24", "-"])
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out.stdout
+}
+
+/// Every channel of an EXR file by name, as floats.
+pub fn exr_channels(path: &Path) -> HashMap<String, Vec<f32>> {
+    let image = read()
+        .no_deep_data()
+        .largest_resolution_level()
+        .all_channels()
+        .first_valid_layer()
+        .all_attributes()
+        .from_file(path)
+        .unwrap();
+    image
+        .layer_data
+        .channel_data
+        .list
+        .iter()
+        .map(|c| {
+            let name = String::from_utf8_lossy(c.name.bytes()).into_owned();
+            (name, c.sample_data.values_as_f32().collect())
+        })
+        .collect()
+}
