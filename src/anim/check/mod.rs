@@ -220,29 +220,18 @@ fn draw(anim: &Animation, frame: u32) -> Result<Reference, AnimError> {
 fn load_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<Reference, AnimError> {
     let path = reference_path(anim, refs, frame);
     let (width, height) = (anim.width, anim.height);
-    if anim.format().is_layered() {
-        let beauty = crate::output::read_beauty(&path, width, height)
-            .map_err(|e| unreadable(frame, &path, e))?;
-        let pixels = crate::output::beauty_bytes(&beauty);
-        return Ok((
-            Frame {
-                width,
-                height,
-                pixels,
-            },
-            Some(beauty),
-        ));
-    }
-    let pixels = crate::output::read_rgb(&path, ImageFormat::Png, width, height)
-        .map_err(|e| unreadable(frame, &path, e))?;
-    Ok((
-        Frame {
-            width,
-            height,
-            pixels,
-        },
-        None,
-    ))
+    let read = match anim.format().is_layered() {
+        true => crate::output::read_beauty(&path, width, height)
+            .map(|beauty| (crate::output::beauty_bytes(&beauty), Some(beauty))),
+        false => crate::output::read_rgb(&path, ImageFormat::Png, width, height).map(|p| (p, None)),
+    };
+    let (pixels, beauty) = read.map_err(|e| unreadable(frame, &path, e))?;
+    let picture = Frame {
+        width,
+        height,
+        pixels,
+    };
+    Ok((picture, beauty))
 }
 
 /// Refuses a reference that is missing, unreadable or of another size, from its header
