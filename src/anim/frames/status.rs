@@ -26,11 +26,6 @@ pub enum FrameState {
     Missing,
 }
 
-/// The state of frame `frame` in `dir`; `verify` decodes the image too.
-pub(crate) fn frame_state(anim: &Animation, dir: &Path, frame: u32, verify: bool) -> FrameState {
-    examine(anim, dir, frame, verify).0
-}
-
 /// The state of frame `frame` in `dir` and, when stale, why.
 fn examine(anim: &Animation, dir: &Path, frame: u32, verify: bool) -> (FrameState, String) {
     let path = anim.frame_path(dir, frame);
@@ -154,19 +149,29 @@ impl StatusReport {
 /// The state of each frame of `frames` in `dir`, in their order, read in parallel;
 /// `verify` decodes every image too.
 pub fn states(anim: &Animation, dir: &Path, frames: &[u32], verify: bool) -> Vec<FrameState> {
+    examined(anim, dir, frames, verify)
+        .into_iter()
+        .map(|(state, _)| state)
+        .collect()
+}
+
+/// `examine` of each frame of `frames`, in their order, in parallel.
+fn examined(
+    anim: &Animation,
+    dir: &Path,
+    frames: &[u32],
+    verify: bool,
+) -> Vec<(FrameState, String)> {
     frames
         .par_iter()
-        .map(|&f| frame_state(anim, dir, f, verify))
+        .map(|&f| examine(anim, dir, f, verify))
         .collect()
 }
 
 /// The state of every frame of `frames` in `dir`, read in parallel, and the frames past
 /// the end of the sequence that have files there; `verify` decodes every image too.
 pub fn status(anim: &Animation, dir: &Path, frames: &[u32], verify: bool) -> StatusReport {
-    let states: Vec<(FrameState, String)> = frames
-        .par_iter()
-        .map(|&f| examine(anim, dir, f, verify))
-        .collect();
+    let states = examined(anim, dir, frames, verify);
     let mut report = StatusReport {
         beyond: beyond(anim, dir).into_iter().map(|(f, _)| f).collect(),
         ..StatusReport::default()
