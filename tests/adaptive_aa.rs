@@ -33,15 +33,22 @@ fn raytrace_adaptive_is_the_same_on_one_and_two_threads_and_differs_from_the_gri
     let dir = tempfile::tempdir().unwrap();
     write_scene(dir.path());
     let d = dir.path();
-    let one = raytrace_ok(d, &["--aa", "adaptive:0.5:2", "--threads", "1"], "one.png");
-    raytrace_ok(d, &["--aa", "adaptive:0.5:2", "--threads", "2"], "two.png");
+    let one = raytrace_ok(d, &["--aa", "adaptive:0.4:2", "--threads", "1"], "one.png");
+    raytrace_ok(
+        d,
+        &["--aa", "adaptive:0.4:2:edge", "--threads", "2"],
+        "two.png",
+    );
     raytrace_ok(d, &["--aa", "adaptive", "--threads", "2"], "default.png");
     raytrace_ok(d, &[], "plain.png");
     let (a, b) = (pixels(&d.join("one.png")), pixels(&d.join("two.png")));
     assert_eq!(a, b);
     assert_eq!(a, pixels(&d.join("default.png")));
     assert_ne!(a, pixels(&d.join("plain.png")));
-    assert!(one.contains("adaptive 0.5 depth 2"), "{one}");
+    assert!(one.contains("adaptive 0.4 depth 2 edge"), "{one}");
+    // POV-Ray's measure at the same threshold draws other pixels.
+    raytrace_ok(d, &["--aa", "adaptive:0.4:2:sum"], "sum.png");
+    assert_ne!(a, pixels(&d.join("sum.png")));
     // Depth 0 casts exactly the (64+1)·(48+1) corner rays.
     let corners = raytrace_ok(d, &["--aa", "adaptive:0.1:0"], "corners.png");
     assert_ne!(a, pixels(&d.join("corners.png")));
@@ -119,7 +126,7 @@ fn the_settings_are_part_of_the_digest() {
     assert_eq!(status(&manifest, &out), Some(0));
     let stamp =
         String::from_utf8_lossy(&std::fs::read(out.join("frame_0000.png")).unwrap()).into_owned();
-    assert!(stamp.contains("adaptive anti-aliasing threshold 0.1 depth 3"));
+    assert!(stamp.contains("adaptive anti-aliasing threshold 0.1 depth 3 measure edge"));
     for other in [
         AA.replace("threshold = 0.1", "threshold = 0.2"),
         AA.replace("depth = 3", "depth = 2"),

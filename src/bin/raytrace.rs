@@ -137,9 +137,10 @@ fn run(args: Args) -> anyhow::Result<()> {
         let n = match aa {
             Antialias::Grid(n) => format!("{} sample(s)/px", n * n),
             Antialias::Adaptive(a) => format!(
-                "adaptive {} depth {}, {:.3} camera rays/px",
+                "adaptive {} depth {} {}, {:.3} camera rays/px",
                 a.threshold,
                 a.depth,
+                a.measure.name(),
                 rays.primary as f64 / (f64::from(w) * f64::from(h))
             ),
         };

@@ -6,38 +6,32 @@
 //!
 //! ```toml
 //! [render]
-//! antialias = { mode = "adaptive", threshold = 0.5, depth = 2 }   # raytrace --aa adaptive:0.5:2
+//! antialias = { mode = "adaptive", threshold = 0.4, depth = 2 }   # raytrace --aa adaptive:0.4:2
 //! ```
 //!
-//! Determinism. Every sample sits on the lattice of pitch 2^−D and is named by its
-//! integer lattice coordinates (X, Y); its colour is a function of (X, Y) alone (the ray
-//! through the point X·2^−D, Y·2^−D, exact in binary). The pixel corners (the multiples
-//! of 2^D) are traced first, in parallel over lattice rows, into one array. The finer
-//! samples are traced on demand and kept in a map per pixel row, each counted once
-//! whichever tile or thread asks first, so the pixels' colours, and the ray
-//! counts, do not depend on the thread count, the shard or the tile size. Tiles of
-//! `tile`×`tile` pixels are the parallel work units.
-//!
-//! The difference measure (docs/decisions.md, "adaptive anti-aliasing"): over the six
-//! pairs of a square's corners, POV-Ray's sum of the three channels' absolute
-//! differences (`Measure::Sum`) or the largest single-channel difference
-//! (`Measure::Max`), both on the clamped output values (our output has no gamma).
+//! Determinism. Every sample is named by its integer coordinates on the lattice of pitch
+//! 2^−D and its colour is a function of them alone; each pixel's first split is decided
+//! from the corner pass alone, and every finer sample is traced and counted once, whichever
+//! tile or thread asks first (`lattice.rs`), so the pixels' colours and the ray counts do
+//! not depend on the thread count, the shard or the tile size. Tiles of `tile`×`tile`
+//! pixels are the parallel work units. When a square splits is `measure.rs`'s.
 
 use super::{render, render_add, Frame};
 use crate::accel::TileView;
 use crate::camera::Camera;
 use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
+use lattice::{Lattice, Probe, Scratch};
 use rayon::prelude::*;
 use serde::Serialize;
-use std::collections::hash_map::Entry;
-use std::collections::HashMap;
-use std::sync::Mutex;
 
+mod lattice;
+mod measure;
 mod parse;
 #[cfg(test)]
 mod tests;
 
+pub use measure::Measure;
 pub use parse::AntialiasError;
 
 /// The deepest subdivision accepted (4096 leaves per pixel at most).
@@ -46,16 +40,6 @@ pub const MAX_DEPTH: u32 = 6;
 pub const MAX_THRESHOLD: f64 = 3.0;
 /// Pixels a side of a parallel work unit.
 pub const TILE: u32 = 32;
-
-/// How two corner samples' difference is measured.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum Measure {
-    /// |Δr| + |Δg| + |Δb|, POV-Ray's `Colour_Distance`.
-    Sum,
-    /// max(|Δr|, |Δg|, |Δb|).
-    Max,
-}
 
 /// `antialias = { mode = "adaptive", threshold = T, depth = D }`.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -69,25 +53,13 @@ pub struct Adaptive {
 }
 
 impl Adaptive {
-    /// The defaults: the threshold whose images are as close to a 16×16 reference as
+    /// The defaults: the fewest rays whose images are as close to a 16×16 reference as
     /// POV-Ray's `+AM2 +A0.3 +R3` are to its own (benches/pov/adaptive.sh).
     pub const DEFAULT: Adaptive = Adaptive {
-        threshold: 0.5,
+        threshold: 0.4,
         depth: 2,
-        measure: Measure::Sum,
+        measure: Measure::Edge,
     };
-
-    /// Whether the corners `c` (clamped) differ by more than the threshold.
-    pub fn differ(&self, c: &[Color; 4]) -> bool {
-        let distance = |a: Color, b: Color| {
-            let d = (a - b).abs();
-            match self.measure {
-                Measure::Sum => d.x + d.y + d.z,
-                Measure::Max => d.x.max(d.y).max(d.z),
-            }
-        };
-        (0..4).any(|a| (a + 1..4).any(|b| distance(c[a], c[b]) > self.threshold))
-    }
 }
 
 /// How a frame is anti-aliased: the n×n grid of `samples`, or adaptively.
@@ -151,112 +123,6 @@ pub fn render_add_with(
     }
 }
 
-/// The hash of a lattice point for the sample maps: the two coordinates packed and
-/// multiplied by an odd constant (Fibonacci hashing), high half folded in. The keys are small distinct integer
-/// pairs chosen by the render, not by an adversary, so SipHash's resistance buys nothing
-/// and its cost was paid on every finer sample.
-#[derive(Default)]
-struct PointHasher(u64);
-
-impl std::hash::Hasher for PointHasher {
-    fn finish(&self) -> u64 {
-        // The product's high half (which both coordinates reach) folded into its low
-        // half, whose bits alone would see only y: the table indexes by the low bits.
-        let h = self.0.wrapping_mul(0x9E37_79B9_7F4A_7C15);
-        h ^ (h >> 32)
-    }
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.0 = self.0.rotate_left(8) ^ u64::from(b);
-        }
-    }
-    fn write_u32(&mut self, v: u32) {
-        self.0 = self.0 << 32 | u64::from(v);
-    }
-}
-
-type BuildPointHasher = std::hash::BuildHasherDefault<PointHasher>;
-
-/// The finer samples of one pixel row, by lattice point.
-type SampleMap = HashMap<(u32, u32), Color, BuildPointHasher>;
-
-/// What traces a lattice point: the tracer, the camera and the lattice's size.
-struct Probe<'a> {
-    tracer: &'a Tracer<'a>,
-    view: Option<&'a TileView>,
-    camera: &'a Camera,
-    width: u32,
-    height: u32,
-    depth: u32,
-}
-
-/// One traced lattice: the pixel corners, and the finer samples traced once on demand.
-struct Lattice<'a> {
-    probe: Probe<'a>,
-    /// The pixel corners, (width+1)·(height+1), rows top to bottom.
-    corners: Vec<Color>,
-    /// The finer samples, one map per pixel row (its inside and its bottom edge).
-    memo: Vec<Mutex<SampleMap>>,
-}
-
-impl Probe<'_> {
-    /// The clamped colour of the camera ray through lattice point (x, y).
-    fn trace(&self, x: u32, y: u32, count: &mut RayCount) -> Color {
-        let step = 1.0 / f64::from(1u32 << self.depth);
-        let (i, j) = (
-            (x >> self.depth).min(self.width - 1),
-            (y >> self.depth).min(self.height - 1),
-        );
-        let hint = self.view.map(|v| v.hint(i, j));
-        let ray = self.camera.ray(f64::from(x) * step, f64::from(y) * step);
-        self.tracer
-            .primary_in(hint, &ray, count)
-            .clamp(Color::ZERO, Color::ONE)
-    }
-}
-
-impl Lattice<'_> {
-    /// The sample at lattice point (x, y), traced if no one has yet.
-    fn sample(&self, x: u32, y: u32, count: &mut RayCount) -> Color {
-        let Probe {
-            depth,
-            width,
-            height,
-            ..
-        } = self.probe;
-        let mask = (1u32 << depth) - 1;
-        if x & mask == 0 && y & mask == 0 {
-            let k = (y >> depth) as usize * (width as usize + 1);
-            return self.corners[k + (x >> depth) as usize];
-        }
-        let row = if y & mask == 0 && y > 0 {
-            (y >> depth) - 1
-        } else {
-            (y >> depth).min(height - 1)
-        };
-        let lock = || {
-            self.memo[row as usize]
-                .lock()
-                .unwrap_or_else(|e| e.into_inner())
-        };
-        if let Some(&c) = lock().get(&(x, y)) {
-            return c;
-        }
-        // Traced outside the lock; when another thread traced the point meanwhile (only
-        // on a pixel row's top or bottom edge), the colours are the same and the first
-        // one's rays are the ones counted: each point counts once, whoever traced it.
-        let mut own = RayCount::default();
-        let c = self.probe.trace(x, y, &mut own);
-        match lock().entry((x, y)) {
-            Entry::Occupied(first) => *first.get(),
-            Entry::Vacant(slot) => {
-                *count = *count + own;
-                *slot.insert(c)
-            }
-        }
-    }
-}
-
 /// The statistics of one square's subdivision.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Split {
@@ -281,7 +147,24 @@ pub fn square<F>(
 where
     F: FnMut(u32, u32) -> Color,
 {
-    if level >= aa.depth || size < 2 || !aa.differ(&c) {
+    let split = level < aa.depth && size >= 2 && aa.measure.differ(aa.threshold, &c, level);
+    resolve(aa, (x, y), size, level, c, sample, split)
+}
+
+/// `square` once its split is decided: a leaf, or the mean of its four quarters.
+fn resolve<F>(
+    aa: &Adaptive,
+    (x, y): (u32, u32),
+    size: u32,
+    level: u32,
+    c: [Color; 4],
+    sample: &mut F,
+    split: bool,
+) -> (Color, Split)
+where
+    F: FnMut(u32, u32) -> Color,
+{
+    if !split {
         let leaf = Split {
             leaves: 1,
             deepest: level,
@@ -332,26 +215,8 @@ pub fn trace(
         height,
         depth,
     };
-    let mut corners = vec![Color::ZERO; (width as usize + 1) * (height as usize + 1)];
-    let mut rays = corners
-        .par_chunks_mut(width as usize + 1)
-        .enumerate()
-        .map(|(j, row)| {
-            let mut count = RayCount::default();
-            if super::control::stop_row() {
-                return count; // cancelled: the caller discards the frame
-            }
-            for (i, c) in row.iter_mut().enumerate() {
-                *c = probe.trace((i as u32) << depth, (j as u32) << depth, &mut count);
-            }
-            count
-        })
-        .reduce(RayCount::default, |a, b| a + b);
-    let lattice = Lattice {
-        probe,
-        corners,
-        memo: (0..height).map(|_| Mutex::default()).collect(),
-    };
+    let mut rays = RayCount::default();
+    let lattice = Lattice::new(probe, &aa, &mut rays);
     let tile = tile.max(1);
     let (cols, rows) = (width.div_ceil(tile), height.div_ceil(tile));
     let tiles: Vec<(Vec<(Color, Split)>, RayCount)> = (0..cols * rows)
@@ -360,6 +225,7 @@ pub fn trace(
             let (ti, tj) = (t % cols, t / cols);
             let mut count = RayCount::default();
             let mut out = Vec::new();
+            let mut scratch = Scratch::new(depth);
             let band = tj * tile..((tj + 1) * tile).min(height);
             if super::control::stop_row() {
                 // Cancelled: the caller discards the frame; an empty tile leaves its
@@ -368,7 +234,7 @@ pub fn trace(
             }
             for j in band.clone() {
                 for i in ti * tile..((ti + 1) * tile).min(width) {
-                    out.push(pixel(&lattice, &aa, i, j, &mut count));
+                    out.push(pixel(&lattice, &aa, (i, j), &mut scratch, &mut count));
                 }
             }
             if ti + 1 == cols {
@@ -402,17 +268,18 @@ pub fn trace(
     result
 }
 
-/// Pixel (i, j): its square of the lattice, split as its corners ask (`aa.depth` is the
-/// lattice's).
-fn pixel(lattice: &Lattice, aa: &Adaptive, i: u32, j: u32, count: &mut RayCount) -> (Color, Split) {
-    let d = lattice.probe.depth;
-    let (x, y, size) = (i << d, j << d, 1u32 << d);
-    let mut sample = |x: u32, y: u32| lattice.sample(x, y, count);
-    let c = [
-        sample(x, y),
-        sample(x + size, y),
-        sample(x, y + size),
-        sample(x + size, y + size),
-    ];
-    square(aa, (x, y), size, 0, c, &mut sample)
+/// Pixel (i, j): its square of the lattice, split as the lattice decided and then as its
+/// quarters' corners ask (`aa.depth` is the lattice's).
+fn pixel(
+    lattice: &Lattice,
+    aa: &Adaptive,
+    (i, j): (u32, u32),
+    scratch: &mut Scratch,
+    count: &mut RayCount,
+) -> (Color, Split) {
+    let d = lattice.depth();
+    let (c, split) = lattice.pixel(i, j);
+    scratch.next_pixel();
+    let mut sample = |x: u32, y: u32| lattice.sample((i, j), x, y, scratch, count);
+    resolve(aa, (i << d, j << d), 1 << d, 0, c, &mut sample, split)
 }

@@ -133,8 +133,12 @@ pub(crate) fn stamp(anim: &Animation, frame: u32, digest: String) -> Vec<(String
             "whitted:render".into(),
             match s.antialias {
                 Some(a) => format!(
-                    "{}x{}, adaptive anti-aliasing threshold {} depth {}{blur}",
-                    s.width, s.height, a.threshold, a.depth
+                    "{}x{}, adaptive anti-aliasing threshold {} depth {} measure {}{blur}",
+                    s.width,
+                    s.height,
+                    a.threshold,
+                    a.depth,
+                    a.measure.name()
                 ),
                 None => format!(
                     "{}x{}, {}x{} sample(s) per pixel{blur}",

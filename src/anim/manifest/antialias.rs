@@ -75,7 +75,7 @@ mod tests {
             Some(Adaptive {
                 threshold: 0.25,
                 depth: 2,
-                measure: Measure::Sum
+                measure: Measure::Edge
             })
         );
         let m = load("antialias = { mode = \"adaptive\" }").unwrap();

@@ -48,9 +48,10 @@ pub struct Args {
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..=16))]
     pub samples: u32,
     /// Adaptive anti-aliasing instead of the grid: pixel corners shared, squares split
-    /// where corners differ by more than THRESHOLD (0..=3, default 0.5), down to DEPTH
-    /// (0..=6, default 2).
-    #[arg(long, value_name = "adaptive[:T[:D]]", conflicts_with = "samples",
+    /// where corners differ by more than THRESHOLD (0..=3, default 0.4), down to DEPTH
+    /// (0..=6, default 2); MEASURE edge (the default: the difference times the square's
+    /// side), sum (POV-Ray's) or max.
+    #[arg(long, value_name = "adaptive[:T[:D[:MEASURE]]]", conflicts_with = "samples",
           value_parser = |s: &str| s.parse::<Adaptive>().map_err(|e| e.to_string()))]
     pub aa: Option<Adaptive>,
     /// Worker threads (default: all cores).

@@ -1,6 +1,6 @@
 //! The command line's spelling of adaptive anti-aliasing, `adaptive[:T[:D[:MEASURE]]]`
-//! (`raytrace --aa adaptive:0.5:2`; MEASURE `sum`, the default, or `max`, for the
-//! measurements of benches/pov/adaptive.sh), and the bounds every spelling obeys:
+//! (`raytrace --aa adaptive:0.4:2`; MEASURE `edge`, the default, or `sum` or `max`, for
+//! the measurements of benches/pov/adaptive.sh), and the bounds every spelling obeys:
 //! 0 ≤ T ≤ 3, 0 ≤ D ≤ `MAX_DEPTH`.
 
 use super::{Adaptive, Measure, MAX_DEPTH, MAX_THRESHOLD};
@@ -11,7 +11,9 @@ use thiserror::Error;
 #[derive(Debug, Error, PartialEq)]
 pub enum AntialiasError {
     /// Not `adaptive[:T[:D]]`.
-    #[error("expected adaptive[:THRESHOLD[:DEPTH[:sum|max]]], e.g. adaptive:0.5:2, found {0:?}")]
+    #[error(
+        "expected adaptive[:THRESHOLD[:DEPTH[:edge|sum|max]]], e.g. adaptive:0.4:2, found {0:?}"
+    )]
     Syntax(String),
     /// A threshold out of 0..=3 (or not a number).
     #[error("the threshold must be a number from 0 to 3, found {0}")]
@@ -64,9 +66,11 @@ impl FromStr for Adaptive {
             None => None,
         };
         let measure = match parts.next() {
-            None | Some("sum") => Measure::Sum,
-            Some("max") => Measure::Max,
-            Some(_) => return Err(AntialiasError::Syntax(s.to_string())),
+            None => Adaptive::DEFAULT.measure,
+            Some(name) => [Measure::Edge, Measure::Sum, Measure::Max]
+                .into_iter()
+                .find(|m| m.name() == name)
+                .ok_or_else(|| AntialiasError::Syntax(s.to_string()))?,
         };
         if parts.next().is_some() {
             return Err(AntialiasError::Syntax(s.to_string()));
@@ -88,9 +92,13 @@ mod tests {
         let a: Adaptive = "adaptive:0.3".parse().unwrap();
         assert_eq!((a.threshold, a.depth), (0.3, Adaptive::DEFAULT.depth));
         let a: Adaptive = "adaptive:0:5".parse().unwrap();
-        assert_eq!((a.threshold, a.depth, a.measure), (0.0, 5, Measure::Sum));
+        assert_eq!((a.threshold, a.depth, a.measure), (0.0, 5, Measure::Edge));
         let a: Adaptive = "adaptive:0.2:2:max".parse().unwrap();
         assert_eq!((a.threshold, a.depth, a.measure), (0.2, 2, Measure::Max));
+        let a: Adaptive = "adaptive:0.2:2:sum".parse().unwrap();
+        assert_eq!(a.measure, Measure::Sum);
+        let a: Adaptive = "adaptive:0.2:2:edge".parse().unwrap();
+        assert_eq!(a.measure, Measure::Edge);
     }
 
     #[test]
@@ -98,6 +106,10 @@ mod tests {
         let bad = |s: &str| s.parse::<Adaptive>().unwrap_err();
         assert!(matches!(bad("grid"), AntialiasError::Syntax(_)));
         assert!(matches!(bad("adaptive:0.1:3:1"), AntialiasError::Syntax(_)));
+        assert!(matches!(
+            bad("adaptive:0.1:3:Edge"),
+            AntialiasError::Syntax(_)
+        ));
         assert!(matches!(
             bad("adaptive:0.1:3:max:1"),
             AntialiasError::Syntax(_)

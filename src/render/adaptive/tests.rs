@@ -4,11 +4,19 @@ use crate::Scene;
 const WHITE: Color = Color::ONE;
 const BLACK: Color = Color::ZERO;
 
+/// POV-Ray's measure, the same at every level, with no split amid neighbours.
 fn aa(threshold: f64, depth: u32) -> Adaptive {
     Adaptive {
         threshold,
         depth,
         measure: Measure::Sum,
+    }
+}
+
+fn edge(threshold: f64, depth: u32) -> Adaptive {
+    Adaptive {
+        measure: Measure::Edge,
+        ..aa(threshold, depth)
     }
 }
 
@@ -72,25 +80,44 @@ fn the_mean_is_over_the_leaves_areas() {
 }
 
 #[test]
-fn the_two_measures() {
-    // Δ = (0.1, 0.1, 0.1): sum 0.3 (just equal, no split at T = 0.3), max 0.1.
-    let c = [BLACK, Color::splat(0.1), BLACK, BLACK];
-    let sum = aa(0.25, 3);
-    let max = Adaptive {
-        measure: Measure::Max,
-        ..sum
-    };
-    assert!(sum.differ(&c));
-    assert!(!max.differ(&c));
-    assert!(!aa(0.3 + 1e-9, 3).differ(&c));
-    // A diagonal pair counts too.
-    let diagonal = [
-        BLACK,
-        Color::splat(0.05),
-        Color::splat(0.05),
-        Color::splat(0.1),
-    ];
-    assert!(aa(0.25, 3).differ(&diagonal));
+fn edge_weighs_a_difference_by_the_side_of_its_square() {
+    // As above, depth 2, only the top-left point white: every pair with it differs by 3.
+    // Under `edge` the pixel (side 1) splits at T = 1.6 (3 > 1.6), but its top-left quarter
+    // (side 1/2: 3 · 1/2 = 1.5 ≤ 1.6) is a leaf with corners W, B, B, B, mean 1/4: the
+    // pixel is 1/4 · 1/4 = 1/16 over 4 leaves. At T = 1.4 (1.5 > 1.4) the quarter splits
+    // as the sum measure splits it: 1/64 over 7 leaves.
+    let sample = |x: u32, y: u32| if (x, y) == (0, 0) { WHITE } else { BLACK };
+    let corners = [WHITE, BLACK, BLACK, BLACK];
+    let (colour, split) = square(&edge(1.6, 2), (0, 0), 4, 0, corners, &mut { sample });
+    assert_eq!(
+        (colour, split.leaves, split.deepest),
+        (Color::splat(1.0 / 16.0), 4, 1)
+    );
+    let (colour, split) = square(&edge(1.4, 2), (0, 0), 4, 0, corners, &mut { sample });
+    assert_eq!(
+        (colour, split.leaves, split.deepest),
+        (Color::splat(1.0 / 64.0), 7, 2)
+    );
+    let (colour, split) = square(&aa(1.6, 2), (0, 0), 4, 0, corners, &mut { sample });
+    assert_eq!((colour, split.leaves), (Color::splat(1.0 / 64.0), 7));
+}
+
+#[test]
+fn under_edge_a_pixel_amid_two_splitting_neighbours_splits() {
+    // 3×3 pixels, a 4×4 corner lattice, black but for corners (0, 1) and (3, 1): the
+    // pixels left and right of the middle one (and those above them) differ; the middle
+    // pixel's own corners agree, but two of its neighbours split, and so do the top
+    // middle pixel's (top-left, top-right). The bottom row has at most one such neighbour.
+    let mut corners = vec![BLACK; 16];
+    corners[4] = WHITE;
+    corners[7] = WHITE;
+    let splits = |a: Adaptive| lattice::first_splits(&corners, 3, 3, a.depth, &a);
+    let (t, f) = (true, false);
+    assert_eq!(splits(aa(0.5, 2)), [t, f, t, t, f, t, f, f, f]);
+    assert_eq!(splits(edge(0.5, 2)), [t, t, t, t, t, t, f, f, f]);
+    // Depth 0 splits nothing; above the difference, nothing splits and nothing spreads.
+    assert_eq!(splits(edge(0.5, 0)), [f; 9]);
+    assert_eq!(splits(edge(3.0, 2)), [f; 9]);
 }
 
 /// Four by three pixels of one plane in ambient light only: every sample the same.
@@ -145,23 +172,24 @@ fn same_colours_and_rays_whatever_the_tiles_and_threads() {
     (scene.width, scene.height) = (w, h);
     let tracer = Tracer::new(&scene);
     let camera = scene.camera();
-    let a = aa(0.1, 3);
     let pool = |n| {
         rayon::ThreadPoolBuilder::new()
             .num_threads(n)
             .build()
             .unwrap()
     };
-    let reference = pool(1).install(|| trace(&tracer, &camera, w, h, a, 1));
-    assert!(reference.leaves.iter().any(|&n| n > 1));
-    for (threads, tile) in [(1, 32), (2, 1), (2, 5), (2, 32), (3, 7)] {
-        let out = pool(threads).install(|| trace(&tracer, &camera, w, h, a, tile));
-        assert_eq!(
-            out.colors, reference.colors,
-            "{threads} threads, tile {tile}"
-        );
-        assert_eq!(out.leaves, reference.leaves);
-        assert_eq!(out.rays, reference.rays);
+    for a in [aa(0.1, 3), edge(0.1, 3), edge(0.05, 2)] {
+        let reference = pool(1).install(|| trace(&tracer, &camera, w, h, a, 1));
+        assert!(reference.leaves.iter().any(|&n| n > 1));
+        for (threads, tile) in [(1, 32), (2, 1), (2, 5), (2, 32), (3, 7)] {
+            let out = pool(threads).install(|| trace(&tracer, &camera, w, h, a, tile));
+            assert_eq!(
+                out.colors, reference.colors,
+                "{a:?}: {threads} threads, tile {tile}"
+            );
+            assert_eq!(out.leaves, reference.leaves);
+            assert_eq!(out.rays, reference.rays);
+        }
     }
 }
 
@@ -208,7 +236,7 @@ fn grid_dispatch_is_render() {
 #[test]
 fn the_point_hash_by_hand_and_its_low_bits_see_both_coordinates() {
     use std::hash::BuildHasher;
-    let hash = |p: (u32, u32)| BuildPointHasher::default().hash_one(p);
+    let hash = |p: (u32, u32)| lattice::BuildPointHasher::default().hash_one(p);
     // (1, 2) packs to 2^32 + 2; times 0x9E3779B97F4A7C15 (mod 2^64) is
     // 0x3C6EF372FE94F82A + 0x7F4A7C1500000000 = 0xBBB96F87FE94F82A, and the high half
     // folded into the low: 0xFE94F82A ^ 0xBBB96F87 = 0x452D97AD.
