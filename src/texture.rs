@@ -56,10 +56,13 @@ impl Texture {
         }
     }
 
-    /// The colour at world point `p`. Never inlined, as LLVM chose before the passes:
-    /// inlined into the light buffer's glass loop in `shading::direct` (once that lookup
-    /// was forced inline) it cost 1.5 M instructions more on the orbit (callgrind).
-    #[inline(never)]
+    /// The colour at world point `p`. `#[inline]`, as before the passes: as
+    /// `#[inline(never)]` it was one exported function with the C calling convention (the
+    /// return slot's address handed back, `noisy_at` called instead of jumped to), and
+    /// with `Accel::transmission` inlined again, inlining it into both glass loops of
+    /// `shading::direct` takes 9.5 M instructions off `direct` + `color_at` on the orbit at
+    /// one thread (callgrind).
+    #[inline]
     pub fn color_at(&self, p: DVec3) -> Color {
         // The two cheap kinds by conditional branches, which are predicted from their
         // history: a jump table over the kinds met in turn along a pixel's rays (a

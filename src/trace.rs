@@ -163,8 +163,12 @@ impl<'a> Tracer<'a> {
         self.primary_rec(tile, ray, count, &mut NoRecord)
     }
 
-    /// `primary_in`, telling `rec` the first hit and the parts of the colour.
-    #[inline]
+    /// `primary_in`, telling `rec` the first hit and the parts of the colour. Always
+    /// inlined, like `shade_rec` and `direct_rec`: `primary_in` holds the beauty-only body
+    /// again instead of calling this out of line (one instruction more a call), and LLVM
+    /// then inlines it into render's row loop (11.7 M instructions fewer on the orbit at
+    /// one thread, callgrind).
+    #[inline(always)]
     pub fn primary_rec<R: Record>(
         &self,
         tile: Option<Hint>,

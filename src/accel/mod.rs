@@ -145,7 +145,13 @@ impl Accel {
 
     /// What a shadow ray from `p` along the unit `to_light` lets through over (T_MIN,
     /// dist): exactly `shading::transmission(objects, p, to_light, dist)`.
-    #[inline]
+    ///
+    /// Always inlined, as 46b440d's build inlined it on its own into `shading::direct`,
+    /// its one caller then: `direct_rec` with a recorder made a second one, LLVM kept it
+    /// out of line, and the call in the light loop (cold where the light buffer answers)
+    /// cost `direct` 20 M instructions on the orbit at one thread (callgrind) in spills
+    /// around it; where the buffer cannot answer it is the hot path itself.
+    #[inline(always)]
     pub fn transmission(&self, objects: &[Object], p: DVec3, to_light: DVec3, dist: f64) -> Color {
         let ray = Ray::new(p, to_light);
         for shape in &self.unbounded_opaque {
