@@ -4,8 +4,9 @@
 #   farm/pgo-build.sh [OUTDIR]        # default: target/pgo of the project
 #
 # 1. builds both binaries with our crate instrumented (-Cprofile-generate), in OUTDIR/build;
-# 2. runs them on a training set: every scene of scenes/ and benches/scenes/, and frames
-#    of the orbit and bounce animations through `animate` (PNG encoding, tracks, blur);
+# 2. runs them on a training set: every scene of scenes/ and benches/scenes/, the orbit
+#    with adaptive anti-aliasing, and frames of the orbit and bounce animations through
+#    `animate` (PNG encoding, tracks, blur);
 # 3. merges the profiles with the llvm-profdata of rustc's own LLVM (rustup component
 #    llvm-tools) and builds our crate again with -Cprofile-use (the dependencies are
 #    built once, plain: the time is in our code);
@@ -59,6 +60,8 @@ render() { # bin-dir, out-dir
   for s in "${scenes[@]}"; do
     "$1/raytrace" "$s" -o "$2/$(basename "$s" .txt).raw" --quiet
   done
+  # Adaptive anti-aliasing's own code (the lattice, the measure) at its default.
+  "$1/raytrace" scenes/orbit.txt -o "$2/orbit-adaptive.raw" --aa adaptive --quiet
 }
 
 profiles="$out/profiles"

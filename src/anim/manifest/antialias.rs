@@ -2,7 +2,7 @@
 //!
 //! ```toml
 //! [render]
-//! antialias = { mode = "adaptive", threshold = 0.5, depth = 2 }  # mode required; threshold
+//! antialias = { mode = "adaptive", threshold = 0.4, depth = 2 }  # mode required; threshold
 //!                                                                 # 0..=3, depth 0..=6
 //! ```
 //!
