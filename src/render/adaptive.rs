@@ -148,22 +148,30 @@ where
     F: FnMut(u32, u32) -> Color,
 {
     let split = level < aa.depth && size >= 2 && aa.measure.differ(aa.threshold, &c, level);
-    resolve(aa, (x, y), size, level, c, sample, split)
+    let at = (x, y);
+    resolve(aa, Square { at, size, level, c }, sample, split)
 }
 
-/// `square` once its split is decided: a leaf, or the mean of its four quarters.
-fn resolve<F>(
-    aa: &Adaptive,
-    (x, y): (u32, u32),
+/// A square of the lattice: its top-left point, its side in lattice steps, how many
+/// splits below its pixel it is, and its corners.
+struct Square {
+    at: (u32, u32),
     size: u32,
     level: u32,
     c: [Color; 4],
-    sample: &mut F,
-    split: bool,
-) -> (Color, Split)
+}
+
+/// `square` once its split is decided: a leaf, or the mean of its four quarters.
+fn resolve<F>(aa: &Adaptive, sq: Square, sample: &mut F, split: bool) -> (Color, Split)
 where
     F: FnMut(u32, u32) -> Color,
 {
+    let Square {
+        at: (x, y),
+        size,
+        level,
+        c,
+    } = sq;
     if !split {
         let leaf = Split {
             leaves: 1,
@@ -281,5 +289,17 @@ fn pixel(
     let (c, split) = lattice.pixel(i, j);
     scratch.next_pixel();
     let mut sample = |x: u32, y: u32| lattice.sample((i, j), x, y, scratch, count);
-    resolve(aa, (i << d, j << d), 1 << d, 0, c, &mut sample, split)
+    let at = (i << d, j << d);
+    let size = 1 << d;
+    resolve(
+        aa,
+        Square {
+            at,
+            size,
+            level: 0,
+            c,
+        },
+        &mut sample,
+        split,
+    )
 }
