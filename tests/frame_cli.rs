@@ -20,12 +20,7 @@ fn stream(manifest: &std::path::Path, frames: &str) -> Vec<u8> {
         .args(["--stdout", "ppm", "--quiet", "--frames", frames])
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    out.stdout
+    stdout_ok(out)
 }
 
 #[test]

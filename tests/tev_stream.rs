@@ -195,11 +195,7 @@ fn raytrace_streams_rows_that_reassemble_to_the_raw_file() {
         .current_dir(dir.path())
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    stdout_ok(out);
     let raw = std::fs::read(dir.path().join("x.raw")).unwrap();
     let seen = decode(&got.join().unwrap());
     let img = seen.images.values().next().expect("an image");
@@ -227,13 +223,9 @@ fn animate_sends_every_frame() {
         .args(["--display", &format!("tev=127.0.0.1:{port}")])
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let stdout = stdout_ok(out);
     let seen = decode(&got.join().unwrap());
-    let frames: Vec<&[u8]> = out.stdout.chunks(64 * 48 * 3).collect();
+    let frames: Vec<&[u8]> = stdout.chunks(64 * 48 * 3).collect();
     assert_eq!(frames.len(), 4);
     let mut sent = seen.whole.clone();
     assert_eq!(sent.len(), 4, "one whole picture a frame");
@@ -258,11 +250,7 @@ fn animate_sends_every_frame_of_an_exr_manifest() {
         .args(["--display", &format!("tev=127.0.0.1:{port}")])
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    stdout_ok(out);
     let seen = decode(&got.join().unwrap());
     let mut sent = seen.whole.clone();
     assert_eq!(sent.len(), 3, "one whole picture a frame");

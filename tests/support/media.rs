@@ -14,12 +14,7 @@ pub fn decoded(video: &Path) -> Vec<u8> {
         .args(["-f", "rawvideo", "-pix_fmt", "rgb24", "-"])
         .output()
         .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    out.stdout
+    super::stdout_ok(out)
 }
 
 /// Every channel of an EXR file by name, as floats.

@@ -66,6 +66,18 @@ pub fn project(manifest: &str) -> (tempfile::TempDir, PathBuf) {
     (dir, path)
 }
 
+/// The standard output of a finished command, which must have succeeded (its standard
+/// error is the message when it did not).
+#[track_caller]
+pub fn stdout_ok(out: std::process::Output) -> Vec<u8> {
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out.stdout
+}
+
 pub fn animate() -> Command {
     Command::cargo_bin("animate").unwrap()
 }
