@@ -108,7 +108,7 @@ impl<'a> Lattice<'a> {
                     count
                 })
                 .reduce(RayCount::default, |a, b| a + b);
-        let split = first_splits(&corners, w, h, d, aa);
+        let split = first_splits(&corners, w, h, aa);
         let memo = (0..h).map(|_| Mutex::default()).collect();
         Lattice {
             probe,
@@ -195,14 +195,8 @@ impl<'a> Lattice<'a> {
 /// `(w+1)·(h+1)` lattice `corners`) and, under `edge`, its neighbours': a pixel splits when
 /// its corners differ, or when they agree and two or more of its four neighbours' corners
 /// differ (each neighbour judged on its own corners, so nothing spreads further).
-pub(super) fn first_splits(
-    corners: &[Color],
-    w: usize,
-    h: usize,
-    depth: u32,
-    aa: &Adaptive,
-) -> Vec<bool> {
-    if depth == 0 {
+pub(super) fn first_splits(corners: &[Color], w: usize, h: usize, aa: &Adaptive) -> Vec<bool> {
+    if aa.depth == 0 {
         return vec![false; w * h];
     }
     let corner = |k: usize| {

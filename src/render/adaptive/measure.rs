@@ -33,6 +33,9 @@ pub enum Measure {
 }
 
 impl Measure {
+    /// Every measure, the default first.
+    pub const ALL: [Measure; 3] = [Measure::Edge, Measure::Sum, Measure::Max];
+
     /// The measure's name, as `adaptive:T:D:NAME` spells it.
     pub fn name(self) -> &'static str {
         match self {
@@ -132,9 +135,8 @@ mod tests {
 
     #[test]
     fn names() {
-        let all = [Measure::Sum, Measure::Max, Measure::Edge];
-        let names: Vec<_> = all.iter().map(|m| m.name()).collect();
-        assert_eq!(names, ["sum", "max", "edge"]);
+        let names: Vec<_> = Measure::ALL.iter().map(|m| m.name()).collect();
+        assert_eq!(names, ["edge", "sum", "max"]);
         assert!(Measure::Edge.splits_amid_neighbours());
         // The settings' JSON, which the frame digest hashes, names the measure.
         let json = serde_json::to_string(&super::super::Adaptive::DEFAULT).unwrap();

@@ -67,7 +67,7 @@ impl FromStr for Adaptive {
         };
         let measure = match parts.next() {
             None => Adaptive::DEFAULT.measure,
-            Some(name) => [Measure::Edge, Measure::Sum, Measure::Max]
+            Some(name) => Measure::ALL
                 .into_iter()
                 .find(|m| m.name() == name)
                 .ok_or_else(|| AntialiasError::Syntax(s.to_string()))?,

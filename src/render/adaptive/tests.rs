@@ -111,7 +111,7 @@ fn under_edge_a_pixel_amid_two_splitting_neighbours_splits() {
     let mut corners = vec![BLACK; 16];
     corners[4] = WHITE;
     corners[7] = WHITE;
-    let splits = |a: Adaptive| lattice::first_splits(&corners, 3, 3, a.depth, &a);
+    let splits = |a: Adaptive| lattice::first_splits(&corners, 3, 3, &a);
     let (t, f) = (true, false);
     assert_eq!(splits(aa(0.5, 2)), [t, f, t, t, f, t, f, f, f]);
     assert_eq!(splits(edge(0.5, 2)), [t, t, t, t, t, t, f, f, f]);
