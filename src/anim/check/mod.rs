@@ -20,20 +20,22 @@
 pub mod diff;
 pub mod export;
 pub mod flip;
+mod reference;
 pub mod report;
 
 pub use diff::{Comparison, Limit, Tolerance};
+pub use reference::reference_path;
 pub use report::{CheckReport, FrameReport};
 
 use super::error::AnimError;
 use super::manifest::Manifest;
 use super::project::Animation;
 use super::select::{parse_frames, SelectError};
-use crate::fileloc::shown;
 use crate::output::{write_atomic, ImageFormat};
 use crate::render::Frame;
 use diff::{compare, heat_map};
 use rayon::prelude::*;
+use reference::{draw, load_reference, probe_reference, stem, Reference};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -177,113 +179,6 @@ pub fn default_report(manifest: &Manifest) -> PathBuf {
     let mut name = manifest.output.dir.clone().into_os_string();
     name.push("-check");
     PathBuf::from(name)
-}
-
-/// The file name stem of frame `frame` (the name pattern, no extension).
-fn stem(anim: &Animation, frame: u32) -> String {
-    let name = anim.manifest.output.file_name(frame, anim.manifest.frames);
-    match name.rsplit_once('.') {
-        Some((stem, _)) => stem.to_string(),
-        None => name,
-    }
-}
-
-/// Where the reference of `frame` lives.
-pub fn reference_path(anim: &Animation, refs: &Path, frame: u32) -> PathBuf {
-    let ext = if anim.format().is_layered() {
-        "exr"
-    } else {
-        "png"
-    };
-    refs.join(format!("{}.{ext}", stem(anim, frame)))
-}
-
-/// A reference: its 8-bit picture and, for an EXR frame, its float beauty.
-type Reference = (Frame, Option<Vec<[f32; 3]>>);
-
-/// A frame as check compares it: the picture, and the float beauty of an EXR frame.
-fn draw(anim: &Animation, frame: u32) -> Result<Reference, AnimError> {
-    if !anim.format().is_layered() {
-        return Ok((anim.render(frame)?.0, None));
-    }
-    let (layers, _) = anim.render_layers(frame, crate::passes::PassSet::NONE)?;
-    let floats = layers
-        .beauty
-        .iter()
-        .map(|c| [c.x as f32, c.y as f32, c.z as f32])
-        .collect();
-    Ok((layers.to_frame(), Some(floats)))
-}
-
-/// Reads the reference of `frame` (that `probe_reference` accepted) with one size check:
-/// an EXR reference's float beauty and its picture, or an 8-bit reference's picture.
-fn load_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<Reference, AnimError> {
-    let path = reference_path(anim, refs, frame);
-    let (width, height) = (anim.width, anim.height);
-    let read = match anim.format().is_layered() {
-        true => crate::output::read_beauty(&path, width, height)
-            .map(|beauty| (crate::output::beauty_bytes(&beauty), Some(beauty))),
-        false => crate::output::read_rgb(&path, ImageFormat::Png, width, height).map(|p| (p, None)),
-    };
-    let (pixels, beauty) = read.map_err(|e| unreadable(frame, &path, e))?;
-    let picture = Frame {
-        width,
-        height,
-        pixels,
-    };
-    Ok((picture, beauty))
-}
-
-/// Refuses a reference that is missing, unreadable or of another size, from its header
-/// alone (the check's first pass, before anything renders). An EXR reference is only
-/// looked for here; its size is checked when it is read.
-fn probe_reference(anim: &Animation, refs: &Path, frame: u32) -> Result<PathBuf, AnimError> {
-    let path = reference_path(anim, refs, frame);
-    if !path.exists() {
-        return Err(AnimError::Reference(format!(
-            "frame {frame}: the reference {} is missing",
-            shown(&path)
-        )));
-    }
-    if anim.format().is_layered() {
-        return Ok(path);
-    }
-    let unreadable = |e: &dyn std::fmt::Display| {
-        AnimError::Reference(format!("{}: cannot read it: {e}", shown(&path)))
-    };
-    let limit = crate::limits::MAX_FRAME_BYTES;
-    let (file, _) =
-        crate::input::open_regular(&path, limit, "reference").map_err(|e| unreadable(&e))?;
-    let reader = image::ImageReader::new(std::io::BufReader::new(file))
-        .with_guessed_format()
-        .map_err(|e| unreadable(&e))?;
-    let (width, height) = reader.into_dimensions().map_err(|e| unreadable(&e))?;
-    if (width, height) != (anim.width, anim.height) {
-        return Err(AnimError::Reference(format!(
-            "frame {frame}: the reference {} is {}×{}, the frame is {}×{}",
-            shown(&path),
-            width,
-            height,
-            anim.width,
-            anim.height
-        )));
-    }
-    Ok(path)
-}
-
-/// The refusal of a reference that gives no picture of the frame's size.
-fn unreadable(frame: u32, path: &Path, e: crate::output::ReadError) -> AnimError {
-    AnimError::Reference(match e {
-        crate::output::ReadError::Size {
-            found,
-            width,
-            height,
-        } => format!(
-            "frame {frame}: the reference {} is {found}, the frame is {width}×{height}",
-            shown(path),
-        ),
-        e => format!("{}: {e}", shown(path)),
-    })
 }
 
 fn create_dir(dir: &Path) -> Result<(), AnimError> {
