@@ -11,7 +11,7 @@
 
 use anyhow::{bail, Context};
 use std::path::Path;
-use whitted::render::adaptive::{trace, Adaptive, TILE};
+use whitted::render::adaptive::{trace, Adaptive, BAND};
 use whitted::render::Frame;
 use whitted::{trace::Tracer, Scene};
 
@@ -48,7 +48,7 @@ fn heat(scene: &str, out: &str, aa: Adaptive) -> anyhow::Result<()> {
     let scene = Scene::load(Path::new(scene))?;
     let tracer = Tracer::new(&scene);
     let (w, h) = (scene.width, scene.height);
-    let done = trace(&tracer, &scene.camera(), w, h, aa, TILE);
+    let done = trace(&tracer, &scene.camera(), w, h, aa, BAND);
     let top = (4f32).powi(aa.depth as i32).log2().max(1.0);
     let values: Vec<f32> = done
         .leaves

@@ -13,10 +13,12 @@
 //! 2^−D and its colour is a function of them alone; each pixel's first split is decided
 //! from the corner pass alone, and every finer sample is traced and counted once, whichever
 //! tile or thread asks first (`lattice.rs`), so the pixels' colours and the ray counts do
-//! not depend on the thread count, the shard or the tile size. Tiles of `tile`×`tile`
-//! pixels are the parallel work units. When a square splits is `measure.rs`'s.
+//! not depend on the thread count, the shard or the band height. Bands of `band` rows are
+//! the parallel work units, each drawn straight into the caller's buffer (the frame's
+//! bytes, a motion-blur sum, or the statistics below). When a square splits is
+//! `measure.rs`'s; the lattice's buffers are kept between frames (`store.rs`).
 
-use super::{render, render_add, Frame};
+use super::{render, render_add, to_byte, Frame};
 use crate::accel::TileView;
 use crate::camera::Camera;
 use crate::texture::Color;
@@ -28,6 +30,7 @@ use serde::Serialize;
 mod lattice;
 mod measure;
 mod parse;
+mod store;
 #[cfg(test)]
 mod tests;
 
@@ -38,8 +41,8 @@ pub use parse::AntialiasError;
 pub const MAX_DEPTH: u32 = 6;
 /// The largest threshold accepted: the sum measure's largest difference (three channels).
 pub const MAX_THRESHOLD: f64 = 3.0;
-/// Pixels a side of a parallel work unit.
-pub const TILE: u32 = 32;
+/// Pixel rows in a parallel work unit.
+pub const BAND: u32 = 16;
 
 /// `antialias = { mode = "adaptive", threshold = T, depth = D }`.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -95,9 +98,17 @@ pub fn render_with(
     match aa {
         Antialias::Grid(n) => render(tracer, camera, width, height, n),
         Antialias::Adaptive(a) => {
-            let out = trace(tracer, camera, width, height, a, TILE);
-            let frame = Frame::from_colors(out.colors, width, height);
-            (frame, out.rays)
+            let mut pixels = vec![0; width as usize * height as usize * 3];
+            let (rgb, _) = pixels.as_chunks_mut::<3>();
+            let rays = draw(tracer, camera, (width, height), a, BAND, rgb, |p, c, _| {
+                *p = [to_byte(c.x), to_byte(c.y), to_byte(c.z)]
+            });
+            let frame = Frame {
+                width,
+                height,
+                pixels,
+            };
+            (frame, rays)
         }
     }
 }
@@ -114,11 +125,8 @@ pub fn render_add_with(
     match aa {
         Antialias::Grid(n) => render_add(tracer, camera, width, height, n, sum),
         Antialias::Adaptive(a) => {
-            let out = trace(tracer, camera, width, height, a, TILE);
-            for (acc, c) in sum.iter_mut().zip(&out.colors) {
-                *acc += *c;
-            }
-            out.rays
+            let size = (width, height);
+            draw(tracer, camera, size, a, BAND, sum, |acc, c, _| *acc += c)
         }
     }
 }
@@ -202,16 +210,52 @@ where
     (sum / 4.0, split)
 }
 
-/// Every pixel of a `width`×`height` frame drawn adaptively, in tiles of `tile` pixels a
-/// side; the result does not depend on `tile` nor on the thread count.
+/// Every pixel of a `width`×`height` frame drawn adaptively, in bands of `band` rows; the
+/// result does not depend on `band` nor on the thread count.
 pub fn trace(
     tracer: &Tracer,
     camera: &Camera,
     width: u32,
     height: u32,
     aa: Adaptive,
-    tile: u32,
+    band: u32,
 ) -> Adaptively {
+    let n = width as usize * height as usize;
+    let mut pixels = vec![(Color::ZERO, Split::default()); n];
+    let rays = draw(
+        tracer,
+        camera,
+        (width, height),
+        aa,
+        band,
+        &mut pixels,
+        |p, c, s| *p = (c, s),
+    );
+    Adaptively {
+        colors: pixels.iter().map(|p| p.0).collect(),
+        leaves: pixels.iter().map(|p| p.1.leaves).collect(),
+        deepest: pixels.iter().map(|p| p.1.deepest).collect(),
+        rays,
+    }
+}
+
+/// Draws every pixel of a `width`×`height` frame adaptively, handing each one's colour and
+/// split to `put` with its element of `out` (one per pixel, rows top to bottom), in
+/// parallel bands of `band` rows; returns the rays cast. A cancelled render leaves bands
+/// untouched: its caller discards the frame.
+fn draw<T, P>(
+    tracer: &Tracer,
+    camera: &Camera,
+    (width, height): (u32, u32),
+    aa: Adaptive,
+    band: u32,
+    out: &mut [T],
+    put: P,
+) -> RayCount
+where
+    T: Send,
+    P: Fn(&mut T, Color, Split) + Sync,
+{
     let depth = aa.depth.min(MAX_DEPTH);
     let aa = Adaptive { depth, ..aa };
     let view = TileView::new(camera, width, height, &tracer.scene().objects);
@@ -225,55 +269,25 @@ pub fn trace(
     };
     let mut rays = RayCount::default();
     let lattice = Lattice::new(probe, &aa, &mut rays);
-    let tile = tile.max(1);
-    let (cols, rows) = (width.div_ceil(tile), height.div_ceil(tile));
-    let tiles: Vec<(Vec<(Color, Split)>, RayCount)> = (0..cols * rows)
-        .into_par_iter()
-        .map(|t| {
-            let (ti, tj) = (t % cols, t / cols);
-            let mut count = RayCount::default();
-            let mut out = Vec::new();
-            let mut scratch = Scratch::new(depth);
-            let band = tj * tile..((tj + 1) * tile).min(height);
-            if super::control::stop_row() {
-                // Cancelled: the caller discards the frame; an empty tile leaves its
-                // pixels as they were made, zero.
-                return (out, count);
-            }
-            for j in band.clone() {
-                for i in ti * tile..((ti + 1) * tile).min(width) {
-                    out.push(pixel(&lattice, &aa, (i, j), &mut scratch, &mut count));
-                }
-            }
-            if ti + 1 == cols {
-                // Progress by bands of rows: a band counts when its last column's tile ends.
-                super::control::rows_done_by(band.len() as u64);
-            }
-            (out, count)
-        })
-        .collect();
-    let n = width as usize * height as usize;
-    let mut result = Adaptively {
-        colors: vec![Color::ZERO; n],
-        leaves: vec![0; n],
-        deepest: vec![0; n],
-        rays: RayCount::default(),
-    };
-    for (t, (pixels, count)) in tiles.into_iter().enumerate() {
-        let (ti, tj) = (t as u32 % cols, t as u32 / cols);
-        let x0 = ti * tile;
-        let w = (((ti + 1) * tile).min(width) - x0) as usize;
-        for (k, (c, s)) in pixels.into_iter().enumerate() {
-            let (i, j) = (x0 as usize + k % w, (tj * tile) as usize + k / w);
-            let at = j * width as usize + i;
-            result.colors[at] = c;
-            result.leaves[at] = s.leaves;
-            result.deepest[at] = s.deepest;
+    let w = width as usize;
+    let rows = band.max(1) as usize * w;
+    let bands = out.par_chunks_mut(rows.max(1)).enumerate();
+    let drawn = bands.map(|(b, pixels)| {
+        let mut count = RayCount::default();
+        if super::control::stop_row() {
+            return count;
         }
-        rays = rays + count;
-    }
-    result.rays = rays;
-    result
+        let mut scratch = Scratch::new(depth);
+        for (k, slot) in pixels.iter_mut().enumerate() {
+            let at = b * rows + k;
+            let (i, j) = ((at % w) as u32, (at / w) as u32);
+            let (c, s) = pixel(&lattice, &aa, (i, j), &mut scratch, &mut count);
+            put(slot, c, s);
+        }
+        super::control::rows_done_by((pixels.len() / w) as u64);
+        count
+    });
+    rays + drawn.reduce(RayCount::default, |a, b| a + b)
 }
 
 /// Pixel (i, j): its square of the lattice, split as the lattice decided and then as its

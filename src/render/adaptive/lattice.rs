@@ -7,10 +7,13 @@
 //!   from them alone each pixel's first split is decided, before any finer sample;
 //! - the finer points on a pixel's border, shared with the neighbour across it: one map per
 //!   pixel row behind a lock (a point on a row's top edge belongs to the row above);
-//! - the points inside a pixel, which no other pixel asks for: the tile's own scratch,
+//! - the points inside a pixel, which no other pixel asks for: the worker's own scratch,
 //!   no lock, no hashing.
+//!
+//! The first two live in a `Store`, kept between frames (`store.rs`).
 
-use super::{Adaptive, TILE};
+use super::store::Store;
+use super::{Adaptive, BAND};
 use crate::accel::TileView;
 use crate::camera::Camera;
 use crate::texture::Color;
@@ -18,7 +21,6 @@ use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
 use std::collections::hash_map::Entry;
 use std::collections::HashMap;
-use std::sync::Mutex;
 
 /// The hash of a lattice point for the border maps: the two coordinates packed and
 /// multiplied by an odd constant (Fibonacci hashing), high half folded in. The keys are
@@ -47,7 +49,7 @@ impl std::hash::Hasher for PointHasher {
 pub(super) type BuildPointHasher = std::hash::BuildHasherDefault<PointHasher>;
 
 /// The finer border samples of one pixel row, by lattice point.
-type SampleMap = HashMap<(u32, u32), Color, BuildPointHasher>;
+pub(super) type SampleMap = HashMap<(u32, u32), Color, BuildPointHasher>;
 
 /// What traces a lattice point: the tracer, the camera and the lattice's size.
 pub(super) struct Probe<'a> {
@@ -75,15 +77,17 @@ impl Probe<'_> {
     }
 }
 
-/// One traced lattice: the pixel corners and first splits, and the shared border samples.
+/// One traced lattice: the pixel corners and first splits, and the shared border samples
+/// (rows top to bottom; one map per pixel row, for its inside and its bottom edge).
 pub(super) struct Lattice<'a> {
     probe: Probe<'a>,
-    /// The pixel corners, (width+1)·(height+1), rows top to bottom.
-    corners: Vec<Color>,
-    /// Whether each pixel splits at all, rows top to bottom.
-    split: Vec<bool>,
-    /// The finer border samples, one map per pixel row (its inside and its bottom edge).
-    memo: Vec<Mutex<SampleMap>>,
+    store: Store,
+}
+
+impl Drop for Lattice<'_> {
+    fn drop(&mut self) {
+        std::mem::take(&mut self.store).give_back();
+    }
 }
 
 impl<'a> Lattice<'a> {
@@ -92,9 +96,10 @@ impl<'a> Lattice<'a> {
     /// discards the frame.)
     pub fn new(probe: Probe<'a>, aa: &Adaptive, rays: &mut RayCount) -> Lattice<'a> {
         let (w, h, d) = (probe.width as usize, probe.height as usize, probe.depth);
-        let mut corners = vec![Color::ZERO; (w + 1) * (h + 1)];
+        let mut store = Store::take(w, h);
         *rays = *rays
-            + corners
+            + store
+                .corners
                 .par_chunks_mut(w + 1)
                 .enumerate()
                 .map(|(j, row)| {
@@ -108,14 +113,14 @@ impl<'a> Lattice<'a> {
                     count
                 })
                 .reduce(RayCount::default, |a, b| a + b);
-        let split = first_splits(&corners, w, h, aa);
-        let memo = (0..h).map(|_| Mutex::default()).collect();
-        Lattice {
-            probe,
+        let Store {
             corners,
+            own,
             split,
-            memo,
-        }
+            ..
+        } = &mut store;
+        first_splits(corners, (w, h), aa, own, split);
+        Lattice { probe, store }
     }
 
     /// The lattice's depth (its pitch is 2^−depth pixel).
@@ -128,8 +133,8 @@ impl<'a> Lattice<'a> {
     pub fn pixel(&self, i: u32, j: u32) -> ([Color; 4], bool) {
         let w = self.probe.width as usize;
         let k = j as usize * (w + 1) + i as usize;
-        let c = self.corners.as_slice();
-        let split = self.split[j as usize * w + i as usize];
+        let c = self.store.corners.as_slice();
+        let split = self.store.split[j as usize * w + i as usize];
         ([c[k], c[k + 1], c[k + w + 1], c[k + w + 2]], split)
     }
 
@@ -169,7 +174,7 @@ impl<'a> Lattice<'a> {
             (y >> depth).min(height - 1)
         };
         let lock = || {
-            self.memo[row as usize]
+            self.store.memo[row as usize]
                 .lock()
                 .unwrap_or_else(|e| e.into_inner())
         };
@@ -191,13 +196,21 @@ impl<'a> Lattice<'a> {
     }
 }
 
-/// Whether each pixel of a `w`×`h` frame splits at all, from its corners (the
+/// Whether each pixel of a `w`×`h` frame splits at all, into `split`, from its corners (the
 /// `(w+1)·(h+1)` lattice `corners`) and, under `edge`, its neighbours': a pixel splits when
 /// its corners differ, or when they agree and two or more of its four neighbours' corners
-/// differ (each neighbour judged on its own corners, so nothing spreads further).
-pub(super) fn first_splits(corners: &[Color], w: usize, h: usize, aa: &Adaptive) -> Vec<bool> {
+/// differ (each neighbour judged on its own corners, `own`, so nothing spreads further).
+/// Both flag buffers hold `w·h` entries.
+pub(super) fn first_splits(
+    corners: &[Color],
+    (w, h): (usize, usize),
+    aa: &Adaptive,
+    own: &mut [bool],
+    split: &mut [bool],
+) {
     if aa.depth == 0 {
-        return vec![false; w * h];
+        split.fill(false);
+        return;
     }
     let corner = |k: usize| {
         let at = (k / w) * (w + 1) + k % w;
@@ -208,26 +221,27 @@ pub(super) fn first_splits(corners: &[Color], w: usize, h: usize, aa: &Adaptive)
             corners[at + w + 2],
         ]
     };
-    let own: Vec<bool> = (0..w * h)
-        .into_par_iter()
-        .with_min_len(TILE as usize * TILE as usize)
-        .map(|k| aa.measure.differ(aa.threshold, &corner(k), 0))
-        .collect();
+    let rows = BAND as usize * w.max(1);
+    own.par_chunks_mut(rows).enumerate().for_each(|(b, flags)| {
+        for (k, flag) in flags.iter_mut().enumerate() {
+            *flag = aa.measure.differ(aa.threshold, &corner(b * rows + k), 0);
+        }
+    });
     if !aa.measure.splits_amid_neighbours() {
-        return own;
+        split.copy_from_slice(own);
+        return;
     }
-    (0..w * h)
-        .map(|k| {
-            let (i, j) = (k % w, k / w);
-            let near = [
-                i > 0 && own[k - 1],
-                i + 1 < w && own[k + 1],
-                j > 0 && own[k - w],
-                j + 1 < h && own[k + w],
-            ];
-            own[k] || near.iter().filter(|&&n| n).count() >= 2
-        })
-        .collect()
+    let own = &*own;
+    for (k, flag) in split.iter_mut().enumerate().take(w * h) {
+        let (i, j) = (k % w, k / w);
+        let near = [
+            i > 0 && own[k - 1],
+            i + 1 < w && own[k + 1],
+            j > 0 && own[k - w],
+            j + 1 < h && own[k + w],
+        ];
+        *flag = own[k] || near.iter().filter(|&&n| n).count() >= 2;
+    }
 }
 
 /// One worker's samples of the pixel it is drawing, (2^D + 1)² cells stamped with the

@@ -111,7 +111,11 @@ fn under_edge_a_pixel_amid_two_splitting_neighbours_splits() {
     let mut corners = vec![BLACK; 16];
     corners[4] = WHITE;
     corners[7] = WHITE;
-    let splits = |a: Adaptive| lattice::first_splits(&corners, 3, 3, &a);
+    let splits = |a: Adaptive| {
+        let (mut own, mut split) = ([false; 9], [true; 9]);
+        lattice::first_splits(&corners, (3, 3), &a, &mut own, &mut split);
+        split
+    };
     let (t, f) = (true, false);
     assert_eq!(splits(aa(0.5, 2)), [t, f, t, t, f, t, f, f, f]);
     assert_eq!(splits(edge(0.5, 2)), [t, t, t, t, t, t, f, f, f]);
@@ -129,15 +133,15 @@ const SPHERE: &str = "8 8  0 0 5  0 0 0  0 0  1 0 0 1\n\
                       1 0 0 0  1 1 1 1  1 0 0 1 0 0\n\
                       0 0 5  1 1 1  1\n";
 
-fn traced(text: &str, a: Adaptive, tile: u32) -> Adaptively {
+fn traced(text: &str, a: Adaptive, band: u32) -> Adaptively {
     let scene = Scene::parse(text, "t.txt").unwrap();
     let tracer = Tracer::new(&scene);
-    trace(&tracer, &scene.camera(), scene.width, scene.height, a, tile)
+    trace(&tracer, &scene.camera(), scene.width, scene.height, a, band)
 }
 
 #[test]
 fn a_flat_scene_casts_only_its_corner_rays() {
-    let out = traced(FLAT, aa(0.0, 3), TILE);
+    let out = traced(FLAT, aa(0.0, 3), BAND);
     assert_eq!(out.rays.primary, 5 * 4);
     assert_eq!(out.rays.total(), 5 * 4);
     let c = Color::new(0.3, 0.6, 0.9) * 0.2;
@@ -154,7 +158,7 @@ fn a_pixel_on_the_sphere_edge_splits_to_the_depth() {
     // inside pixel 7: pixel (7, 4) has its left corners on the sphere, its right ones in
     // the black sky.
     for depth in [1, 3, 4] {
-        let out = traced(SPHERE, aa(0.1, depth), TILE);
+        let out = traced(SPHERE, aa(0.1, depth), BAND);
         let at = 4 * 8 + 7;
         assert_eq!(out.deepest[at], depth, "depth {depth}");
         assert!(out.leaves[at] > 3 * depth);
@@ -181,11 +185,11 @@ fn same_colours_and_rays_whatever_the_tiles_and_threads() {
     for a in [aa(0.1, 3), edge(0.1, 3), edge(0.05, 2)] {
         let reference = pool(1).install(|| trace(&tracer, &camera, w, h, a, 1));
         assert!(reference.leaves.iter().any(|&n| n > 1));
-        for (threads, tile) in [(1, 32), (2, 1), (2, 5), (2, 32), (3, 7)] {
-            let out = pool(threads).install(|| trace(&tracer, &camera, w, h, a, tile));
+        for (threads, band) in [(1, 32), (2, 1), (2, 5), (2, 32), (3, 7)] {
+            let out = pool(threads).install(|| trace(&tracer, &camera, w, h, a, band));
             assert_eq!(
                 out.colors, reference.colors,
-                "{a:?}: {threads} threads, tile {tile}"
+                "{a:?}: {threads} threads, band {band}"
             );
             assert_eq!(out.leaves, reference.leaves);
             assert_eq!(out.rays, reference.rays);
@@ -198,7 +202,7 @@ fn shared_samples_are_traced_once() {
     // The corners cost one ray per lattice point (81), and every split at most 5 new
     // samples; quarters and pixels that split side by side share their edge samples, so
     // the primary rays beyond the corners are fewer than 5 a split.
-    let out = traced(SPHERE, aa(0.1, 3), TILE);
+    let out = traced(SPHERE, aa(0.1, 3), BAND);
     let splits: u64 = out.leaves.iter().map(|&n| u64::from(n - 1) / 3).sum();
     let finer = out.rays.primary - 81;
     assert!(
