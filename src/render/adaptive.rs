@@ -27,6 +27,7 @@ use lattice::{Lattice, Probe, Scratch};
 use rayon::prelude::*;
 use serde::Serialize;
 
+mod edges;
 mod lattice;
 mod measure;
 mod parse;

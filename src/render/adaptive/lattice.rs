@@ -2,11 +2,11 @@
 //! 2^−D pixel and is named by its integer coordinates (X, Y), its colour a function of
 //! (X, Y) alone (the camera ray through X·2^−D, Y·2^−D, exact in binary).
 //!
-//! Three stores, so that each point is traced once whichever tile or thread asks first:
+//! Three stores, so that each point is traced once whichever band or thread asks first:
 //! - the pixel corners (the multiples of 2^D), traced first in parallel over lattice rows;
 //!   from them alone each pixel's first split is decided, before any finer sample;
-//! - the finer points on a pixel's border, shared with the neighbour across it: one map per
-//!   pixel row behind a lock (a point on a row's top edge belongs to the row above);
+//! - the finer points on a pixel's border, shared with the neighbour across it: a cell per
+//!   point of every edge next to a pixel that splits (`edges.rs`);
 //! - the points inside a pixel, which no other pixel asks for: the worker's own scratch,
 //!   no lock, no hashing.
 //!
@@ -19,37 +19,6 @@ use crate::camera::Camera;
 use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
-use std::collections::hash_map::Entry;
-use std::collections::HashMap;
-
-/// The hash of a lattice point for the border maps: the two coordinates packed and
-/// multiplied by an odd constant (Fibonacci hashing), high half folded in. The keys are
-/// small distinct integer pairs chosen by the render, not by an adversary, so SipHash's
-/// resistance buys nothing and its cost was paid on every finer sample.
-#[derive(Default)]
-pub(super) struct PointHasher(u64);
-
-impl std::hash::Hasher for PointHasher {
-    fn finish(&self) -> u64 {
-        // The product's high half (which both coordinates reach) folded into its low
-        // half, whose bits alone would see only y: the table indexes by the low bits.
-        let h = self.0.wrapping_mul(0x9E37_79B9_7F4A_7C15);
-        h ^ (h >> 32)
-    }
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.0 = self.0.rotate_left(8) ^ u64::from(b);
-        }
-    }
-    fn write_u32(&mut self, v: u32) {
-        self.0 = self.0 << 32 | u64::from(v);
-    }
-}
-
-pub(super) type BuildPointHasher = std::hash::BuildHasherDefault<PointHasher>;
-
-/// The finer border samples of one pixel row, by lattice point.
-pub(super) type SampleMap = HashMap<(u32, u32), Color, BuildPointHasher>;
 
 /// What traces a lattice point: the tracer, the camera and the lattice's size.
 pub(super) struct Probe<'a> {
@@ -77,8 +46,8 @@ impl Probe<'_> {
     }
 }
 
-/// One traced lattice: the pixel corners and first splits, and the shared border samples
-/// (rows top to bottom; one map per pixel row, for its inside and its bottom edge).
+/// One traced lattice: the pixel corners and first splits (rows top to bottom), and the
+/// shared border samples.
 pub(super) struct Lattice<'a> {
     probe: Probe<'a>,
     store: Store,
@@ -117,9 +86,10 @@ impl<'a> Lattice<'a> {
             corners,
             own,
             split,
-            ..
+            edges,
         } = &mut store;
         first_splits(corners, (w, h), aa, own, split);
+        edges.prepare(split, (w, h), d);
         Lattice { probe, store }
     }
 
@@ -139,7 +109,7 @@ impl<'a> Lattice<'a> {
     }
 
     /// The sample at lattice point (x, y) of pixel (i, j), not one of its corners: from the
-    /// scratch, else traced (and shared through the row's map when it is on the border).
+    /// scratch, else traced (and shared through its edge cell when it is on the border).
     pub fn sample(
         &self,
         (i, j): (u32, u32),
@@ -164,35 +134,13 @@ impl<'a> Lattice<'a> {
         c
     }
 
-    /// A border point, traced if no one has yet.
+    /// A border point, traced if no one has yet (the first to ask traces and counts it).
     fn shared(&self, x: u32, y: u32, count: &mut RayCount) -> Color {
-        let Probe { depth, height, .. } = self.probe;
-        let mask = (1u32 << depth) - 1;
-        let row = if y & mask == 0 && y > 0 {
-            (y >> depth) - 1
-        } else {
-            (y >> depth).min(height - 1)
-        };
-        let lock = || {
-            self.store.memo[row as usize]
-                .lock()
-                .unwrap_or_else(|e| e.into_inner())
-        };
-        if let Some(&c) = lock().get(&(x, y)) {
-            return c;
-        }
-        // Traced outside the lock; when another thread traced the point meanwhile (only
-        // on a pixel row's top or bottom edge), the colours are the same and the first
-        // one's rays are the ones counted: each point counts once, whoever traced it.
-        let mut own = RayCount::default();
-        let c = self.probe.trace(x, y, &mut own);
-        match lock().entry((x, y)) {
-            Entry::Occupied(first) => *first.get(),
-            Entry::Vacant(slot) => {
-                *count = *count + own;
-                *slot.insert(c)
-            }
-        }
+        *self
+            .store
+            .edges
+            .cell(x, y)
+            .get_or_init(|| self.probe.trace(x, y, count))
     }
 }
 
@@ -212,36 +160,42 @@ pub(super) fn first_splits(
         split.fill(false);
         return;
     }
-    let corner = |k: usize| {
-        let at = (k / w) * (w + 1) + k % w;
-        [
-            corners[at],
-            corners[at + 1],
-            corners[at + w + 1],
-            corners[at + w + 2],
-        ]
-    };
-    let rows = BAND as usize * w.max(1);
-    own.par_chunks_mut(rows).enumerate().for_each(|(b, flags)| {
-        for (k, flag) in flags.iter_mut().enumerate() {
-            *flag = aa.measure.differ(aa.threshold, &corner(b * rows + k), 0);
-        }
-    });
+    if w == 0 || h == 0 {
+        return;
+    }
+    let rows = (BAND as usize).max(1);
+    let lines: Vec<&[Color]> = corners.chunks(w + 1).collect();
+    own.par_chunks_mut(w)
+        .enumerate()
+        .with_min_len(rows)
+        .for_each(|(j, flags)| {
+            let pairs = lines[j].windows(2).zip(lines[j + 1].windows(2));
+            for (flag, (top, bottom)) in flags.iter_mut().zip(pairs) {
+                let c = [top[0], top[1], bottom[0], bottom[1]];
+                *flag = aa.measure.differ(aa.threshold, &c, 0);
+            }
+        });
     if !aa.measure.splits_amid_neighbours() {
         split.copy_from_slice(own);
         return;
     }
     let own = &*own;
-    for (k, flag) in split.iter_mut().enumerate().take(w * h) {
-        let (i, j) = (k % w, k / w);
-        let near = [
-            i > 0 && own[k - 1],
-            i + 1 < w && own[k + 1],
-            j > 0 && own[k - w],
-            j + 1 < h && own[k + w],
-        ];
-        *flag = own[k] || near.iter().filter(|&&n| n).count() >= 2;
-    }
+    split
+        .par_chunks_mut(w)
+        .enumerate()
+        .with_min_len(rows)
+        .for_each(|(j, flags)| {
+            let row = &own[j * w..(j + 1) * w];
+            let above = (j > 0).then(|| &own[(j - 1) * w..j * w]);
+            let below = (j + 1 < h).then(|| &own[(j + 1) * w..(j + 2) * w]);
+            for (i, flag) in flags.iter_mut().enumerate() {
+                let near = usize::from(i > 0 && row[i - 1])
+                    + usize::from(i + 1 < w && row[i + 1])
+                    + usize::from(above.is_some_and(|r| r[i]))
+                    + usize::from(below.is_some_and(|r| r[i]));
+                *flag = row[i] || near >= 2;
+            }
+        });
 }
 
 /// One worker's samples of the pixel it is drawing, (2^D + 1)² cells stamped with the

@@ -1,5 +1,5 @@
 //! The buffers of one adaptive frame's lattice (its corners, its pixels' first splits and
-//! its border maps), kept between frames. An animation draws frame after frame of the same
+//! its border cells), kept between frames. An animation draws frame after frame of the same
 //! size, several at a time; allocating these anew for each frame cost more than ten
 //! megabytes of fresh pages a frame at 640×480, and the kernel's time to zero them. A
 //! frame takes a store from the spares (or makes one), sizes it, and gives it back when
@@ -7,12 +7,11 @@
 //! the frames that were once in flight together.
 //!
 //! Nothing a store held survives into the next frame's colours: every corner is written
-//! before it is read, the splits are recomputed, and the maps are emptied.
+//! before it is read, the splits are recomputed, and the cells are laid out anew, empty.
 
+use super::edges::Edges;
 use crate::texture::Color;
 use std::sync::Mutex;
-
-use super::lattice::SampleMap;
 
 /// One lattice's buffers.
 #[derive(Default)]
@@ -23,8 +22,8 @@ pub(super) struct Store {
     pub own: Vec<bool>,
     /// Whether each pixel splits at all.
     pub split: Vec<bool>,
-    /// The finer border samples, one map per pixel row.
-    pub memo: Vec<Mutex<SampleMap>>,
+    /// The finer border samples (laid out by the lattice once the splits are known).
+    pub edges: Edges,
 }
 
 /// Stores given back and not yet taken again.
@@ -38,7 +37,7 @@ fn spare_limit() -> usize {
 
 impl Store {
     /// A store for a `width`×`height` frame: a spare one when there is one, its corners
-    /// zero, its splits false and its `height` maps empty.
+    /// zero and its splits false.
     pub fn take(width: usize, height: usize) -> Store {
         let spare = SPARE.lock().ok().and_then(|mut s| s.pop());
         let mut store = spare.unwrap_or_default();
@@ -50,11 +49,6 @@ impl Store {
             flags.clear();
             flags.resize(width * height, false);
         }
-        store.memo.truncate(height);
-        for map in &mut store.memo {
-            map.get_mut().unwrap_or_else(|e| e.into_inner()).clear();
-        }
-        store.memo.resize_with(height, Mutex::default);
         store
     }
 
@@ -80,15 +74,10 @@ mod tests {
         old.corners.iter_mut().for_each(|c| *c = Color::ONE);
         old.split.iter_mut().for_each(|s| *s = true);
         old.own.iter_mut().for_each(|s| *s = true);
-        for map in &mut old.memo {
-            map.get_mut().unwrap().insert((1, 1), Color::ONE);
-        }
         old.give_back();
         let new = Store::take(2, 4);
         assert_eq!(new.corners, vec![Color::ZERO; 3 * 5]);
         assert_eq!(new.split, vec![false; 8]);
         assert_eq!(new.own, vec![false; 8]);
-        assert_eq!(new.memo.len(), 4);
-        assert!(new.memo.iter().all(|m| m.lock().unwrap().is_empty()));
     }
 }

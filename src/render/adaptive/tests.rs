@@ -236,16 +236,3 @@ fn grid_dispatch_is_render() {
     );
     assert_eq!(Frame::from_sum(&sum, 1, 8, 8), frame);
 }
-
-#[test]
-fn the_point_hash_by_hand_and_its_low_bits_see_both_coordinates() {
-    use std::hash::BuildHasher;
-    let hash = |p: (u32, u32)| lattice::BuildPointHasher::default().hash_one(p);
-    // (1, 2) packs to 2^32 + 2; times 0x9E3779B97F4A7C15 (mod 2^64) is
-    // 0x3C6EF372FE94F82A + 0x7F4A7C1500000000 = 0xBBB96F87FE94F82A, and the high half
-    // folded into the low: 0xFE94F82A ^ 0xBBB96F87 = 0x452D97AD.
-    assert_eq!(hash((1, 2)), 0xBBB9_6F87_452D_97AD);
-    // One lattice row (y fixed, as in a pixel row's map): the table's low bits differ.
-    let low: std::collections::HashSet<u64> = (0..64).map(|x| hash((x, 8)) & 63).collect();
-    assert!(low.len() > 32, "{} distinct buckets of 64", low.len());
-}
