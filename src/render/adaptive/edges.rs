@@ -86,6 +86,12 @@ impl Edges {
         at as usize
     }
 
+    /// The memory the layout holds.
+    pub fn bytes(&self) -> usize {
+        (self.across.capacity() + self.down.capacity()) * std::mem::size_of::<u32>()
+            + self.cells.capacity() * std::mem::size_of::<OnceLock<Color>>()
+    }
+
     /// The number of cells laid out.
     #[cfg(test)]
     pub fn len(&self) -> usize {

@@ -3,8 +3,9 @@
 //! size, several at a time; allocating these anew for each frame cost more than ten
 //! megabytes of fresh pages a frame at 640×480, and the kernel's time to zero them. A
 //! frame takes a store from the spares (or makes one), sizes it, and gives it back when
-//! its lattice is dropped; at most `spare_limit()` stores wait, so memory stays bounded by
-//! the frames that were once in flight together.
+//! its lattice is dropped. The spares are as many as the frames once in flight together,
+//! and hold at most `SPARE_BYTES` in all, so that a long-lived process (the live view)
+//! that once drew large frames side by side does not keep them all.
 //!
 //! Nothing a store held survives into the next frame's colours: every corner is written
 //! before it is read, the splits are recomputed, and the cells are laid out anew, empty.
@@ -29,10 +30,13 @@ pub(super) struct Store {
 /// Stores given back and not yet taken again.
 static SPARE: Mutex<Vec<Store>> = Mutex::new(Vec::new());
 
-/// The most stores kept waiting: one per frame in flight, which the renderers bound by a
-/// small multiple of the thread count.
-fn spare_limit() -> usize {
-    4 * rayon::current_num_threads()
+/// The most memory the waiting stores may hold: a few 1080p frames' worth (one takes
+/// about 75 MB there, about 12 MB at 640×480 and depth 2).
+const SPARE_BYTES: usize = 256 << 20;
+
+/// Whether a store of `bytes` is kept when the waiting ones hold `waiting` bytes.
+fn keeps(waiting: usize, bytes: usize) -> bool {
+    waiting.saturating_add(bytes) <= SPARE_BYTES
 }
 
 impl Store {
@@ -55,10 +59,19 @@ impl Store {
     /// Gives the buffers back for the next frame (dropped when enough wait already).
     pub fn give_back(self) {
         if let Ok(mut spare) = SPARE.lock() {
-            if spare.len() < spare_limit() {
+            let waiting = spare.iter().map(Store::bytes).sum();
+            if keeps(waiting, self.bytes()) {
                 spare.push(self);
             }
         }
+    }
+
+    /// The memory the store's buffers hold.
+    fn bytes(&self) -> usize {
+        self.corners.capacity() * std::mem::size_of::<Color>()
+            + self.own.capacity()
+            + self.split.capacity()
+            + self.edges.bytes()
     }
 }
 
@@ -79,5 +92,24 @@ mod tests {
         assert_eq!(new.corners, vec![Color::ZERO; 3 * 5]);
         assert_eq!(new.split, vec![false; 8]);
         assert_eq!(new.own, vec![false; 8]);
+    }
+
+    #[test]
+    fn the_spares_hold_at_most_the_budget() {
+        // 256 MiB = 268,435,456 bytes: a store that fits beside the waiting ones is kept,
+        // one byte more is not.
+        assert!(keeps(0, 12 << 20));
+        assert!(keeps(200 << 20, 56 << 20));
+        assert!(!keeps(200 << 20, (56 << 20) + 1));
+        assert!(!keeps(usize::MAX, 1));
+        // A 3×2 frame's buffers: 12 corners of 24 bytes and two flags of 6 bytes each, and
+        // no edge cells laid out.
+        let store = Store {
+            corners: vec![Color::ZERO; 12],
+            own: vec![false; 6],
+            split: vec![false; 6],
+            edges: Edges::default(),
+        };
+        assert_eq!(store.bytes(), 12 * 24 + 2 * 6);
     }
 }
