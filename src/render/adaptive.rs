@@ -12,7 +12,7 @@
 //! Determinism. Every sample is named by its integer coordinates on the lattice of pitch
 //! 2^−D and its colour is a function of them alone; each pixel's first split is decided
 //! from the corner pass alone, and every finer sample is traced and counted once, whichever
-//! tile or thread asks first (`lattice.rs`), so the pixels' colours and the ray counts do
+//! band or thread asks first (`lattice.rs`), so the pixels' colours and the ray counts do
 //! not depend on the thread count, the shard or the band height. Bands of `band` rows are
 //! the parallel work units, each drawn straight into the caller's buffer (the frame's
 //! bytes, a motion-blur sum, or the statistics below). When a square splits is
