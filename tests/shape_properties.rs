@@ -58,6 +58,9 @@ struct Expect<'a> {
     scale: f64,
     /// How far t may be from a reference root.
     t_tol: f64,
+    /// The radius: a hit point off the surface by e has a normal (C→P / R) whose length
+    /// is off 1 by e / R, which for a small sphere far away exceeds 1e-9.
+    radius: f64,
 }
 
 fn check(shape: &Shape, ray: &Ray, e: &Expect) -> Result<(), TestCaseError> {
@@ -106,12 +109,14 @@ fn check(shape: &Shape, ray: &Ray, e: &Expect) -> Result<(), TestCaseError> {
             roots
         );
     }
-    // The normal is unit and outward.
+    // The normal is unit and outward, to within what the point's own error allows (found
+    // with a sphere of radius 0.056 at 118 units: |n| − 1 = 1.08e-9).
     let n = shape.normal(p);
-    prop_assert!((n.length() - 1.0).abs() < 1e-9, "|n| = {}", n.length());
+    let n_tol = 1e-9 + 2.0 * err.abs() / e.radius;
+    prop_assert!((n.length() - 1.0).abs() <= n_tol, "|n| = {}", n.length());
     let want = (e.outward)(p);
     prop_assert!(
-        (n - want).length() < 1e-9 * e.scale,
+        (n - want).length() <= 1e-9 * e.scale + n_tol,
         "normal {} at {}, expected {}",
         n,
         p,
@@ -137,6 +142,7 @@ fn check_sphere(c: DVec3, r: f64, ray: &Ray) -> Result<Option<f64>, TestCaseErro
         roots,
         scale,
         t_tol: 1e-6 * scale,
+        radius: r,
     };
     check(&shape, ray, &e)?;
     Ok(shape.hit(ray, f64::INFINITY))
@@ -163,6 +169,7 @@ fn check_cylinder(axis: DVec3, q: DVec3, r: f64, ray: &Ray) -> Result<Option<f64
         roots,
         scale,
         t_tol: 1e-6 * scale,
+        radius: r,
     };
     check(&shape, ray, &e)?;
     Ok(shape.hit(ray, f64::INFINITY))
@@ -195,9 +202,12 @@ proptest! {
         prop_assume!(dir.is_some());
         let ray = Ray::new(origin, dir.unwrap());
         let hit = check_sphere(c, r, &ray)?;
-        // From outside, the first hit enters: the outward normal faces the ray.
+        // From outside, the first hit enters: the outward normal faces the ray. Only from
+        // farther than the epsilon: an origin within T_MIN of the surface has its entry
+        // taken for a self-intersection, and its first hit is the exit (found with an
+        // origin 0.005 outside, saved in shape_properties.proptest-regressions).
         if let Some(t) = hit {
-            if (origin - c).length() > r * (1.0 + 1e-9) + 1e-9 {
+            if (origin - c).length() > r + 2.0 * T_MIN {
                 let n = Shape::Sphere(Sphere::new(c, r)).normal(ray.at(t));
                 prop_assert!(n.dot(ray.dir) <= 1e-6, "entering, yet n·d = {}", n.dot(ray.dir));
             }
@@ -253,6 +263,7 @@ proptest! {
             roots,
             scale: scale + if denom.abs() < 1e-9 { 0.0 } else { t_ref.abs() },
             t_tol: 1e-9 * scale / denom.abs().max(1e-300),
+            radius: f64::INFINITY,
         };
         check(&shape, &ray, &e)?;
         // Two-sided: the normal given, normalised, whichever side the ray comes from.
@@ -283,9 +294,10 @@ proptest! {
             let n = shape.normal(ray.at(t));
             // Perpendicular to the axis.
             prop_assert!(n.dot(axis).abs() < 1e-9, "n·axis = {}", n.dot(axis));
-            // From outside, the first hit enters.
+            // From outside, the first hit enters; only from farther than the epsilon, as
+            // for the sphere (found with an origin 0.0068 outside).
             let o = (origin - q) - axis * (origin - q).dot(axis);
-            if o.length() > r * (1.0 + 1e-9) + 1e-9 {
+            if o.length() > r + 2.0 * T_MIN {
                 prop_assert!(n.dot(ray.dir) <= 1e-6, "entering, yet n·d = {}", n.dot(ray.dir));
             }
         }
@@ -420,6 +432,7 @@ fn the_checks_catch_a_skipped_root() {
         roots: (vec![4.0, 6.0], false),
         scale: 10.0,
         t_tol: 1e-6,
+        radius: 1.0,
     };
     // The real sphere passes.
     assert!(check(&Shape::Sphere(Sphere::new(c, 1.0)), &ray, &e).is_ok());
@@ -436,6 +449,7 @@ fn the_checks_catch_a_skipped_root() {
         roots: (vec![4.0, 6.0], false),
         scale: 10.0,
         t_tol: 1e-6,
+        radius: 1.0,
     };
     assert!(check(&Shape::Sphere(Sphere::new(c, 1.0)), &ray, &off).is_err());
     // An inward normal.
@@ -445,6 +459,7 @@ fn the_checks_catch_a_skipped_root() {
         roots: (vec![4.0, 6.0], false),
         scale: 10.0,
         t_tol: 1e-6,
+        radius: 1.0,
     };
     assert!(check(&Shape::Sphere(Sphere::new(c, 1.0)), &ray, &inward).is_err());
 }
