@@ -270,20 +270,20 @@ where
     };
     let mut rays = RayCount::default();
     let lattice = Lattice::new(probe, &aa, &mut rays);
-    let w = width as usize;
-    let rows = band.max(1) as usize * w;
-    let bands = out.par_chunks_mut(rows.max(1)).enumerate();
+    let (w, band) = ((width as usize).max(1), band.max(1) as usize);
+    let bands = out.par_chunks_mut(band * w).enumerate();
     let drawn = bands.map(|(b, pixels)| {
         let mut count = RayCount::default();
         if super::control::stop_row() {
             return count;
         }
         let mut scratch = Scratch::new(depth);
-        for (k, slot) in pixels.iter_mut().enumerate() {
-            let at = b * rows + k;
-            let (i, j) = ((at % w) as u32, (at / w) as u32);
-            let (c, s) = pixel(&lattice, &aa, (i, j), &mut scratch, &mut count);
-            put(slot, c, s);
+        for (r, row) in pixels.chunks_mut(w).enumerate() {
+            let j = (b * band + r) as u32;
+            for (i, slot) in row.iter_mut().enumerate() {
+                let (c, s) = pixel(&lattice, &aa, (i as u32, j), &mut scratch, &mut count);
+                put(slot, c, s);
+            }
         }
         super::control::rows_done_by((pixels.len() / w) as u64);
         count

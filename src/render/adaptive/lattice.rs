@@ -163,13 +163,13 @@ pub(super) fn first_splits(
     if w == 0 || h == 0 {
         return;
     }
-    let rows = (BAND as usize).max(1);
-    let lines: Vec<&[Color]> = corners.chunks(w + 1).collect();
+    let rows = BAND as usize;
+    let line = |j: usize| &corners[j * (w + 1)..(j + 1) * (w + 1)];
     own.par_chunks_mut(w)
         .enumerate()
         .with_min_len(rows)
         .for_each(|(j, flags)| {
-            let pairs = lines[j].windows(2).zip(lines[j + 1].windows(2));
+            let pairs = line(j).windows(2).zip(line(j + 1).windows(2));
             for (flag, (top, bottom)) in flags.iter_mut().zip(pairs) {
                 let c = [top[0], top[1], bottom[0], bottom[1]];
                 *flag = aa.measure.differ(aa.threshold, &c, 0);
