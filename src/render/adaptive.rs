@@ -18,7 +18,7 @@
 //! bytes, a motion-blur sum, or the statistics below). When a square splits is
 //! `measure.rs`'s; the lattice's buffers are kept between frames (`store.rs`).
 
-use super::{render, render_add, to_byte, Frame};
+use super::{render, render_add, to_rgb, Frame};
 use crate::accel::TileView;
 use crate::camera::Camera;
 use crate::texture::Color;
@@ -102,7 +102,7 @@ pub fn render_with(
             let mut pixels = vec![0; width as usize * height as usize * 3];
             let (rgb, _) = pixels.as_chunks_mut::<3>();
             let rays = draw(tracer, camera, (width, height), a, BAND, rgb, |p, c, _| {
-                *p = [to_byte(c.x), to_byte(c.y), to_byte(c.z)]
+                *p = to_rgb(c)
             });
             let frame = Frame {
                 width,

@@ -33,6 +33,12 @@ pub struct Frame {
     pub pixels: Vec<u8>,
 }
 
+/// A colour's three bytes, each channel as `to_byte` rounds it.
+#[inline]
+pub fn to_rgb(c: Color) -> [u8; 3] {
+    [to_byte(c.x), to_byte(c.y), to_byte(c.z)]
+}
+
 /// Clamp to 0..1, then round(255·c).
 #[inline]
 pub fn to_byte(c: f64) -> u8 {
@@ -91,7 +97,7 @@ fn draw_row(
     }
     for (i, px) in row.chunks_exact_mut(3).enumerate() {
         let c = pixel(tracer, view, camera, i as f64, j as f64, n, &mut count);
-        px.copy_from_slice(&[to_byte(c.x), to_byte(c.y), to_byte(c.z)]);
+        px.copy_from_slice(&to_rgb(c));
     }
     control::row_done();
     count
@@ -149,10 +155,7 @@ impl Frame {
     /// The frame of `colors` (width·height, rows top to bottom), each channel through the
     /// clamp-and-round of SPEC §2 (`to_byte`).
     pub fn from_colors(colors: impl IntoIterator<Item = Color>, width: u32, height: u32) -> Frame {
-        let pixels = colors
-            .into_iter()
-            .flat_map(|c| [to_byte(c.x), to_byte(c.y), to_byte(c.z)])
-            .collect();
+        let pixels = colors.into_iter().flat_map(to_rgb).collect();
         Frame {
             width,
             height,
@@ -228,6 +231,7 @@ mod tests {
         // 255·0.2 = 51.00000000000001 → 51; 255·0.1 = 25.5 → 26.
         assert_eq!(to_byte(0.2), 51);
         assert_eq!(to_byte(0.1), 26);
+        assert_eq!(to_rgb(Color::new(0.1, 0.5, 3.7)), [26, 128, 255]);
         assert_eq!(to_byte(f64::NAN), 0);
     }
 
