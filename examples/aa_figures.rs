@@ -39,7 +39,7 @@ fn compare(reference: &str, image: &str) -> anyhow::Result<()> {
         .sum::<f64>()
         / a.pixels.len() as f64;
     let psnr = 10.0 * (255.0f64 * 255.0 / mse.max(1e-12)).log10();
-    let flip = whitted::anim::check::flip::flip(&a, &b).mean;
+    let flip = whitted_anim::check::flip::flip(&a, &b).mean;
     println!("{psnr:.3} {flip:.5}");
     Ok(())
 }

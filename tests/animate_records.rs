@@ -32,7 +32,7 @@ fn up_to_date(manifest: &Path) -> Vec<u32> {
     if ranges == "-" {
         return vec![];
     }
-    whitted::anim::select::parse_frames(&ranges, 1_000_000).unwrap()
+    whitted_anim::select::parse_frames(&ranges, 1_000_000).unwrap()
 }
 
 /// Asserts that every frame `status` calls up to date has the clean render's bytes.

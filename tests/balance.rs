@@ -7,8 +7,8 @@ mod support;
 
 use std::path::Path;
 use support::*;
-use whitted::anim::frames::balance::{predicted_costs, split};
-use whitted::anim::{Animation, Project};
+use whitted_anim::frames::balance::{predicted_costs, split};
+use whitted_anim::{Animation, Project};
 
 const MANIFEST: &str = concat!(env!("CARGO_MANIFEST_DIR"), "/animations/turn-to-glass.toml");
 

@@ -10,8 +10,8 @@
 //! - `text complete`: a whole Scene.txt, which `Scene::parse` must accept.
 
 use std::path::Path;
-use whitted::anim::Manifest;
 use whitted::Scene;
+use whitted_anim::Manifest;
 
 /// The fenced blocks of a Markdown page: (info string, text, line of the opening fence).
 fn blocks(page: &str) -> Vec<(String, String, usize)> {

@@ -99,9 +99,9 @@ fn summaries(log: &str) -> Vec<(u32, u32)> {
 
 /// The frame counts of the TASKS shards `--shard auto --balance` makes of `manifest`.
 fn balanced_sizes(manifest: &Path) -> Vec<u32> {
-    use whitted::anim::frames::balance::{predicted_costs, split};
-    let project = whitted::anim::Project::load(manifest).unwrap();
-    let anim = whitted::anim::Animation::new(&project).unwrap();
+    use whitted_anim::frames::balance::{predicted_costs, split};
+    let project = whitted_anim::Project::load(manifest).unwrap();
+    let anim = whitted_anim::Animation::new(&project).unwrap();
     let frames: Vec<u32> = (0..FRAMES).collect();
     let costs = predicted_costs(&anim, &frames).unwrap();
     let b = split(&costs, TASKS);

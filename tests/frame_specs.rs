@@ -11,7 +11,7 @@ use proptest::strategy::ValueTree;
 use std::collections::BTreeMap;
 use std::io::Write;
 use std::process::{Command, Stdio};
-use whitted::anim::select::{self, FrameSpec};
+use whitted_anim::select::{self, FrameSpec};
 
 /// Our reading of `spec`: the frames in order, or `None` when refused.
 fn ours(spec: &str) -> Option<Vec<i64>> {

@@ -727,7 +727,7 @@ proptest! {
 // Manifests
 // ---------------------------------------------------------------------------------------
 
-use whitted::anim::{Manifest, ManifestError};
+use whitted_anim::{Manifest, ManifestError};
 
 /// The name manifests are parsed under (never read: `parse` takes the text).
 const MANIFEST_PATH: &str = "anims/fuzz.toml";
@@ -1569,7 +1569,7 @@ fn extreme_values_are_refused_or_render_finite() {
 
 // ---- Tracks (SPEC §7): random [[track]] tables, resolved against a real scene ----
 
-use whitted::anim::Timeline;
+use whitted_anim::Timeline;
 
 /// A scene with one object of each kind, fog and two lights, for track targets.
 const TRACK_SCENE: &str = "8 6  0 2 10  0 1 0  2 30  2 1 1 2

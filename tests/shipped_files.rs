@@ -6,8 +6,8 @@ mod shipped;
 mod skip;
 
 use std::process::Command;
-use whitted::anim::Project;
 use whitted::Scene;
+use whitted_anim::Project;
 
 #[test]
 fn every_shipped_file_exists_and_loads() {

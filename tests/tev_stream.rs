@@ -255,8 +255,8 @@ fn animate_sends_every_frame_of_an_exr_manifest() {
     let mut sent = seen.whole.clone();
     assert_eq!(sent.len(), 3, "one whole picture a frame");
     sent.sort();
-    let project = whitted::anim::Project::load(&manifest).unwrap();
-    let anim = whitted::anim::Animation::new(&project).unwrap();
+    let project = whitted_anim::Project::load(&manifest).unwrap();
+    let anim = whitted_anim::Animation::new(&project).unwrap();
     let mut want: Vec<Vec<u8>> = (0..3)
         .map(|f| anim.render_picture(f).unwrap().0.pixels)
         .collect();

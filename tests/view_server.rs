@@ -415,8 +415,8 @@ fn an_exr_manifest_shows_the_pictures_its_files_hold() {
     let scene = dir.path().join("scene.txt");
     let text = std::fs::read_to_string(&scene).unwrap();
     std::fs::write(&scene, text.replace("0.9\n-6", "3.0\n-6")).unwrap();
-    let project = whitted::anim::Project::load(&manifest).unwrap();
-    let anim = whitted::anim::Animation::new(&project).unwrap();
+    let project = whitted_anim::Project::load(&manifest).unwrap();
+    let anim = whitted_anim::Animation::new(&project).unwrap();
     let picture = anim.render_picture(4).unwrap().0.pixels;
     assert_ne!(
         picture,

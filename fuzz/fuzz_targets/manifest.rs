@@ -9,7 +9,7 @@
 
 use libfuzzer_sys::fuzz_target;
 use std::path::Path;
-use whitted::anim::{Manifest, ManifestError};
+use whitted_anim::{Manifest, ManifestError};
 
 const PATH: &str = "fuzz/anim.toml";
 

@@ -17,10 +17,10 @@ use whitted::camera::Lens;
 use whitted::exit::Outcome;
 use whitted::output::{check_target, write_atomic, write_atomic_layers, ImageFormat, OutputError};
 use whitted::passes::{visible::picture, PassSet};
-use whitted::progress::RowPoller;
 use whitted::render::Antialias;
 use whitted::still::Still;
 use whitted::{Scene, SceneError};
+use whitted_anim::progress::RowPoller;
 
 /// A bar of the image's rows on a terminal (hidden otherwise, or with `--quiet`), moved by
 /// the library's rows poller until it is finished.
@@ -67,7 +67,7 @@ fn out_format(args: &Args, out: &std::path::Path) -> Result<ImageFormat, OutputE
 }
 
 fn run(args: Args) -> anyhow::Result<()> {
-    whitted::process::exit_on_signals();
+    whitted_anim::process::exit_on_signals();
     let out = args
         .out
         .clone()
@@ -88,7 +88,8 @@ fn run(args: Args) -> anyhow::Result<()> {
     }
     let native = (scene.width, scene.height);
     (scene.width, scene.height) = args.size.unwrap_or(native);
-    let pool = whitted::process::pool(args.threads).context("cannot start the worker threads")?;
+    let pool =
+        whitted_anim::process::pool(args.threads).context("cannot start the worker threads")?;
     let lens = Lens {
         fov: args.fov,
         roll: args.roll,
@@ -164,7 +165,7 @@ fn run(args: Args) -> anyhow::Result<()> {
 struct NotAScene(String);
 
 fn main() -> ExitCode {
-    if let Err(e) = whitted::process::check_cpu() {
+    if let Err(e) = whitted_anim::process::check_cpu() {
         eprintln!("raytrace: {e}");
         return ExitCode::from(Outcome::BadInput.code());
     }

@@ -126,7 +126,7 @@ pub fn entries(dir: &Path) -> Vec<String> {
 /// `LOCK_FILE` and its `LOCK_FILE-<key>` files), sorted, hidden ones included; nothing when
 /// the folder does not exist.
 pub fn leftovers(dir: &Path) -> Vec<String> {
-    use whitted::anim::frames::lock::LOCK_FILE;
+    use whitted_anim::frames::lock::LOCK_FILE;
     if !dir.exists() {
         return Vec::new();
     }

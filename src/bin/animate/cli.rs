@@ -4,13 +4,13 @@
 use clap::{Args, Parser, Subcommand};
 use std::io::IsTerminal;
 use std::path::{Path, PathBuf};
-use whitted::anim::check::export::{Exporter, Html, Json, Junit, Sink, Table};
-use whitted::anim::check::Overrides;
-use whitted::anim::frames::run::{Destination, Encoding, Policy};
-use whitted::anim::preview::{self, PreviewOptions};
-use whitted::anim::select::{process_env, SelectError, Shard};
-use whitted::anim::{AnimError, Manifest, Project};
 use whitted::output::ImageFormat;
+use whitted_anim::check::export::{Exporter, Html, Json, Junit, Sink, Table};
+use whitted_anim::check::Overrides;
+use whitted_anim::frames::run::{Destination, Encoding, Policy};
+use whitted_anim::preview::{self, PreviewOptions};
+use whitted_anim::select::{process_env, SelectError, Shard};
+use whitted_anim::{AnimError, Manifest, Project};
 
 use crate::report::Usage;
 
@@ -81,7 +81,7 @@ pub struct ViewArgs {
     /// The animation manifest (TOML).
     pub manifest: PathBuf,
     /// The port to listen on (0: any free port; the URL printed says which).
-    #[arg(long, default_value_t = whitted::anim::view::DEFAULT_PORT)]
+    #[arg(long, default_value_t = whitted_anim::view::DEFAULT_PORT)]
     pub port: u16,
     /// The address to listen on; loopback unless told otherwise.
     #[arg(long, value_name = "ADDR", default_value = "127.0.0.1")]

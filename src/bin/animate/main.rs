@@ -14,21 +14,21 @@ use cli::{
 };
 use std::process::ExitCode;
 use std::time::Instant;
-use whitted::anim::check::{self, CheckOptions};
-use whitted::anim::frames::estimate::Estimate;
-use whitted::anim::frames::run::{self, Destination, Policy};
-use whitted::anim::frames::status::{ranges, status};
-use whitted::anim::frames::{balance, encode, folder};
-use whitted::anim::job::{openjd_template, relative_to, Chunking};
-use whitted::anim::select::sorted;
-use whitted::anim::view::ViewOptions;
-use whitted::anim::{preview, AnimError, Animation, Reporter};
 use whitted::exit::Outcome;
 use whitted::fileloc::shown;
 use whitted::output::ImageFormat;
+use whitted_anim::check::{self, CheckOptions};
+use whitted_anim::frames::estimate::Estimate;
+use whitted_anim::frames::run::{self, Destination, Policy};
+use whitted_anim::frames::status::{ranges, status};
+use whitted_anim::frames::{balance, encode, folder};
+use whitted_anim::job::{openjd_template, relative_to, Chunking};
+use whitted_anim::select::sorted;
+use whitted_anim::view::ViewOptions;
+use whitted_anim::{preview, AnimError, Animation, Reporter};
 
 fn pool(threads: Option<u32>) -> anyhow::Result<rayon::ThreadPool> {
-    whitted::process::pool(threads).context("cannot start the worker threads")
+    whitted_anim::process::pool(threads).context("cannot start the worker threads")
 }
 
 /// What an interrupted stream or video says (`--resume` does not apply to them): its two
@@ -43,7 +43,7 @@ fn stream_stopped(sig: i32) -> String {
 
 fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     let c = &args.common;
-    if args.stdout.is_some() && whitted::process::stdout_closed() {
+    if args.stdout.is_some() && whitted_anim::process::stdout_closed() {
         return Err(AnimError::StdoutClosed.into());
     }
     let project = c.load()?;
@@ -63,10 +63,10 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     if !c.quiet {
         report::announce(&anim, frames.len(), args.stdout == Some(ImageFormat::Raw));
     }
-    let stop = whitted::process::watch_signals("animate");
+    let stop = whitted_anim::process::watch_signals("animate");
     if matches!(destination, Destination::Stream(_)) {
         // A reader that stops reading would hold a write, and the run, forever.
-        whitted::process::exit_when_stuck(stop.clone(), stream_stopped);
+        whitted_anim::process::exit_when_stuck(stop.clone(), stream_stopped);
     }
     if !c.quiet {
         pool.install(|| report::warn_if_enormous(&anim, &frames));
@@ -110,7 +110,7 @@ fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
 }
 
 fn encode_command(args: EncodeArgs) -> anyhow::Result<Outcome> {
-    let project = whitted::anim::Project::load(&args.manifest)?;
+    let project = whitted_anim::Project::load(&args.manifest)?;
     let (m, anim) = (&project.manifest, Animation::new(&project)?);
     let dir = args.dir.clone().unwrap_or_else(|| m.output.dir.clone());
     let video = args
@@ -122,7 +122,7 @@ fn encode_command(args: EncodeArgs) -> anyhow::Result<Outcome> {
         encoding: args.encoding.encoding(),
         ..Policy::default()
     };
-    let stop = whitted::process::watch_signals("animate");
+    let stop = whitted_anim::process::watch_signals("animate");
     let bar = report::Bar::new(m.frames as usize, args.quiet);
     let start = Instant::now();
     let summary = encode::encode(&anim, &dir, &video, &policy, &bar, &stop);
@@ -142,7 +142,7 @@ fn encode_command(args: EncodeArgs) -> anyhow::Result<Outcome> {
 }
 
 fn clean_command(args: CleanArgs) -> anyhow::Result<Outcome> {
-    let project = whitted::anim::Project::load(&args.manifest)?;
+    let project = whitted_anim::Project::load(&args.manifest)?;
     let (m, anim) = (&project.manifest, Animation::new(&project)?);
     let dir = args.out.clone().unwrap_or_else(|| m.output.dir.clone());
     if args.dry_run {
@@ -174,13 +174,13 @@ fn view(args: ViewArgs) -> anyhow::Result<Outcome> {
         port: args.port,
         threads: args.threads,
     };
-    let stop = whitted::process::watch_signals("animate");
-    let sig = whitted::anim::view::serve(&options, &stop, &|url| {
+    let stop = whitted_anim::process::watch_signals("animate");
+    let sig = whitted_anim::view::serve(&options, &stop, &|url| {
         eprintln!(
             "animate: view of {} at {url} (Ctrl-C to stop)",
             args.manifest.display()
         );
-        whitted::anim::view::print_url(url);
+        whitted_anim::view::print_url(url);
     })?;
     Ok(Outcome::Interrupted(sig))
 }
@@ -329,7 +329,7 @@ fn preview(args: PreviewArgs) -> anyhow::Result<Outcome> {
 }
 
 fn main() -> ExitCode {
-    if let Err(e) = whitted::process::check_cpu() {
+    if let Err(e) = whitted_anim::process::check_cpu() {
         eprintln!("animate: {e}");
         return ExitCode::from(Outcome::BadInput.code());
     }

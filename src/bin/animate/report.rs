@@ -7,15 +7,15 @@
 use indicatif::{ProgressBar, ProgressState, ProgressStyle};
 use std::io::IsTerminal;
 use std::time::Instant;
-use whitted::anim::check::{CheckError, Missing};
-use whitted::anim::frames::pipeline::Summary;
-use whitted::anim::frames::run::ffmpeg_raw_input;
-use whitted::anim::preview::{PreviewError, PreviewSummary};
-use whitted::anim::select::SelectError;
-use whitted::anim::{AnimError, Animation, Event, Reporter};
 use whitted::exit::Outcome;
-use whitted::progress::RowPoller;
 use whitted::render::control;
+use whitted_anim::check::{CheckError, Missing};
+use whitted_anim::frames::pipeline::Summary;
+use whitted_anim::frames::run::ffmpeg_raw_input;
+use whitted_anim::preview::{PreviewError, PreviewSummary};
+use whitted_anim::progress::RowPoller;
+use whitted_anim::select::SelectError;
+use whitted_anim::{AnimError, Animation, Event, Reporter};
 
 /// The progress bar: frames done (skipped ones count as done), frames/s, ETA.
 pub struct Bar(ProgressBar);
@@ -228,7 +228,7 @@ pub fn outcome(e: &anyhow::Error) -> Outcome {
         e.outcome()
     } else if let Some(e) = e.downcast_ref::<PreviewError>() {
         e.outcome()
-    } else if let Some(e) = e.downcast_ref::<whitted::anim::view::ViewError>() {
+    } else if let Some(e) = e.downcast_ref::<whitted_anim::view::ViewError>() {
         e.outcome()
     } else {
         Outcome::Failed
@@ -316,7 +316,7 @@ pub fn hint(e: &AnimError) -> Option<&'static str> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use whitted::anim::select::parse_frames;
+    use whitted_anim::select::parse_frames;
 
     #[test]
     fn slow_frames_are_shown_in_seconds_per_frame() {

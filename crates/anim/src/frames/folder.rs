@@ -1,0 +1,145 @@
+//! What a frame folder holds besides the frames a manifest now asks for, found by the
+//! manifest's name pattern (`frame_####.png`):
+//!
+//! - `beyond`: files of frames past the end of the sequence (the manifest's `frames` was
+//!   lowered after they were rendered), which a `frame_%04d.png` glob would mix into a
+//!   video;
+//! - `temporaries`: hidden `.frame_0007.png.XXXXXX.tmp` files (and those of RAW records)
+//!   that a killed run left; a run holding the folder's lock (`lock`) removes them, since
+//!   no other run can be writing them;
+//! - `clean` (`animate clean`): removes both, and the records of removed RAW frames.
+
+use super::provenance::{raw_record_path, RAW_RECORDS};
+use crate::error::AnimError;
+use crate::project::Animation;
+use std::path::{Path, PathBuf};
+use whitted::output::temporary_target;
+
+/// The frame number a file name `name` stands for under `anim`'s name pattern, whatever
+/// its zero padding (a longer sequence padded more), if it is one.
+fn frame_of(anim: &Animation, name: &str) -> Option<u32> {
+    let out = &anim.manifest.output;
+    let stem = name.strip_suffix(&format!(".{}", out.format.extension()))?;
+    let (head, base, tail) = out.parts();
+    let digits = stem.strip_prefix(head.as_str())?.strip_suffix(tail)?;
+    if digits.len() < base || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    // Zero-padded as a sequence of some length pads it: `0015` or `00015`, never `+15`.
+    let frame: u32 = digits.parse().ok()?;
+    (format!("{frame:0width$}", width = digits.len()) == digits).then_some(frame)
+}
+
+/// The files of `dir` that hold frames past the end of `anim`'s sequence, by frame.
+pub fn beyond(anim: &Animation, dir: &Path) -> Vec<(u32, PathBuf)> {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return Vec::new();
+    };
+    let mut found: Vec<(u32, PathBuf)> = entries
+        .filter_map(Result::ok)
+        .filter_map(|e| {
+            let name = e.file_name().into_string().ok()?;
+            let frame = frame_of(anim, &name)?;
+            (frame >= anim.manifest.frames).then(|| (frame, e.path()))
+        })
+        .collect();
+    found.sort();
+    found
+}
+
+/// The hidden temporaries of frames (and RAW records) in `dir` that a run left.
+pub fn temporaries(anim: &Animation, dir: &Path) -> Vec<PathBuf> {
+    let mut found = Vec::new();
+    let list = |d: &Path, is_ours: &dyn Fn(&str) -> bool, found: &mut Vec<PathBuf>| {
+        for e in std::fs::read_dir(d).into_iter().flatten().flatten() {
+            let name = e.file_name().to_string_lossy().into_owned();
+            if temporary_target(&name).is_some_and(is_ours) {
+                found.push(e.path());
+            }
+        }
+    };
+    list(dir, &|t| frame_of(anim, t).is_some(), &mut found);
+    let records = dir.join(RAW_RECORDS);
+    let record = |t: &str| {
+        t.strip_suffix(".txt")
+            .is_some_and(|f| frame_of(anim, f).is_some())
+    };
+    list(&records, &record, &mut found);
+    found.sort();
+    found
+}
+
+/// Removes `paths`, and the RAW records of frames among them; returns how many files went.
+pub(crate) fn remove(paths: &[PathBuf]) -> std::io::Result<usize> {
+    let mut n = 0;
+    for p in paths {
+        std::fs::remove_file(p)?;
+        n += 1;
+        let record = raw_record_path(p);
+        if p.extension().is_some_and(|e| e == "raw") && record.is_file() {
+            std::fs::remove_file(record)?;
+            n += 1;
+        }
+    }
+    Ok(n)
+}
+
+/// What `clean` removed.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Cleaned {
+    /// Frames past the end of the sequence whose files were removed.
+    pub beyond: Vec<u32>,
+    /// Temporaries of killed runs removed.
+    pub temporaries: usize,
+}
+
+/// Removes from `dir` the files of frames past the end of `anim`'s sequence (with their
+/// RAW records) and the temporaries of killed runs, under the folder's lock: refused
+/// while any other run writes into it (`AnimError::Busy`, `AnimError::InUse`).
+pub fn clean(anim: &Animation, dir: &Path) -> Result<Cleaned, AnimError> {
+    let held = super::lock::lock(dir, &anim.manifest.path)?;
+    if !held.alone() {
+        return Err(AnimError::InUse {
+            dir: dir.to_path_buf(),
+        });
+    }
+    let folder = |source| AnimError::Folder {
+        dir: dir.to_path_buf(),
+        source,
+    };
+    let past = beyond(anim, dir);
+    let paths: Vec<PathBuf> = past.iter().map(|(_, p)| p.clone()).collect();
+    remove(&paths).map_err(folder)?;
+    let temps = temporaries(anim, dir);
+    remove(&temps).map_err(folder)?;
+    Ok(Cleaned {
+        beyond: past.into_iter().map(|(f, _)| f).collect(),
+        temporaries: temps.len(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn frame_names_under_a_pattern() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("s.txt"), "8 6  0 1 6  0 1 0  0 0  1 0 0 1\n1.0  0 1 0   1 0.9 0.2 0.1   0.7 0.3 0 1 0 0\n5 10 5  1 1 1  0.9").unwrap();
+        let m = dir.path().join("m.toml");
+        std::fs::write(
+            &m,
+            "scene = \"s.txt\"\nframes = 10\n[output]\nname = \"f_###x\"\n",
+        )
+        .unwrap();
+        let p = crate::project::Project::load(&m).unwrap();
+        let anim = Animation::new(&p).unwrap();
+        assert_eq!(frame_of(&anim, "f_012x.png"), Some(12));
+        assert_eq!(frame_of(&anim, "f_00012x.png"), Some(12));
+        assert_eq!(frame_of(&anim, "f_1234x.png"), Some(1234));
+        assert_eq!(frame_of(&anim, "f_12x.png"), None);
+        assert_eq!(frame_of(&anim, "f_0012x.jpg"), None);
+        assert_eq!(frame_of(&anim, "f_+012x.png"), None);
+        assert_eq!(frame_of(&anim, "g_012x.png"), None);
+    }
+}

@@ -1,0 +1,141 @@
+//! One folder, one manifest: a run that writes frames into a folder holds an advisory
+//! lock (`flock`, through std's `File::try_lock`) that the system releases when the
+//! process ends however it ends (kill -9 included), so no stale lock is ever left.
+//!
+//! Runs of the same manifest (the file name its frames record) may share the folder, as
+//! the shards of a render-farm array job do: each holds a *shared* lock on
+//! `.whitted-lock-KEY` (KEY from the manifest's file name). A run of another manifest
+//! finds that lock held and refuses, naming the holder from the file:
+//!
+//! ```text
+//! pid 4242
+//! manifest /home/me/animations/orbit.toml
+//! started 1767225600 (seconds since 1970)
+//! ```
+//!
+//! The look at the other manifests' locks and the taking of one's own happen under an
+//! exclusive lock on `.whitted-lock` (held for milliseconds), so two runs cannot both
+//! find the folder free. A run that finds itself alone (no other run of its manifest)
+//! is told so: only then may it remove the temporaries that killed runs left. The lock
+//! files stay (removing a held one would let a second run lock a new file). Taking the
+//! lock is also the check, before anything renders, that the folder can be written.
+
+use crate::error::AnimError;
+use sha2::{Digest, Sha256};
+use std::fs::{File, OpenOptions, TryLockError};
+use std::io::{Read, Seek, Write};
+use std::path::Path;
+
+/// The gate's name inside a frame folder; manifests' locks are named after it.
+pub const LOCK_FILE: &str = ".whitted-lock";
+
+/// A held lock on a frame folder, released when dropped or when the process ends.
+#[derive(Debug)]
+pub struct FolderLock {
+    _file: File,
+    alone: bool,
+}
+
+impl FolderLock {
+    /// Whether no other run of the same manifest held the folder when this one took it.
+    pub fn alone(&self) -> bool {
+        self.alone
+    }
+}
+
+fn open(path: &Path) -> std::io::Result<File> {
+    OpenOptions::new()
+        .read(true)
+        .write(true)
+        .create(true)
+        .truncate(false)
+        .open(path)
+}
+
+/// Who holds a lock file, from its text.
+fn holder(mut file: &File) -> String {
+    let mut text = String::new();
+    let _ = file.rewind();
+    let _ = file.take(4096).read_to_string(&mut text);
+    let text = text.lines().collect::<Vec<_>>().join(", ");
+    if text.is_empty() {
+        "a run that has not yet said who it is".into()
+    } else {
+        text
+    }
+}
+
+/// Takes the lock on `dir` (which exists) for a run of `manifest`; refuses, naming the
+/// holder, when a run of another manifest holds it.
+pub fn lock(dir: &Path, manifest: &Path) -> Result<FolderLock, AnimError> {
+    let folder = |source| AnimError::Folder {
+        dir: dir.to_path_buf(),
+        source,
+    };
+    let name = manifest.file_name().unwrap_or_default().to_string_lossy();
+    let key = &super::provenance::hex(&Sha256::digest(name.as_bytes()))[..16];
+    let own = format!("{LOCK_FILE}-{key}");
+    let gate = open(&dir.join(LOCK_FILE)).map_err(folder)?;
+    gate.lock().map_err(folder)?;
+    for entry in std::fs::read_dir(dir).map_err(folder)?.flatten() {
+        let other = entry.file_name().to_string_lossy().into_owned();
+        if !other.starts_with(&format!("{LOCK_FILE}-")) || other == own {
+            continue;
+        }
+        let file = open(&entry.path()).map_err(folder)?;
+        match file.try_lock() {
+            Ok(()) => {} // left by a run that has ended
+            Err(TryLockError::WouldBlock) => {
+                return Err(AnimError::Busy {
+                    dir: dir.to_path_buf(),
+                    holder: holder(&file),
+                })
+            }
+            Err(TryLockError::Error(e)) => return Err(folder(e)),
+        }
+    }
+    let mut file = open(&dir.join(&own)).map_err(folder)?;
+    let alone = match file.try_lock() {
+        Ok(()) => true,
+        Err(TryLockError::WouldBlock) => false,
+        Err(TryLockError::Error(e)) => return Err(folder(e)),
+    };
+    file.lock_shared().map_err(folder)?;
+    let started = std::time::SystemTime::now()
+        .duration_since(std::time::UNIX_EPOCH)
+        .map_or(0, |d| d.as_secs());
+    let manifest = std::path::absolute(manifest).unwrap_or_else(|_| manifest.to_path_buf());
+    let text = format!(
+        "pid {}\nmanifest {}\nstarted {started} (seconds since 1970)\n",
+        std::process::id(),
+        manifest.display()
+    );
+    file.set_len(0).map_err(folder)?;
+    file.rewind().map_err(folder)?;
+    file.write_all(text.as_bytes()).map_err(folder)?;
+    drop(gate);
+    Ok(FolderLock { _file: file, alone })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn another_manifest_is_refused_the_same_one_shares() {
+        let dir = tempfile::tempdir().unwrap();
+        let first = lock(dir.path(), Path::new("/a/one.toml")).unwrap();
+        assert!(first.alone());
+        let shard = lock(dir.path(), Path::new("/b/one.toml")).unwrap();
+        assert!(!shard.alone());
+        drop(shard);
+        let e = lock(dir.path(), Path::new("/a/two.toml")).unwrap_err();
+        let shown = e.to_string();
+        // The latest run of the holding manifest names it.
+        let me = format!("pid {}, manifest /b/one.toml, started ", std::process::id());
+        assert!(shown.contains(&me), "{shown}");
+        assert_eq!(e.exit_code(), 2);
+        drop(first);
+        lock(dir.path(), Path::new("/a/two.toml")).unwrap();
+    }
+}

@@ -1,0 +1,29 @@
+//! Producing frames, from "which" to "where":
+//!
+//! - `select`: frame lists, `K/N` shards and `--shard auto` resolved from a render farm's
+//!   environment;
+//! - `run`: the render command as a library call (frames, destination, checks first);
+//!   `policy`: what a run may keep or replace, and how its video is encoded;
+//! - `pipeline`: rendering in parallel into a folder or a stream, reporting `events`;
+//! - `provenance`: what made a frame, recorded in the frame file; `status`: which frames
+//!   of a folder are up to date, stale or missing;
+//! - `folder`: what else a frame folder holds (frames past the end, temporaries of
+//!   killed runs) and `animate clean`; `lock`: one run at a time per folder;
+//! - `video`: ffmpeg, checked before the first frame; `encode`: a rendered folder into a
+//!   video;
+//! - `balance`: shards of equal predicted cost from a small pre-pass; `estimate`: the
+//!   predicted cost and time of a render.
+
+pub mod balance;
+pub mod encode;
+pub mod estimate;
+pub mod events;
+pub mod folder;
+pub mod lock;
+pub mod pipeline;
+pub mod policy;
+pub mod provenance;
+pub mod run;
+pub mod select;
+pub mod status;
+pub mod video;

@@ -1,0 +1,308 @@
+//! Producing frames: rendered in parallel with rayon, then either written into a folder
+//! or streamed in frame order, every step reported as an `Event`.
+//!
+//! - Folder: the run holds the folder's lock (`lock`) and clears the temporaries killed
+//!   runs left (`folder`); frames render in windows of four per thread; each is encoded
+//!   with its provenance (`provenance`), written to a temporary name in the folder, then
+//!   renamed, so a file under a final name is always complete. With `resume`, frames
+//!   whose file records the digest the manifest now gives them are left untouched
+//!   (`status`); frames recorded by another manifest are not overwritten unless forced.
+//! - Stream (`--stdout`, `--video`): frames render in windows of twice the thread count
+//!   and are written in order.
+//!
+//! A window never holds more than `FRAME_MEMORY` of frames, so memory stays bounded
+//! whatever the frame count, the frame size or the thread count. Both stop between frames
+//! when `stop` holds a signal number, and after the first failure; the frames already
+//! finished stay finished.
+
+use super::events::{Event, Reporter};
+use super::folder;
+use super::lock::lock;
+use super::policy::Policy;
+use super::provenance::{self, raw_record_path, Inspection};
+use super::status;
+use crate::error::AnimError;
+use crate::process::stopped;
+use crate::project::Animation;
+use rayon::prelude::*;
+use std::io::Write;
+use std::path::Path;
+use std::sync::atomic::AtomicUsize;
+use std::sync::Mutex;
+use std::time::Instant;
+use whitted::output::{
+    encode, temp_beside, write_atomic_layers, write_atomic_with, ImageFormat, OutputError,
+};
+use whitted::trace::RayCount;
+
+pub use crate::project::FRAME_MEMORY;
+
+/// What a run did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Summary {
+    /// Frames rendered and delivered by this run.
+    pub rendered: usize,
+    /// Frames left as they were because they were up to date (`--resume`).
+    pub skipped: usize,
+    /// All rays cast by the rendered frames, by kind.
+    pub rays: RayCount,
+}
+
+/// A write error with the frame's path in it: the encoder's own errors (a full disk
+/// while encoding) name no file.
+fn with_path(path: &Path, e: OutputError) -> OutputError {
+    match e {
+        OutputError::Stream(source) | OutputError::Encode(image::ImageError::IoError(source)) => {
+            OutputError::Io {
+                path: path.to_path_buf(),
+                source,
+            }
+        }
+        other => other,
+    }
+}
+
+/// Renders frame `frame` and writes it with its provenance under its final name; a RAW
+/// frame's record, written after it, carries the SHA-256 of its pixels.
+fn write_frame(anim: &Animation, dir: &Path, frame: u32) -> Result<RayCount, AnimError> {
+    let path = anim.frame_path(dir, frame);
+    let digest = provenance::digest(anim, frame);
+    let mut stamp = provenance::stamp(anim, frame, digest);
+    let write = |source| AnimError::Write { frame, source };
+    let format = anim.format();
+    let rays = if format.is_layered() {
+        // EXR: the beauty unclamped and the passes, provenance in the header.
+        let (layers, rays) = anim.render_layers(frame, format.passes())?;
+        write_atomic_layers(&path, layers, format, &stamp)
+            .map_err(|e| write(with_path(&path, e)))?;
+        rays
+    } else {
+        let (image, rays) = anim.render(frame)?;
+        write_atomic_with(&path, &image, format, &stamp).map_err(|e| write(with_path(&path, e)))?;
+        if format == ImageFormat::Raw {
+            stamp.push(provenance::pixels_line(&image.pixels));
+            write_raw_record(&path, &stamp).map_err(|source| {
+                write(OutputError::Io {
+                    path: raw_record_path(&path),
+                    source,
+                })
+            })?;
+        }
+        rays
+    };
+    Ok(rays)
+}
+
+/// The record of a RAW frame, written atomically after the frame itself.
+fn write_raw_record(frame_path: &Path, stamp: &[(String, String)]) -> std::io::Result<()> {
+    let path = raw_record_path(frame_path);
+    if let Some(dir) = path.parent() {
+        std::fs::create_dir_all(dir)?;
+    }
+    let mut tmp = temp_beside(&path)?;
+    for (k, v) in stamp {
+        writeln!(tmp, "{k}: {v}")?;
+    }
+    tmp.persist(path).map_err(|e| e.error)?;
+    Ok(())
+}
+
+/// What a run makes of the file of a frame it is asked for.
+enum Found {
+    /// Up to date (`--resume`): left as it is.
+    UpToDate,
+    /// Recorded by this other manifest: not overwritten unless forced.
+    Foreign(String),
+    /// Missing, stale or damaged, or the run is not told to look: to render.
+    Render,
+}
+
+/// Looks once at frame `frame`'s file: whether `--resume` may skip it (its record the
+/// digest the manifest now gives, and with `--verify` its pixels decode) and, if not,
+/// whether it records another manifest than `ours`.
+fn found(anim: &Animation, dir: &Path, frame: u32, policy: &Policy, ours: Option<&str>) -> Found {
+    if !policy.resume && policy.force {
+        return Found::Render;
+    }
+    let path = anim.frame_path(dir, frame);
+    let (format, w, h) = (anim.format(), anim.width, anim.height);
+    let Inspection::Sound(record) = provenance::inspect(&path, format, w, h, false) else {
+        return Found::Render;
+    };
+    if policy.resume
+        && record.digest == Some(provenance::digest(anim, frame))
+        && (!policy.verify || provenance::decode(&path, format, w, h).is_ok())
+    {
+        return Found::UpToDate;
+    }
+    match record.manifest {
+        Some(m) if !policy.force && Some(m.as_str()) != ours => Found::Foreign(m),
+        _ => Found::Render,
+    }
+}
+
+/// Refuses to overwrite frames recorded by another manifest than `anim`'s (`foreign`:
+/// each frame and the manifest its file names).
+fn refuse_foreign(dir: &Path, foreign: &[(u32, String)]) -> Result<(), AnimError> {
+    match foreign.first() {
+        None => Ok(()),
+        Some((_, other)) => Err(AnimError::Foreign {
+            dir: dir.to_path_buf(),
+            other: other.clone(),
+            frames: status::ranges(&foreign.iter().map(|(f, _)| *f).collect::<Vec<_>>()),
+            count: foreign.len(),
+        }),
+    }
+}
+
+/// Renders `frames` into `dir` (created if missing), in parallel, holding the folder's
+/// lock; temporaries that killed runs left are removed first. With `policy.resume`,
+/// frames that are up to date are skipped (and reported so); frames recorded by another
+/// manifest are refused unless `policy.force`.
+pub(crate) fn render_to_folder(
+    anim: &Animation,
+    frames: &[u32],
+    dir: &Path,
+    policy: &Policy,
+    reporter: &dyn Reporter,
+    stop: &AtomicUsize,
+) -> Result<Summary, AnimError> {
+    std::fs::create_dir_all(dir).map_err(|source| AnimError::Folder {
+        dir: dir.to_path_buf(),
+        source,
+    })?;
+    let lock = lock(dir, &anim.manifest.path)?;
+    if lock.alone() {
+        // No other run of this manifest is writing: every temporary is a killed run's.
+        let folder = |source| AnimError::Folder {
+            dir: dir.to_path_buf(),
+            source,
+        };
+        folder::remove(&folder::temporaries(anim, dir)).map_err(folder)?;
+    }
+    // Each file is inspected once, in parallel, for both answers.
+    let ours = anim.manifest.path.file_name().map(|n| n.to_string_lossy());
+    let seen: Vec<Found> = frames
+        .par_iter()
+        .map(|&f| found(anim, dir, f, policy, ours.as_deref()))
+        .collect();
+    let (mut todo, mut done, mut foreign) = (Vec::new(), Vec::new(), Vec::new());
+    for (&f, seen) in frames.iter().zip(seen) {
+        match seen {
+            Found::UpToDate => done.push(f),
+            Found::Foreign(m) => foreign.push((f, m)),
+            Found::Render => todo.push(f),
+        }
+    }
+    refuse_foreign(dir, &foreign)?;
+    reporter.event(Event::Started {
+        total: frames.len(),
+        skipped: done.len(),
+    });
+    for &frame in &done {
+        reporter.event(Event::Skipped { frame });
+    }
+
+    let failure: Mutex<Option<AnimError>> = Mutex::new(None);
+    let failed = || failure.lock().map(|f| f.is_some()).unwrap_or(true);
+    // One frame: rendered, encoded and written on its worker; the first failure is kept.
+    let work = |frame: u32| -> RayCount {
+        if stopped(stop).is_some() || failed() {
+            return RayCount::default();
+        }
+        let start = Instant::now();
+        match write_frame(anim, dir, frame) {
+            Ok(rays) => {
+                let seconds = start.elapsed().as_secs_f64();
+                reporter.event(Event::Finished {
+                    frame,
+                    seconds,
+                    rays,
+                });
+                rays
+            }
+            Err(AnimError::Interrupted(_)) => RayCount::default(), // stopped mid-frame
+            Err(e) => {
+                reporter.event(Event::Failed { frame });
+                if let Ok(mut slot) = failure.lock() {
+                    slot.get_or_insert(e);
+                }
+                RayCount::default()
+            }
+        }
+    };
+    let rays = todo
+        .chunks(anim.window(4))
+        .map(|chunk| {
+            let sum = |a, b| a + b;
+            chunk
+                .par_iter()
+                .map(|&f| work(f))
+                .reduce(RayCount::default, sum)
+        })
+        .fold(RayCount::default(), |a, b| a + b);
+
+    drop(lock);
+    if let Some(e) = failure.into_inner().unwrap_or(None) {
+        return Err(e);
+    }
+    if let Some(sig) = stopped(stop) {
+        return Err(AnimError::Interrupted(sig));
+    }
+    Ok(Summary {
+        rendered: todo.len(),
+        skipped: done.len(),
+        rays,
+    })
+}
+
+/// Renders `frames` and writes them, encoded in `format`, one after another in frame order
+/// into `out`. Frames render in parallel windows; memory is bounded by the window.
+pub(crate) fn render_to_stream(
+    anim: &Animation,
+    frames: &[u32],
+    out: &mut dyn Write,
+    format: ImageFormat,
+    reporter: &dyn Reporter,
+    stop: &AtomicUsize,
+) -> Result<Summary, AnimError> {
+    reporter.event(Event::Started {
+        total: frames.len(),
+        skipped: 0,
+    });
+    let window = anim.window(2);
+    let mut rays = RayCount::default();
+    for chunk in frames.chunks(window) {
+        if let Some(sig) = stopped(stop) {
+            return Err(AnimError::Interrupted(sig));
+        }
+        type Encoded = Result<(Vec<u8>, RayCount, f64), AnimError>;
+        let encoded: Vec<Encoded> = chunk
+            .par_iter()
+            .map(|&frame| {
+                let start = Instant::now();
+                let (image, rays) = anim.render_picture(frame)?;
+                let mut bytes = Vec::with_capacity(image.pixels.len() + 32);
+                encode(&image, format, &mut bytes)
+                    .map_err(|source| AnimError::Write { frame, source })?;
+                Ok((bytes, rays, start.elapsed().as_secs_f64()))
+            })
+            .collect();
+        for (item, &frame) in encoded.into_iter().zip(chunk) {
+            let (bytes, r, seconds) = item?;
+            out.write_all(&bytes).map_err(AnimError::Stream)?;
+            rays = rays + r;
+            reporter.event(Event::Finished {
+                frame,
+                seconds,
+                rays: r,
+            });
+        }
+    }
+    out.flush().map_err(AnimError::Stream)?;
+    Ok(Summary {
+        rendered: frames.len(),
+        skipped: 0,
+        rays,
+    })
+}

@@ -1,0 +1,172 @@
+//! What produced a frame (SPEC §8): a digest of everything that decides its pixels, and
+//! readable facts in the style of Blender's stamp, carried by the frame file itself —
+//! PNG `tEXt` chunks, a JPEG comment, PPM header comments — or, for RAW (no header), by a
+//! small file per frame in the folder's hidden `.whitted-record/`, which also holds the
+//! SHA-256 of the pixels it describes (`inspect` checks a frame against its record).
+//!
+//! The digest is SHA-256 over the pixel version, the settings (`Settings`, serialized as
+//! JSON), and for each time the frame samples the scene's values after tracks (not the
+//! file's bytes: comments and layout count for nothing), the eye and the look-at point,
+//! every number by its exact bits. Frames carry no render time, so that the same inputs
+//! give the same bytes on every run.
+
+use crate::project::Animation;
+use glam::DVec3;
+use sha2::{Digest, Sha256};
+use std::path::{Path, PathBuf};
+use whitted::fog::Fog;
+use whitted::scene::{Scene, ShapeSpec};
+
+/// The keyword of the digest in every format.
+pub(crate) const DIGEST_KEY: &str = "whitted:digest";
+/// The hidden folder holding RAW frames' records.
+pub(crate) const RAW_RECORDS: &str = ".whitted-record";
+
+/// Appends the exact bits of every value of `scene` that reaches a pixel.
+fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
+    let mut f = |x: f64| out.extend_from_slice(&x.to_bits().to_le_bytes());
+    let v = |p: DVec3, f: &mut dyn FnMut(f64)| {
+        f(p.x);
+        f(p.y);
+        f(p.z);
+    };
+    f(f64::from(scene.width));
+    f(f64::from(scene.height));
+    let (fog_kind, fog_d) = match scene.fog {
+        Fog::None => (0.0, 0.0),
+        Fog::Linear(d) => (1.0, d),
+        Fog::Exponential(d) => (2.0, d),
+        Fog::ExponentialSquared(d) => (3.0, d),
+    };
+    f(fog_kind);
+    f(fog_d);
+    for (obj, spec) in scene.objects.iter().zip(&scene.specs) {
+        match *spec {
+            ShapeSpec::Sphere { center, radius } => {
+                f(1.0);
+                v(center, &mut f);
+                f(radius);
+            }
+            ShapeSpec::Plane { point, normal } => {
+                f(2.0);
+                v(point, &mut f);
+                v(normal, &mut f);
+            }
+            ShapeSpec::Cylinder {
+                axis,
+                point,
+                radius,
+            } => {
+                f(3.0);
+                v(axis, &mut f);
+                v(point, &mut f);
+                f(radius);
+            }
+        }
+        let (_, kind, colors) = obj.texture.record();
+        f(f64::from(kind));
+        for c in colors {
+            v(c, &mut f);
+        }
+        let m = &obj.material;
+        for x in [m.kd, m.kr, m.kt, m.ior] {
+            f(x);
+        }
+        let (bump_kind, eps) = m.bump.record();
+        f(f64::from(bump_kind));
+        f(eps);
+    }
+    for light in &scene.lights {
+        f(4.0);
+        v(light.position, &mut f);
+        v(light.color, &mut f);
+        f(light.intensity);
+    }
+}
+
+/// The digest of frame `frame` of `anim`, lower-case hex.
+pub fn digest(anim: &Animation, frame: u32) -> String {
+    let mut bytes = b"whitted frame\0".to_vec();
+    bytes.extend(serde_json::to_vec(&anim.settings()).unwrap_or_default());
+    for t in anim.timeline.times(frame) {
+        let state = anim.timeline.at(t);
+        scene_bytes(&state.scene, &mut bytes);
+        for p in [state.eye, state.look_at] {
+            for x in p.to_array() {
+                bytes.extend_from_slice(&x.to_bits().to_le_bytes());
+            }
+        }
+    }
+    hex(&Sha256::digest(&bytes))
+}
+
+pub(crate) fn hex(bytes: &[u8]) -> String {
+    bytes.iter().map(|b| format!("{b:02x}")).collect()
+}
+
+/// The metadata frame `frame` carries: the digest first, then the stamp.
+pub(crate) fn stamp(anim: &Animation, frame: u32, digest: String) -> Vec<(String, String)> {
+    let state = anim.timeline.at(f64::from(frame));
+    let p = |v: DVec3| format!("({}, {}, {})", v.x, v.y, v.z);
+    let s = anim.settings();
+    let blur = match s.motion_blur {
+        Some(b) => format!(", motion blur {} frame(s) x {}", b.shutter, b.samples),
+        None => String::new(),
+    };
+    vec![
+        (DIGEST_KEY.into(), digest),
+        (
+            "Software".into(),
+            format!("whitted {}", env!("CARGO_PKG_VERSION")),
+        ),
+        (
+            "whitted:frame".into(),
+            format!("{frame} of {}", anim.manifest.frames),
+        ),
+        ("whitted:manifest".into(), file_name(&anim.manifest.path)),
+        ("whitted:scene".into(), file_name(&anim.manifest.scene)),
+        (
+            "whitted:camera".into(),
+            format!("eye {} look-at {}", p(state.eye), p(state.look_at)),
+        ),
+        (
+            "whitted:render".into(),
+            match s.antialias {
+                Some(a) => format!(
+                    "{}x{}, adaptive anti-aliasing threshold {} depth {} measure {}{blur}",
+                    s.width,
+                    s.height,
+                    a.threshold,
+                    a.depth,
+                    a.measure.name()
+                ),
+                None => format!(
+                    "{}x{}, {}x{} sample(s) per pixel{blur}",
+                    s.width, s.height, s.samples, s.samples
+                ),
+            },
+        ),
+    ]
+}
+
+/// A path's file name: the stamp names files, not the folders they were reached through,
+/// so that a frame's bytes do not depend on how the manifest's path was spelled.
+fn file_name(path: &Path) -> String {
+    path.file_name().map_or_else(
+        || path.display().to_string(),
+        |n| n.to_string_lossy().into_owned(),
+    )
+}
+
+/// Where a RAW frame's record lives.
+pub(crate) fn raw_record_path(frame_path: &Path) -> PathBuf {
+    let dir = frame_path.parent().unwrap_or(Path::new(""));
+    let name = frame_path.file_name().unwrap_or_default().to_string_lossy();
+    dir.join(RAW_RECORDS).join(format!("{name}.txt"))
+}
+
+mod inspect;
+pub(crate) use inspect::{decode, inspect, pixels_line, Inspection, Record};
+
+#[cfg(test)]
+mod tests;

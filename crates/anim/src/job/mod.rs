@@ -1,0 +1,158 @@
+//! `animate job MANIFEST --openjd`: an Open Job Description template (the job format of
+//! AWS Deadline Cloud, specification 2023-09 with the TASK_CHUNKING extension) that renders
+//! the manifest on a farm: a `Render` step whose one task parameter, `Frame`, is a
+//! `CHUNK[INT]` range, each chunk running
+//!
+//! ```text
+//! {{Param.Animate}} {{Param.Manifest}} -o {{Param.OutDir}} --frames {{Task.Param.Frame}} --resume --quiet
+//! ```
+//!
+//! (a chunk arrives as an OpenJD range such as `0-3`, which the frame grammar reads), and,
+//! when the job renders the whole sequence, a `Video` step that depends on it and encodes
+//! the finished frames as `animate encode` does (its readiness check, options and
+//! temporary-and-rename):
+//!
+//! ```text
+//! {{Param.Animate}} encode {{Param.Manifest}} --dir {{Param.OutDir}} -o {{Param.Video}} --force --quiet
+//! ```
+//!
+//! The chunk
+//! size is `--chunk N` frames, or comes from `--chunk-seconds S` and the cost estimate
+//! (`frames::estimate`), which also becomes the chunks' `targetRuntimeSeconds` so that a
+//! scheduler that adapts chunk sizes aims at the same duration.
+
+use crate::frames::status::ranges;
+use crate::manifest::Manifest;
+use serde_json::{json, Value};
+use std::path::Path;
+
+/// How the frames are cut into tasks.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Chunking {
+    /// N frames a task.
+    Frames(u32),
+    /// About this many seconds a task, with the expected seconds of one frame.
+    Seconds {
+        /// The target duration of a task.
+        target: u32,
+        /// The expected seconds of a mean frame on this machine.
+        per_frame: f64,
+    },
+}
+
+impl Chunking {
+    /// Frames a task: at least 1.
+    pub fn size(&self) -> u32 {
+        match *self {
+            Chunking::Frames(n) => n.max(1),
+            Chunking::Seconds { target, per_frame } => {
+                let n = f64::from(target) / per_frame.max(1e-9);
+                n.round().clamp(1.0, f64::from(u32::MAX)) as u32
+            }
+        }
+    }
+}
+
+/// `path` relative to the folder `base` (both absolute): OpenJD joins a PATH parameter's
+/// default to the template's folder, and refuses absolute defaults.
+pub fn relative_to(path: &Path, base: &Path) -> std::path::PathBuf {
+    let (p, b): (Vec<_>, Vec<_>) = (path.components().collect(), base.components().collect());
+    let common = p.iter().zip(&b).take_while(|(x, y)| x == y).count();
+    let mut out = std::path::PathBuf::new();
+    for _ in common..b.len() {
+        out.push("..");
+    }
+    for c in &p[common..] {
+        out.push(c);
+    }
+    if out.as_os_str().is_empty() {
+        out.push(".");
+    }
+    out
+}
+
+/// A PATH job parameter; its default only when it stays inside the template's folder
+/// (OpenJD refuses defaults that walk up), else the job must be given it (`-p NAME=…`).
+fn path_param(name: &str, kind: &str, flow: &str, path: &Path) -> Value {
+    let mut p = json!({"name": name, "type": "PATH", "objectType": kind, "dataFlow": flow});
+    let inside = path.components().all(|c| {
+        matches!(
+            c,
+            std::path::Component::Normal(_) | std::path::Component::CurDir
+        )
+    });
+    if inside {
+        p["default"] = path.display().to_string().into();
+    }
+    p
+}
+
+/// The template for `frames` (in number order) of the manifest at `manifest_path`, into
+/// `out_dir` (both relative to the folder the template is written into).
+pub fn openjd_template(
+    m: &Manifest,
+    manifest_path: &Path,
+    out_dir: &Path,
+    frames: &[u32],
+    chunking: Chunking,
+) -> Value {
+    let mut chunks = json!({
+        "defaultTaskCount": chunking.size(),
+        "rangeConstraint": "CONTIGUOUS",
+    });
+    if let Chunking::Seconds { target, .. } = chunking {
+        chunks["targetRuntimeSeconds"] = target.into();
+    }
+    let name = manifest_path
+        .file_stem()
+        .map_or("animation".into(), |s| s.to_string_lossy().into_owned());
+    let dir_name = out_dir
+        .file_name()
+        .map_or("frames".into(), |n| n.to_string_lossy().into_owned());
+    let video = out_dir
+        .with_file_name(format!("{dir_name}.mp4"))
+        .display()
+        .to_string();
+    let render = json!({
+        "name": "Render",
+        "parameterSpace": {"taskParameterDefinitions": [{
+            "name": "Frame",
+            "type": "CHUNK[INT]",
+            "range": ranges(frames),
+            "chunks": chunks,
+        }]},
+        "script": {"actions": {"onRun": {
+            "command": "{{Param.Animate}}",
+            "args": ["{{Param.Manifest}}", "-o", "{{Param.OutDir}}",
+                     "--frames", "{{Task.Param.Frame}}", "--resume", "--quiet"],
+        }}},
+    });
+    let mut params = vec![
+        json!({"name": "Animate", "type": "STRING", "default": "animate",
+               "description": "The animate command (a path, or a name on PATH)."}),
+        path_param("Manifest", "FILE", "IN", manifest_path),
+        path_param("OutDir", "DIRECTORY", "OUT", out_dir),
+    ];
+    let mut steps = vec![render];
+    // `animate encode` needs every frame of the manifest: a job of some frames makes none.
+    if frames.iter().copied().eq(0..m.frames) {
+        params.push(path_param("Video", "FILE", "OUT", Path::new(&video)));
+        steps.push(json!({
+            "name": "Video",
+            "dependencies": [{"dependsOn": "Render"}],
+            "script": {"actions": {"onRun": {
+                "command": "{{Param.Animate}}",
+                "args": ["encode", "{{Param.Manifest}}", "--dir", "{{Param.OutDir}}",
+                         "-o", "{{Param.Video}}", "--force", "--quiet"],
+            }}},
+        }));
+    }
+    json!({
+        "specificationVersion": "jobtemplate-2023-09",
+        "extensions": ["TASK_CHUNKING"],
+        "name": format!("animate {name}"),
+        "description": format!("Render {} frames of {} with animate, then encode them.", frames.len(), manifest_path.display()),
+        "parameterDefinitions": params,
+        "steps": steps,
+    })
+}

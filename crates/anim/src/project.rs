@@ -1,0 +1,455 @@
+//! One loader for everything a manifest names (`Project`: the manifest, its scene and the
+//! timeline built from both), and `Animation`, which draws any frame of a project: the
+//! tracer run on the scene of frame t with the camera of frame t, or, with motion blur,
+//! the mean of the sub-frames at the frame's sample times.
+//!
+//! A timeline whose tracks leave geometry alone (colours, lights, fog, coefficients other
+//! than Kt) shares one acceleration structure, built once, across all frames; otherwise
+//! each sample builds its own from its scene.
+
+use super::error::AnimError;
+use super::manifest::Manifest;
+use super::timeline::{MotionBlur, Snapshot, Timeline};
+use serde::Serialize;
+use std::path::{Path, PathBuf};
+use std::sync::{Arc, OnceLock};
+use whitted::accel::Accel;
+use whitted::camera::{Camera, VIEW_HEIGHT, VIEW_WIDTH};
+use whitted::limits::size_ok;
+use whitted::output::ImageFormat;
+use whitted::passes::record::{finish, PixelSum, Sums};
+use whitted::passes::{Layers, PassSet};
+use whitted::pick::Pick;
+use whitted::render::layers::camera_matrices;
+use whitted::render::{
+    control, estimate, render_add_with, render_layers_add, render_with, Adaptive, Antialias, Frame,
+};
+use whitted::scene::{Scene, SceneError};
+use whitted::texture::Color;
+use whitted::trace::{RayCount, Tracer};
+
+/// Bumped whenever an intended change of the library moves pixels: frames recorded under
+/// another version are stale (SPEC §8).
+pub const PIXEL_VERSION: u32 = 1;
+
+/// A manifest with its scene and timeline.
+pub struct Project {
+    /// The validated manifest.
+    pub manifest: Manifest,
+    /// The base scene and everything that changes over time.
+    pub timeline: Timeline,
+    /// The acceleration structure of the base scene's objects, built at the first
+    /// `Animation` that shares one and kept for every later one (a view's requests).
+    accel: OnceLock<Arc<Accel>>,
+}
+
+impl Project {
+    /// The frames' size: the manifest's `[render]` width and height, else the scene's.
+    pub fn size(&self) -> (u32, u32) {
+        let (r, scene) = (&self.manifest.render, &self.timeline.base);
+        (
+            r.width.unwrap_or(scene.width),
+            r.height.unwrap_or(scene.height),
+        )
+    }
+
+    /// Loads a manifest, the scene it names and their timeline. A scene file that cannot
+    /// be read is reported at the manifest's `scene =` line.
+    pub fn load(path: &Path) -> Result<Project, AnimError> {
+        let manifest = Manifest::load(path)?;
+        let scene = Scene::load(&manifest.scene).map_err(|e| match e {
+            SceneError::Io { path, source } => AnimError::SceneFile {
+                loc: manifest.scene_loc.clone(),
+                path,
+                source,
+            },
+            other => AnimError::Scene(other),
+        })?;
+        let timeline = Timeline::new(scene, &manifest)?;
+        Ok(Project {
+            manifest,
+            timeline,
+            accel: OnceLock::new(),
+        })
+    }
+
+    /// The acceleration structure every frame shares, when no track moves geometry:
+    /// built once per project, whatever the number of animations drawn from it.
+    fn shared_accel(&self) -> Option<Arc<Accel>> {
+        let base = &self.timeline.base;
+        (!self.timeline.moves_geometry()).then(|| {
+            Arc::clone(
+                self.accel
+                    .get_or_init(|| Arc::new(Accel::new(&base.objects))),
+            )
+        })
+    }
+}
+
+/// Everything besides the scene and camera that decides a frame's bytes.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Settings {
+    /// The frame's width in pixels.
+    pub width: u32,
+    /// The frame's height in pixels.
+    pub height: u32,
+    /// n of the n×n supersampling grid.
+    pub samples: u32,
+    /// The motion blur, if any.
+    pub motion_blur: Option<MotionBlur>,
+    /// Adaptive anti-aliasing, if set (left out of the digest's JSON when not, so that
+    /// frames drawn before it existed stay up to date).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub antialias: Option<Adaptive>,
+    /// The file format the frame is written in.
+    pub format: ImageFormat,
+    /// `PIXEL_VERSION` of the library that drew it.
+    pub pixel_version: u32,
+    /// The view plane's width and height and the roll, when they are not the report's
+    /// (left out of the record then, so frames of the report's framing keep their digest).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub view: Option<[f64; 3]>,
+}
+
+/// A project ready to draw any of its frames at a size.
+pub struct Animation<'p> {
+    /// The project's manifest.
+    pub manifest: &'p Manifest,
+    /// The project's timeline.
+    pub timeline: &'p Timeline,
+    /// The frames' width in pixels (the manifest's, the scene's, or a preview's).
+    pub width: u32,
+    /// The frames' height in pixels.
+    pub height: u32,
+    /// n of the n×n supersampling grid.
+    pub samples: u32,
+    /// Adaptive anti-aliasing instead of the grid, when the manifest asks for it.
+    pub antialias: Option<Adaptive>,
+    /// The acceleration structure every frame shares, when no track moves geometry.
+    shared: Option<Arc<Accel>>,
+    /// Told of every frame drawn (a live display such as tev), if any.
+    observer: Option<FrameObserver>,
+}
+
+/// A callback told of each frame as it is drawn: its number and pixels.
+pub type FrameObserver = Arc<dyn Fn(u32, &Frame) + Send + Sync>;
+
+impl<'p> Animation<'p> {
+    /// The project at the manifest's size (`[render]` overrides, else the scene's).
+    pub fn new(project: &'p Project) -> Result<Animation<'p>, AnimError> {
+        let (width, height) = project.size();
+        Animation::with_size(project, width, height)
+    }
+
+    /// The project at `width`×`height` (a preview's smaller size, say).
+    pub fn with_size(
+        project: &'p Project,
+        width: u32,
+        height: u32,
+    ) -> Result<Animation<'p>, AnimError> {
+        if !size_ok(u64::from(width), u64::from(height)) {
+            return Err(AnimError::Size {
+                manifest: project.manifest.path.clone(),
+                width,
+                height,
+            });
+        }
+        let shared = project.shared_accel();
+        Ok(Animation {
+            manifest: &project.manifest,
+            timeline: &project.timeline,
+            width,
+            height,
+            samples: project.manifest.render.samples.max(1),
+            antialias: project.manifest.render.antialias,
+            shared,
+            observer: None,
+        })
+    }
+
+    /// This animation, telling `observer` of every frame it draws (`--display tev`).
+    pub fn observed(mut self, observer: FrameObserver) -> Animation<'p> {
+        self.observer = Some(observer);
+        self
+    }
+
+    /// The camera of a frame state, `None` when the eye is on the point it looks at.
+    fn camera(&self, state: &Snapshot) -> Option<Camera> {
+        let native = (self.timeline.base.width, self.timeline.base.height);
+        let size = (self.width, self.height);
+        Camera::framed(state.eye, state.look_at, native, size, &self.manifest.lens)
+    }
+
+    /// The view plane (width, height) and roll when they are not the report's 0.5 × 0.35
+    /// unrolled plane (a size of another shape than the scene's, a `fov`, a `roll`).
+    pub fn view(&self) -> Option<[f64; 3]> {
+        let lens = &self.manifest.lens;
+        let native = (self.timeline.base.width, self.timeline.base.height);
+        let (w, h) = lens.plane(native, (self.width, self.height));
+        let report = (w, h) == (VIEW_WIDTH, VIEW_HEIGHT) && lens.roll == 0.0;
+        (!report).then_some([w, h, lens.roll])
+    }
+
+    /// Frame `frame`'s camera sits on the point it looks at: located at the object the
+    /// camera follows, or the manifest's `[camera]` table.
+    fn camera_error(&self, frame: u32) -> AnimError {
+        let loc = match &self.manifest.look_at {
+            Some(crate::timeline::LookAt::Object { loc, .. }) => loc.clone(),
+            _ => self.manifest.camera_loc.clone(),
+        };
+        AnimError::Camera { frame, loc }
+    }
+
+    /// Refuses, before anything renders, a frame whose camera (at any of its sample
+    /// times) sits on the point it looks at.
+    pub fn check_cameras(&self, frames: &[u32]) -> Result<(), AnimError> {
+        for &frame in frames {
+            for t in self.timeline.times(frame) {
+                if self.camera(&self.timeline.at(t)).is_none() {
+                    return Err(self.camera_error(frame));
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn tracer<'s>(&self, scene: &'s Scene) -> Tracer<'s> {
+        match &self.shared {
+            Some(accel) => Tracer::with_accel(scene, Arc::clone(accel)),
+            None => Tracer::new(scene),
+        }
+    }
+
+    /// Draws frame `frame`: exactly what `raytrace` draws of the scene of that frame with
+    /// its camera; with motion blur the mean of its sub-frames (each sample clamped, all
+    /// averaged, then rounded).
+    pub fn render(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
+        let _drawing = control::frame_in_progress();
+        let drawn = self.draw(frame)?;
+        // A signal stopped the row loops: the frame is incomplete and must not be kept.
+        if let Some(sig) = control::cancelled() {
+            return Err(AnimError::Interrupted(sig));
+        }
+        self.tell(frame, || &drawn.0);
+        Ok(drawn)
+    }
+
+    /// Tells the observer (if any) of finished frame `frame`, whose picture `picture`
+    /// makes: the one place `render` and `render_layers` (an EXR's frames) both end in.
+    fn tell<F: std::borrow::Borrow<Frame>>(&self, frame: u32, picture: impl FnOnce() -> F) {
+        if let Some(observe) = &self.observer {
+            observe(frame, picture().borrow());
+        }
+    }
+
+    fn draw(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
+        let (w, h) = (self.width, self.height);
+        let n = self
+            .antialias
+            .map_or(Antialias::Grid(self.samples), Antialias::Adaptive);
+        let times = self.timeline.times(frame);
+        if let [t] = times[..] {
+            let state = self.timeline.at(t);
+            let camera = self
+                .camera(&state)
+                .ok_or_else(|| self.camera_error(frame))?;
+            return Ok(render_with(&self.tracer(&state.scene), &camera, w, h, n));
+        }
+        let mut sum = vec![Color::ZERO; w as usize * h as usize];
+        let mut rays = RayCount::default();
+        for &t in &times {
+            if control::cancelled().is_some() {
+                break; // the frame is discarded: no need to set up further sub-frames
+            }
+            let state = self.timeline.at(t);
+            let camera = self
+                .camera(&state)
+                .ok_or_else(|| self.camera_error(frame))?;
+            rays = rays + render_add_with(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
+        }
+        Ok((Frame::from_sum(&sum, times.len() as u32, w, h), rays))
+    }
+
+    /// What the camera ray through the centre of pixel (x, y) of frame `frame` hits
+    /// (`whitted::pick`), with this animation's camera (its size, `fov` and `roll`) at the
+    /// frame's own time (motion blur's sub-frames are around it) and its shared tracer.
+    pub fn pick(&self, frame: u32, x: u32, y: u32) -> Result<Option<Pick>, AnimError> {
+        let state = self.timeline.at(f64::from(frame));
+        let camera = self
+            .camera(&state)
+            .ok_or_else(|| self.camera_error(frame))?;
+        Ok(whitted::pick::pick(
+            &self.tracer(&state.scene),
+            &camera,
+            x,
+            y,
+        ))
+    }
+
+    /// The camera rays `frames` frames cast (`render::estimate::camera_rays`).
+    pub fn camera_rays(&self, frames: usize) -> u64 {
+        let subframes = self.timeline.blur.map_or(1, |b| b.samples);
+        estimate::camera_rays(
+            self.width,
+            self.height,
+            self.samples,
+            subframes,
+            frames as u64,
+        )
+    }
+
+    /// This animation at 1/`divisor` of each side (at least one pixel), sharing its BVH.
+    /// With `samples`, that many samples a side and no adaptive anti-aliasing (the
+    /// one-sample pre-pass of `balance`); without, its own sampling (the timed picture
+    /// of `predict_seconds`).
+    pub fn scaled(&self, divisor: u32, samples: Option<u32>) -> Animation<'p> {
+        let divisor = divisor.max(1);
+        let mut small = Animation {
+            width: (self.width / divisor).max(1),
+            height: (self.height / divisor).max(1),
+            shared: self.shared.clone(),
+            observer: None,
+            ..*self
+        };
+        if let Some(n) = samples {
+            small.samples = n.max(1);
+            small.antialias = None;
+        }
+        small
+    }
+
+    /// The seconds `frames` frames are predicted to take, from frame `frame` drawn at
+    /// 1/`SAMPLE_DIVISOR` of each side on the current pool.
+    pub fn predict_seconds(&self, frame: u32, frames: usize) -> Result<f64, AnimError> {
+        let small = self.scaled(estimate::SAMPLE_DIVISOR, None);
+        let start = std::time::Instant::now();
+        small.draw(frame)?;
+        let took = start.elapsed().as_secs_f64();
+        Ok(estimate::predict(
+            self.camera_rays(frames),
+            small.camera_rays(1),
+            took,
+        ))
+    }
+
+    /// Past `estimate::ENORMOUS` camera rays for `frames`: the warning, with the time a
+    /// 1/`SAMPLE_DIVISOR` sample of the first frame predicts on the current pool.
+    pub fn enormous(&self, frames: &[u32]) -> Option<estimate::Enormous> {
+        let rays = self.camera_rays(frames.len());
+        let &first = frames.first()?;
+        if rays <= estimate::ENORMOUS {
+            return None;
+        }
+        let pixels = (u64::from(self.width) * u64::from(self.height)).max(1);
+        Some(estimate::Enormous {
+            rays,
+            frames: Some(frames.len()),
+            width: self.width,
+            height: self.height,
+            per_pixel: self.camera_rays(1) / pixels,
+            seconds: self.predict_seconds(first, frames.len()).ok(),
+            threads: rayon::current_num_threads(),
+        })
+    }
+
+    /// The rows of pixels one frame draws: its height, times its motion-blur sub-frames
+    /// (the unit of `render::control::rows_done`).
+    pub fn rows_per_frame(&self) -> u64 {
+        let subframes = self
+            .timeline
+            .blur
+            .map_or(1, |b| u64::from(b.samples.max(1)));
+        u64::from(self.height) * subframes
+    }
+
+    /// Draws frame `frame` as a frame of layers: the unclamped beauty (the mean of every
+    /// sample of every sub-frame) and `passes`, from one trace per sample. The header's
+    /// camera is the one at the frame's own time.
+    pub fn render_layers(
+        &self,
+        frame: u32,
+        passes: PassSet,
+    ) -> Result<(Layers, RayCount), AnimError> {
+        let _drawing = control::frame_in_progress();
+        let (w, h, n) = (self.width, self.height, self.samples);
+        let times = self.timeline.times(frame);
+        let mut sums = Sums::new(w as usize * h as usize, passes);
+        let mut rays = RayCount::default();
+        for &t in &times {
+            let state = self.timeline.at(t);
+            let camera = self
+                .camera(&state)
+                .ok_or_else(|| self.camera_error(frame))?;
+            let tracer = self.tracer(&state.scene);
+            rays = rays + render_layers_add(&tracer, &camera, w, h, n, passes, &mut sums);
+        }
+        // A signal stopped the row loops: the frame is incomplete and must not be kept.
+        if let Some(sig) = control::cancelled() {
+            return Err(AnimError::Interrupted(sig));
+        }
+        let state = self.timeline.at(f64::from(frame));
+        let matrices = self.camera(&state).map(|c| camera_matrices(&c));
+        let count = n * n * times.len() as u32;
+        let layers = finish(&sums, count, w, h, passes, &state.scene, matrices);
+        self.tell(frame, || layers.to_frame());
+        Ok((layers, rays))
+    }
+
+    /// The 8-bit picture of frame `frame` as its files hold it: `render`, or for a layered
+    /// format (EXR) its beauty through the clamp-and-round of SPEC §2 (what a preview or a
+    /// video shows of an EXR frame).
+    pub fn render_picture(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
+        if self.format().is_layered() {
+            let (layers, rays) = self.render_layers(frame, PassSet::NONE)?;
+            return Ok((layers.to_frame(), rays));
+        }
+        self.render(frame)
+    }
+
+    /// The image format of the frame files.
+    pub fn format(&self) -> ImageFormat {
+        self.manifest.output.format
+    }
+
+    /// Every setting besides scene and camera that decides the frames' bytes.
+    pub fn settings(&self) -> Settings {
+        Settings {
+            width: self.width,
+            height: self.height,
+            samples: self.samples,
+            motion_blur: self.timeline.blur,
+            antialias: self.antialias,
+            format: self.format(),
+            pixel_version: PIXEL_VERSION,
+            view: self.view(),
+        }
+    }
+
+    /// How many frames may be in flight at once: `per_thread` per worker thread, but no
+    /// more than fit in `FRAME_MEMORY` (at least one), whatever `--threads` says.
+    pub fn window(&self, per_thread: usize) -> usize {
+        // A layered frame keeps per-pixel sums (`PixelSum`) and float channels.
+        let per_pixel = if self.format().is_layered() {
+            std::mem::size_of::<PixelSum>() + 4 * 64
+        } else {
+            3
+        };
+        let frame_bytes = (self.width as usize * self.height as usize * per_pixel).max(1);
+        // Motion blur adds a float accumulator of 24 bytes a pixel per frame in flight.
+        let blur = if self.timeline.blur.is_some() { 9 } else { 1 };
+        let fit = (FRAME_MEMORY / (2 * blur * frame_bytes)).max(1);
+        (per_thread * rayon::current_num_threads().max(1)).min(fit)
+    }
+
+    /// The final path of frame `frame` inside `dir`.
+    pub fn frame_path(&self, dir: &Path, frame: u32) -> PathBuf {
+        dir.join(self.manifest.output.file_name(frame, self.manifest.frames))
+    }
+}
+
+/// The memory frames in flight may take (pixels and their encoded copy): 1 GiB.
+pub const FRAME_MEMORY: usize = 1 << 30;
+
+mod display;
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,312 @@
+//! Values over time: the one answer to "what is frame t?". A `Timeline` holds the base
+//! scene, the camera (a `circle` or `spline` path from `camera` and `spline`, or the scene
+//! file's eye held still; looking at a point or following an object) and the tracks
+//! (`track`, `target`, `ease`), and `Timeline::at(t)` gives the scene with every track's
+//! value at time t put in and the camera's eye and look-at point there. Times are in
+//! frames and may be fractional (motion blur samples between frames, `MotionBlur`).
+//!
+//! Building a timeline resolves every track against the scene and checks every value it
+//! will produce, at every time a frame of the sequence will sample, against the bounds of
+//! SPEC §1; a refusal names the manifest's line and column, the track and the frame.
+
+mod camera;
+mod ease;
+mod spline;
+mod target;
+mod track;
+
+pub use camera::{CameraPath, Circle};
+pub use ease::{Ease, Interpolation};
+pub use spline::{coord_ok, Key, Spline, SplineError};
+pub use target::{Field, Kind, Target};
+pub use track::{Motion, Track, TrackKey, TrackSpec};
+
+use crate::refusal::ManifestError;
+use glam::DVec3;
+use std::borrow::Cow;
+use whitted::fileloc::FileLoc;
+use whitted::scene::Scene;
+
+/// `[render] motion_blur`: each frame the mean of `samples` sub-frames spread over
+/// `shutter` frames centred on it.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize)]
+pub struct MotionBlur {
+    /// In frames, 0 < shutter ≤ 1.
+    pub shutter: f64,
+    /// Sub-frames averaged per frame, 1 to `MAX_BLUR_SAMPLES`.
+    pub samples: u32,
+}
+
+impl MotionBlur {
+    /// The values a `motion_blur` table leaves out take: a half-frame shutter (film's 180°)
+    /// and 8 samples.
+    pub const DEFAULT: MotionBlur = MotionBlur {
+        shutter: 0.5,
+        samples: 8,
+    };
+
+    /// t_k = frame + shutter·((k + ½)/samples − ½), k = 0..samples.
+    pub fn times(&self, frame: u32) -> impl Iterator<Item = f64> + '_ {
+        let n = f64::from(self.samples.max(1));
+        (0..self.samples.max(1))
+            .map(move |k| f64::from(frame) + self.shutter * ((f64::from(k) + 0.5) / n - 0.5))
+    }
+}
+
+/// What the camera looks at, as the manifest gives it (`look_at`).
+#[derive(Clone, Debug, PartialEq)]
+pub enum LookAt {
+    /// `[x, y, z]`: a fixed point.
+    Point(DVec3),
+    /// `"sphere 2"`, resolved against the scene by the timeline.
+    Object {
+        /// The text as written, `KIND N`.
+        name: String,
+        /// Where it is written, for errors found when resolving it.
+        loc: FileLoc,
+    },
+}
+
+/// What a timeline binds to a scene, as a manifest gives it (`From<&Manifest>`): the
+/// sequence's length, the camera path and its gaze, the tracks and the motion blur.
+#[derive(Clone, Copy, Debug)]
+pub struct Sequence<'a> {
+    /// The frame count.
+    pub frames: u32,
+    /// The camera's path; `None` keeps the scene file's eye.
+    pub camera: Option<&'a CameraPath>,
+    /// An object followed or, without a path, a point looked at.
+    pub look_at: Option<&'a LookAt>,
+    /// The tracks as written.
+    pub tracks: &'a [TrackSpec],
+    /// The motion blur, if any.
+    pub blur: Option<MotionBlur>,
+}
+
+/// What the camera looks at when the path does not say.
+#[derive(Clone, Debug, PartialEq)]
+enum Gaze {
+    /// The path's own look-at point (or the scene file's).
+    Path,
+    /// A fixed point (a still camera's `look_at = [x, y, z]`).
+    Point(DVec3),
+    /// An object or light, followed: its kind and index.
+    Follow(String, usize),
+}
+
+/// The scene and camera of every time of a sequence.
+#[derive(Clone, Debug)]
+pub struct Timeline {
+    /// The scene as its file gives it; tracks change copies of it.
+    pub base: Scene,
+    /// The sequence's frame count (the time base of circles and closed splines).
+    pub frames: u32,
+    /// The camera's path; `None` keeps the scene file's eye.
+    pub camera: Option<CameraPath>,
+    /// The tracks, resolved against `base`, in manifest order.
+    pub tracks: Vec<Track>,
+    /// The motion blur, if the manifest asks for it.
+    pub blur: Option<MotionBlur>,
+    gaze: Gaze,
+}
+
+/// Frame t: the scene with the tracks' values put in, and the camera.
+#[derive(Clone, Debug)]
+pub struct Snapshot<'a> {
+    /// The scene at that time (borrowed from the base when no track changes it).
+    pub scene: Cow<'a, Scene>,
+    /// The camera's position.
+    pub eye: DVec3,
+    /// The point the camera looks at.
+    pub look_at: DVec3,
+}
+
+fn invalid(loc: &FileLoc, message: String) -> ManifestError {
+    ManifestError::Invalid {
+        loc: loc.clone(),
+        message,
+    }
+}
+
+impl Timeline {
+    /// Binds the manifest's camera and tracks (`Sequence::from(&manifest)`) to `base`, and
+    /// checks every value they produce at every sampled time.
+    pub fn new<'a>(
+        base: Scene,
+        sequence: impl Into<Sequence<'a>>,
+    ) -> Result<Timeline, ManifestError> {
+        let manifest: Sequence<'a> = sequence.into();
+        // Of the names that do not resolve, the first in the file is reported.
+        let mut refused: Option<ManifestError> = None;
+        let mut refuse = |e: ManifestError| {
+            let at = |e: &ManifestError| e.loc().map(|l| (l.line, l.column));
+            if refused.as_ref().is_none_or(|r| at(&e) < at(r)) {
+                refused = Some(e);
+            }
+        };
+        let gaze = match manifest.look_at {
+            None => Gaze::Path,
+            Some(LookAt::Point(p)) => Gaze::Point(*p),
+            Some(LookAt::Object { name, loc }) => match target::parse_subject(name, &base) {
+                Ok((kind, index)) => Gaze::Follow(kind, index),
+                Err(m) => {
+                    refuse(invalid(loc, format!("look_at: {m}")));
+                    Gaze::Path
+                }
+            },
+        };
+        let mut tracks: Vec<Track> = Vec::with_capacity(manifest.tracks.len());
+        for (n, spec) in manifest.tracks.iter().enumerate() {
+            let track = match resolve(spec, &base) {
+                Ok(track) => track,
+                Err(m) => {
+                    refuse(invalid(&spec.loc, m));
+                    continue;
+                }
+            };
+            if let Some(j) = tracks.iter().position(|t| t.target == track.target) {
+                let message = format!(
+                    "track {}: its target `{}` is already animated by track {}; one track per value",
+                    n + 1,
+                    spec.target,
+                    j + 1
+                );
+                refuse(invalid(&spec.loc, message));
+            }
+            tracks.push(track);
+        }
+        if let Some(e) = refused {
+            return Err(e);
+        }
+        let timeline = Timeline {
+            base,
+            frames: manifest.frames,
+            camera: manifest.camera.cloned(),
+            tracks,
+            blur: manifest.blur,
+            gaze,
+        };
+        timeline.check_values()?;
+        Ok(timeline)
+    }
+
+    /// The times frame `frame` samples: the frame itself, or its motion-blur sub-frames.
+    pub fn times(&self, frame: u32) -> Vec<f64> {
+        match &self.blur {
+            Some(blur) => blur.times(frame).collect(),
+            None => vec![f64::from(frame)],
+        }
+    }
+
+    /// Whether some track changes what rays hit, so that frames need their own
+    /// acceleration structure; otherwise one, built from the base scene, serves all.
+    pub fn moves_geometry(&self) -> bool {
+        self.tracks.iter().any(|t| t.target.moves_geometry())
+    }
+
+    /// Frame t: the scene with every track's value at t, and the camera there.
+    pub fn at(&self, t: f64) -> Snapshot<'_> {
+        let scene = if self.tracks.is_empty() {
+            Cow::Borrowed(&self.base)
+        } else {
+            let mut scene = self.base.clone();
+            for track in &self.tracks {
+                let value = track.spec.motion.value_at(t, self.frames);
+                track.target.apply(&mut scene, value);
+            }
+            Cow::Owned(scene)
+        };
+        let (eye, path_look) = match &self.camera {
+            Some(path) => path.at(t, self.frames, scene.look_at),
+            None => (scene.eye, scene.look_at),
+        };
+        let look_at = match &self.gaze {
+            Gaze::Path => path_look,
+            Gaze::Point(p) => *p,
+            Gaze::Follow(kind, index) => target::subject_point(kind, *index, &scene),
+        };
+        Snapshot {
+            scene,
+            eye,
+            look_at,
+        }
+    }
+
+    /// The position a track gives over the sequence, for plots: `(frame, point)` of each
+    /// track whose target is a position, at every frame.
+    pub fn tracked_positions(&self) -> Vec<(String, Vec<DVec3>)> {
+        self.tracks
+            .iter()
+            .filter(|t| t.target.is_position())
+            .map(|t| {
+                let points = (0..self.frames)
+                    .map(|f| t.spec.motion.value_at(f64::from(f), self.frames))
+                    .collect();
+                (t.spec.target.clone(), points)
+            })
+            .collect()
+    }
+
+    /// Every value of every track, at every time a frame samples, within SPEC §1's bounds.
+    fn check_values(&self) -> Result<(), ManifestError> {
+        for (n, track) in self.tracks.iter().enumerate() {
+            for frame in 0..self.frames {
+                for t in self.times(frame) {
+                    let value = track.spec.motion.value_at(t, self.frames);
+                    if let Err(why) = track.target.check(value) {
+                        let shown = match track.target.kind() {
+                            Kind::Number => format!("{}", value.x),
+                            Kind::Vector => format!("[{}, {}, {}]", value.x, value.y, value.z),
+                        };
+                        let at = if t == f64::from(frame) {
+                            format!("frame {frame}")
+                        } else {
+                            format!("frame {frame} (motion-blur time {t})")
+                        };
+                        let message = format!(
+                            "track {} (`{}`): at {at} its value {shown} is out of bounds: {why}",
+                            n + 1,
+                            track.spec.target
+                        );
+                        let loc = track.spec.motion.loc_at(t, &track.spec.loc);
+                        return Err(invalid(loc, message));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// A track's target resolved against `scene`, and its values' kind checked.
+fn resolve(spec: &TrackSpec, scene: &Scene) -> Result<Track, String> {
+    let target = Target::parse(&spec.target, scene)?;
+    match &spec.motion {
+        Motion::Circle(_) if !target.is_position() => {
+            return Err(format!(
+                "`{}` is not a position: only sphere center, plane or cylinder point and light position may follow a circle",
+                spec.target
+            ))
+        }
+        Motion::Keys { keys, .. } => {
+            if let Some(key) = keys.iter().find(|k| k.kind != target.kind()) {
+                let want = match target.kind() {
+                    Kind::Number => "a number",
+                    Kind::Vector => "[x, y, z]",
+                };
+                return Err(format!(
+                    "`{}` takes {want}; the key at frame {} (line {}) gives another kind of value",
+                    spec.target, key.frame, key.loc.line
+                ));
+            }
+        }
+        Motion::Circle(_) => {}
+    }
+    Ok(Track {
+        spec: spec.clone(),
+        target,
+    })
+}
+
+#[cfg(test)]
+mod tests;

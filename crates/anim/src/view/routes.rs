@@ -1,0 +1,314 @@
+//! The view's routes, as a function from a request (method, target, Host) to a reply;
+//! `server` carries them over HTTP. Nothing here opens a file by a name from a request:
+//! the page's three assets are inside the binary, and every other answer is computed.
+//!
+//! | route | answer |
+//! |---|---|
+//! | `GET /`, `/app.js`, `/app.css` | the page (embedded) |
+//! | `GET /api/state` | `{generation, error, frames, fps, width, height, manifest}` |
+//! | `GET /api/wait?since=G` | the same, once the generation is not G (or after 20 s) |
+//! | `GET /api/frame?n=F&scale=S&client=C[&format=raw]` | frame F at 1/S (S 1..=64), PNG or RGB bytes; 409 when a newer request of client C superseded it |
+//! | `GET /api/pick?n=F&x=X&y=Y` | `{hit}`: what the camera ray through pixel (X, Y) of the whole frame F hits (`pick`) |
+//! | `GET /api/status` | `{generation, folder, states}`: every frame up-to-date, stale or missing in the output folder |
+//!
+//! A request whose `Host` is not this server's bound name is refused (403); a bad
+//! parameter gets 400 and `{"error": reason}`; an unknown route 404, a method other than
+//! GET or HEAD 405, all with a JSON reason.
+
+use super::frames::{Drawn, Encoding, Frames};
+use super::live::{Live, Loaded};
+use crate::frames::status::states;
+use crate::project::Animation;
+use serde_json::{json, Value};
+use std::net::SocketAddr;
+use std::sync::Arc;
+use std::time::Duration;
+
+const INDEX: &str = include_str!("assets/index.html");
+const SCRIPT: &str = include_str!("assets/app.js");
+const STYLE: &str = include_str!("assets/app.css");
+
+/// How long `/api/wait` holds a request when nothing changes.
+pub const WAIT: Duration = Duration::from_secs(20);
+/// The largest divisor of the frame's size a request may ask for.
+pub const MAX_SCALE: u32 = 64;
+
+/// An answer.
+pub struct Reply {
+    /// HTTP status.
+    pub status: u16,
+    /// Its `Content-Type`.
+    pub content_type: &'static str,
+    /// Its body.
+    pub body: Arc<Vec<u8>>,
+    /// Extra headers.
+    pub headers: Vec<(&'static str, String)>,
+}
+
+impl Reply {
+    fn bytes(status: u16, content_type: &'static str, body: Vec<u8>) -> Reply {
+        Reply {
+            status,
+            content_type,
+            body: Arc::new(body),
+            headers: Vec::new(),
+        }
+    }
+    fn json(status: u16, v: Value) -> Reply {
+        Reply::bytes(status, "application/json", v.to_string().into_bytes())
+    }
+    /// `{"error": why}` with `status`.
+    pub fn error(status: u16, why: impl Into<String>) -> Reply {
+        Reply::json(status, json!({ "error": why.into() }))
+    }
+}
+
+/// What the routes share.
+pub struct Context {
+    /// The project, reloaded as it changes.
+    pub live: Arc<Live>,
+    /// The frame service.
+    pub frames: Frames,
+    /// The threads that draw (`--threads`).
+    pub pool: Arc<rayon::ThreadPool>,
+    /// The address the server is bound to.
+    pub bound: SocketAddr,
+}
+
+/// Whether `host` (a `Host` header) names this server: `IP:PORT` of the bound address,
+/// or `localhost:PORT` when it is a loopback one. Bound to every interface (0.0.0.0,
+/// ::), any IP literal with the port is this server; a DNS name never is (DNS
+/// rebinding).
+pub fn host_ok(host: &str, bound: SocketAddr) -> bool {
+    let port = bound.port();
+    let Some((name, p)) = host.rsplit_once(':') else {
+        return false;
+    };
+    if p.parse::<u16>() != Ok(port) {
+        return false;
+    }
+    let name = name.trim_start_matches('[').trim_end_matches(']');
+    if name.eq_ignore_ascii_case("localhost") {
+        return bound.ip().is_loopback() || bound.ip().is_unspecified();
+    }
+    match name.parse::<std::net::IpAddr>() {
+        Ok(ip) => ip == bound.ip() || bound.ip().is_unspecified(),
+        Err(_) => false,
+    }
+}
+
+/// The query's value of `key` (the last one given).
+fn param<'q>(query: &'q str, key: &str) -> Option<&'q str> {
+    query
+        .split('&')
+        .filter_map(|kv| kv.split_once('=').or(Some((kv, ""))))
+        .filter(|(k, _)| *k == key)
+        .map(|(_, v)| v)
+        .next_back()
+}
+
+/// An integer parameter in `lo..=hi`, or the 400 reason.
+fn number(query: &str, key: &str, lo: u32, hi: u32, default: Option<u32>) -> Result<u32, Reply> {
+    let Some(text) = param(query, key) else {
+        return default.ok_or_else(|| Reply::error(400, format!("missing parameter `{key}`")));
+    };
+    match text.parse::<u32>() {
+        Ok(v) if (lo..=hi).contains(&v) => Ok(v),
+        Ok(v) => Err(Reply::error(
+            400,
+            format!("`{key}` = {v} is out of range: expected {lo} to {hi}"),
+        )),
+        Err(_) => Err(Reply::error(
+            400,
+            format!("`{key}` = {text:?} is not a whole number"),
+        )),
+    }
+}
+
+fn state(l: &Loaded, live: &Live) -> Value {
+    let manifest = live.manifest().display().to_string();
+    match &l.project {
+        Some(p) => {
+            let (width, height) = p.size();
+            json!({
+                "generation": l.generation, "error": l.error, "manifest": manifest,
+                "frames": p.manifest.frames, "fps": p.manifest.fps,
+                "width": width, "height": height,
+            })
+        }
+        None => json!({"generation": l.generation, "error": l.error, "manifest": manifest,
+                       "frames": null}),
+    }
+}
+
+/// Answers one request.
+pub fn answer(ctx: &Context, method: &str, target: &str, host: Option<&str>) -> Reply {
+    match host {
+        Some(h) if host_ok(h, ctx.bound) => {}
+        Some(h) => {
+            return Reply::error(
+                403,
+                format!("Host {h:?} is not this server ({}): refused", ctx.bound),
+            )
+        }
+        None => return Reply::error(403, "no Host header: refused"),
+    }
+    if method != "GET" && method != "HEAD" {
+        return Reply::error(405, format!("{method} is not served: GET only"));
+    }
+    let (path, query) = target.split_once('?').unwrap_or((target, ""));
+    match path {
+        "/" | "/index.html" => Reply::bytes(200, "text/html; charset=utf-8", INDEX.into()),
+        "/app.js" => Reply::bytes(200, "text/javascript; charset=utf-8", SCRIPT.into()),
+        "/app.css" => Reply::bytes(200, "text/css; charset=utf-8", STYLE.into()),
+        "/api/state" => Reply::json(200, state(&ctx.live.current(), &ctx.live)),
+        "/api/wait" => match number(query, "since", 0, u32::MAX, Some(0)) {
+            Ok(since) => Reply::json(
+                200,
+                state(&ctx.live.wait(u64::from(since), WAIT), &ctx.live),
+            ),
+            Err(r) => r,
+        },
+        "/api/frame" => frame(ctx, query).unwrap_or_else(|r| r),
+        "/api/pick" => pick(ctx, query).unwrap_or_else(|r| r),
+        "/api/status" => strip(ctx),
+        _ => Reply::error(404, format!("no route {path:?}")),
+    }
+}
+
+/// The live project, or 503 when none ever loaded.
+fn project(ctx: &Context) -> Result<(Loaded, Arc<crate::Project>), Reply> {
+    let l = ctx.live.current();
+    match l.project.clone() {
+        Some(p) => Ok((l, p)),
+        None => Err(Reply::json(
+            503,
+            json!({"error": "the manifest has not loaded yet", "detail": l.error}),
+        )),
+    }
+}
+
+fn frame(ctx: &Context, query: &str) -> Result<Reply, Reply> {
+    let (loaded, p) = project(ctx)?;
+    let last = p.manifest.frames - 1;
+    let n = number(query, "n", 0, last, None)?;
+    let scale = number(query, "scale", 1, MAX_SCALE, Some(1))?;
+    let client = param(query, "client").unwrap_or("anonymous");
+    if client.is_empty()
+        || client.len() > 64
+        || !client
+            .bytes()
+            .all(|b| b.is_ascii_alphanumeric() || b == b'-')
+    {
+        return Err(Reply::error(
+            400,
+            "`client` must be 1 to 64 letters, digits or -",
+        ));
+    }
+    let encoding = match param(query, "format").unwrap_or("png") {
+        "png" => Encoding::Png,
+        "raw" => Encoding::Raw,
+        other => {
+            return Err(Reply::error(
+                400,
+                format!("`format` = {other:?}: expected png or raw"),
+            ))
+        }
+    };
+    let drawn = ctx.frames.get(&loaded, &p, client, n, scale, encoding);
+    match drawn {
+        Ok(Drawn::Frame(body, w, h)) => Ok(Reply {
+            status: 200,
+            content_type: match encoding {
+                Encoding::Png => "image/png",
+                Encoding::Raw => "application/octet-stream",
+            },
+            body,
+            headers: vec![
+                ("X-Frame", n.to_string()),
+                ("X-Size", format!("{w}x{h}")),
+                ("X-Generation", loaded.generation.to_string()),
+            ],
+        }),
+        Ok(Drawn::Superseded) => Err(Reply::error(
+            409,
+            "superseded by a newer request of this client",
+        )),
+        Err(e) => Err(Reply::error(422, format!("animate: {e}"))),
+    }
+}
+
+fn pick(ctx: &Context, query: &str) -> Result<Reply, Reply> {
+    let (_, p) = project(ctx)?;
+    let (w, h) = p.size();
+    let n = number(query, "n", 0, p.manifest.frames - 1, None)?;
+    let x = number(query, "x", 0, w - 1, None)?;
+    let y = number(query, "y", 0, h - 1, None)?;
+    let anim = Animation::new(&p).map_err(|e| Reply::error(422, format!("animate: {e}")))?;
+    let hit = anim
+        .pick(n, x, y)
+        .map_err(|e| Reply::error(422, format!("animate: {e}")))?;
+    Ok(Reply::json(
+        200,
+        json!({ "frame": n, "x": x, "y": y, "hit": hit }),
+    ))
+}
+
+fn strip(ctx: &Context) -> Reply {
+    let (loaded, p) = match project(ctx) {
+        Ok(v) => v,
+        Err(r) => return r,
+    };
+    let anim = match Animation::new(&p) {
+        Ok(a) => a,
+        Err(e) => return Reply::error(422, format!("animate: {e}")),
+    };
+    let dir = &p.manifest.output.dir;
+    let frames: Vec<u32> = (0..p.manifest.frames).collect();
+    let states = ctx.pool.install(|| states(&anim, dir, &frames, false));
+    Reply::json(
+        200,
+        json!({"generation": loaded.generation, "folder": dir.display().to_string(),
+               "states": states}),
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn hosts() {
+        let lo: SocketAddr = "127.0.0.1:8417".parse().unwrap();
+        assert!(host_ok("127.0.0.1:8417", lo));
+        assert!(host_ok("localhost:8417", lo));
+        assert!(host_ok("LOCALHOST:8417", lo));
+        assert!(!host_ok("127.0.0.1:8418", lo));
+        assert!(!host_ok("127.0.0.1", lo));
+        assert!(!host_ok("evil.example:8417", lo));
+        assert!(!host_ok("10.0.0.1:8417", lo));
+        let v6: SocketAddr = "[::1]:9".parse().unwrap();
+        assert!(host_ok("[::1]:9", v6));
+        let any: SocketAddr = "0.0.0.0:9".parse().unwrap();
+        assert!(host_ok("192.168.1.4:9", any));
+        assert!(!host_ok("rebind.example:9", any));
+    }
+
+    #[test]
+    fn parameters() {
+        assert_eq!(param("n=3&scale=4", "scale"), Some("4"));
+        assert_eq!(param("n=3&n=5", "n"), Some("5"));
+        assert_eq!(param("flag", "flag"), Some(""));
+        assert_eq!(param("n=3", "x"), None);
+        assert!(number("n=3", "n", 0, 9, None).is_ok());
+        let r = number("n=10", "n", 0, 9, None).unwrap_err();
+        assert_eq!(r.status, 400);
+        let body: Value = serde_json::from_slice(&r.body).unwrap();
+        assert_eq!(body["error"], "`n` = 10 is out of range: expected 0 to 9");
+        let r = number("n=ten", "n", 0, 9, None).unwrap_err();
+        let body: Value = serde_json::from_slice(&r.body).unwrap();
+        assert_eq!(body["error"], "`n` = \"ten\" is not a whole number");
+        assert_eq!(number("", "scale", 1, 64, Some(1)).ok(), Some(1));
+        assert_eq!(number("", "n", 0, 9, None).unwrap_err().status, 400);
+    }
+}
