@@ -12,7 +12,7 @@ use whitted_anim::preview::{self, PreviewOptions};
 use whitted_anim::select::{process_env, SelectError, Shard};
 use whitted_anim::{AnimError, Manifest, Project};
 
-use crate::report::Usage;
+use super::report::Usage;
 
 const AFTER_HELP: &str = "\
 Exit status: 0 success; 1 the run started and failed (a frame could not be rendered or

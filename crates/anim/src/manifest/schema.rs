@@ -320,7 +320,7 @@ mod tests {
 
     #[test]
     fn the_reference_page_names_every_table_and_key() {
-        let page = include_str!("../../../docs/manifest.md");
+        let page = include_str!("../../../../docs/manifest.md");
         let places = [
             TOP, STILL, CIRCLE, SPLINE, ANY_CAMERA, SPLINE_KEY, TRACK, TRACK_KEY, OUTPUT, RENDER,
             BLUR, ANTIALIAS, CHECK,

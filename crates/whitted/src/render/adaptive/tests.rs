@@ -171,7 +171,11 @@ fn a_pixel_on_the_sphere_edge_splits_to_the_depth() {
 
 #[test]
 fn same_colours_and_rays_whatever_the_tiles_and_threads() {
-    let mut scene = Scene::load(std::path::Path::new("scenes/08-procedural-textures.txt")).unwrap();
+    let mut scene = Scene::load(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../scenes/08-procedural-textures.txt"
+    )))
+    .unwrap();
     let (w, h) = (37, 23);
     (scene.width, scene.height) = (w, h);
     let tracer = Tracer::new(&scene);

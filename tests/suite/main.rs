@@ -1,0 +1,60 @@
+//! The integration tests, one test crate with a module per subject: every test file used to
+//! be its own crate linking the whole workspace (49 of the 53 were compile and link time on
+//! a fresh clone); one crate links once. Helpers shared by the modules: `support` (running
+//! the built binaries, outside readers), `skip` (tests that need an outside tool say they
+//! skipped, and fail under CI), `common` and `view_common`, `shipped` (the scenes and
+//! manifests the repository ships).
+//!
+//! Run one subject with its module path: `cargo test --release --test suite farm_slurm`.
+
+mod common;
+mod shipped;
+mod skip;
+mod support;
+mod view_common;
+
+mod adaptive_aa;
+mod animate_check;
+mod animate_cli;
+mod animate_encode;
+mod animate_faults;
+mod animate_ffmpeg;
+mod animate_preview;
+mod animate_provenance;
+mod animate_records;
+mod animate_reliability;
+mod animate_tracks;
+mod balance;
+mod check_bounded;
+mod check_browser;
+mod check_reports;
+mod degenerate_geometry;
+mod docs_commands;
+mod docs_examples;
+mod exit_status;
+mod exr_frames;
+mod exr_manifest;
+mod exr_oracles;
+mod farm_shard;
+mod farm_slurm;
+mod frame_cli;
+mod frame_specs;
+mod golden_frames;
+mod interrupt;
+mod malformed_scenes;
+mod messages;
+mod newcomer;
+mod openjd_job;
+mod pgo_build;
+mod progress;
+mod raytrace_cli;
+mod readonly_folder;
+mod robust_parsers;
+mod scene_parsing;
+mod shape_properties;
+mod shipped_files;
+mod skip_visible;
+mod tev_stream;
+mod view_browser;
+mod view_server;
+mod wide_frames;
