@@ -1,13 +1,40 @@
-//! A Whitted ray tracer faithful to the student report `rapport-raytracing.txt`, and the
-//! animation pipeline around it.
+//! `whitted`: a Whitted ray tracer faithful to the student report
+//! `rapport-raytracing.txt`, as a library. The `raytrace` and `animate` commands (crate
+//! `whitted-cli`) and the animation pipeline (crate `whitted-anim`) are built on this
+//! crate's public API alone, so a program of your own draws exactly their pixels.
 //!
 //! The library reads a Scene.txt (`scene`), places the report's camera (`camera`),
-//! intersects spheres, planes and quadric cylinders (`shapes`), colours hits with solid
-//! textures (`texture`, `noise`) and bump mapping (`bump`), lights them (`shading`),
-//! follows reflection and refraction (`trace`, `optics`), fogs primary rays (`fog`) and
-//! renders images in parallel (`render`) that `output` writes as RAW, PNG, JPEG or PPM.
-//! `raytrace` (one image) and `animate` (frame sequences) are thin binaries over it, so
-//! both draw exactly the same pixels.
+//! intersects spheres, planes and quadric cylinders (`shapes`) through acceleration
+//! structures (`accel`), colours hits with solid textures (`texture`, `noise`) and bump
+//! mapping (`bump`), lights them (`shading`), follows reflection and refraction (`trace`,
+//! `optics`), fogs primary rays (`fog`), renders images in parallel (`render`), records
+//! passes for compositing (`passes`) and writes RAW, PNG, JPEG, PPM or OpenEXR (`output`).
+//! `still` is `raytrace`'s whole run as one call.
+//!
+//! A Scene.txt to a PNG, as `raytrace Scene.txt -o picture.png` draws it:
+//!
+//! ```
+//! use whitted::still::{Job, Request};
+//!
+//! # fn main() -> Result<(), Box<dyn std::error::Error>> {
+//! # let dir = tempfile::tempdir()?;
+//! # let scene = dir.path().join("Scene.txt");
+//! # std::fs::write(&scene, "32 24  0 0 5  0 0 0  0 0  1 0 0 1\n1 0 0 0  1 1 0 0  1 0 0 1 0 0\n0 5 5  1 1 1  1\n")?;
+//! # let png = dir.path().join("picture.png");
+//! let request = Request {
+//!     scene: scene.clone(),   // the report's text format (docs/scene-format.md)
+//!     out: Some(png.clone()), // the format follows the extension
+//!     samples: 1,             // n×n samples a pixel
+//!     ..Request::default()
+//! };
+//! let done = Job::prepare(&request)?.run()?; // on rayon's global pool
+//! assert_eq!(done.size, (32, 24));
+//! assert!(std::fs::read(&png)?.starts_with(b"\x89PNG"));
+//! # Ok(())
+//! # }
+//! ```
+//!
+//! The same, step by step, with the pixels in memory:
 //!
 //! ```
 //! use whitted::{render, trace::Tracer, Scene};

@@ -8,6 +8,9 @@
 //! still.render_shown(&display, "raytrace: out.png", "raytrace") → (Frame, RayCount)
 //! ```
 
+mod request;
+pub use request::{Done, Job, Request, StillError};
+
 use crate::camera::{Camera, Lens};
 use crate::display::{Display, Tev};
 use crate::passes::{Layers, PassSet};

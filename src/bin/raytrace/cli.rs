@@ -9,6 +9,7 @@ use whitted::display::Display;
 use whitted::output::ExrDepth;
 use whitted::passes::{Pass, PassSet};
 use whitted::render::Adaptive;
+use whitted::still::Request;
 
 const AFTER_HELP: &str = "\
 Formats, by OUT's extension: .png, .jpg/.jpeg (quality 90), .ppm (binary P6), .raw (the
@@ -75,6 +76,28 @@ pub struct Args {
     /// 127.0.0.1:14158) or `tev=HOST:PORT`. A missing viewer is a warning.
     #[arg(long, value_name = "tev[=HOST:PORT]")]
     pub display: Option<Display>,
+}
+
+impl Args {
+    /// What the command line asks the library to draw.
+    pub fn request(&self) -> Request {
+        let lens = Lens {
+            fov: self.fov,
+            roll: self.roll,
+        };
+        Request {
+            scene: self.scene.clone(),
+            out: self.out.clone(),
+            size: self.size,
+            lens,
+            samples: self.samples,
+            aa: self.aa,
+            passes: self.passes,
+            pass: self.pass,
+            exr_depth: self.exr_depth,
+            display: self.display.clone(),
+        }
+    }
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
