@@ -40,6 +40,9 @@ fn run(args: Args) -> anyhow::Result<()> {
     let job = Job::prepare(&args.request())?;
     let pool = process::pool(args.threads).context("cannot start the worker threads")?;
     if !args.quiet {
+        if let Some(w) = job.non_square() {
+            eprintln!("raytrace: warning: {w}");
+        }
         if let Some(e) = pool.install(|| job.enormous()) {
             eprintln!("raytrace: warning: {e} (Ctrl-C stops)");
         }

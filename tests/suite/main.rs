@@ -46,6 +46,7 @@ mod messages;
 mod newcomer;
 mod openjd_job;
 mod pgo_build;
+mod pixel_aspect;
 mod progress;
 mod raytrace_cli;
 mod readonly_folder;

@@ -14,7 +14,7 @@ use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, OnceLock};
 use whitted::accel::Accel;
-use whitted::camera::{Camera, VIEW_HEIGHT, VIEW_WIDTH};
+use whitted::camera::{Camera, NonSquare, VIEW_HEIGHT, VIEW_WIDTH};
 use whitted::limits::size_ok;
 use whitted::output::ImageFormat;
 use whitted::passes::record::{finish, Sums};
@@ -180,6 +180,13 @@ impl<'p> Animation<'p> {
         let native = (self.timeline.base.width, self.timeline.base.height);
         let size = (self.width, self.height);
         Camera::framed(state.eye, state.look_at, native, size, &self.manifest.lens)
+    }
+
+    /// The warning for frames whose pixels are not square (the report's view plane at
+    /// a resolution of another shape, without `[camera] fov`).
+    pub fn non_square(&self) -> Option<NonSquare> {
+        let native = (self.timeline.base.width, self.timeline.base.height);
+        NonSquare::check(&self.manifest.lens, native, (self.width, self.height))
     }
 
     /// The view plane (width, height) and roll when they are not the report's 0.5 × 0.35

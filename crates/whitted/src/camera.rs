@@ -22,6 +22,9 @@
 use crate::optics::Ray;
 use glam::DVec3;
 
+mod aspect;
+pub use aspect::NonSquare;
+
 /// Distance from the eye to the view plane (`DistVue`).
 pub const VIEW_DISTANCE: f64 = 1.0;
 /// Width of the view plane (`LargVue`).

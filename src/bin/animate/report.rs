@@ -192,8 +192,12 @@ pub fn announce(anim: &Animation, frames: usize, raw: bool) {
 }
 
 /// Before a request of more than `ENORMOUS` camera rays: the library's warning
-/// (`Animation::enormous`), with what the command line can do about it.
+/// (`Animation::enormous`), with what the command line can do about it; and before
+/// frames whose pixels are not square, that warning (`Animation::non_square`).
 pub fn warn_if_enormous(anim: &Animation, frames: &[u32]) {
+    if let Some(w) = anim.non_square() {
+        eprintln!("animate: warning: {w}");
+    }
     if let Some(e) = anim.enormous(frames) {
         eprintln!("animate: warning: {e} (Ctrl-C stops, --resume continues)");
     }

@@ -11,7 +11,7 @@
 //! ```
 
 use super::Still;
-use crate::camera::Lens;
+use crate::camera::{Lens, NonSquare};
 use crate::display::Display;
 use crate::exit::Outcome;
 use crate::output::{
@@ -187,6 +187,13 @@ impl Job {
             self.aa(),
         )
         .expect("the parser refuses an eye placed on its look-at point")
+    }
+
+    /// The warning for a picture whose pixels are not square (the report's view plane at
+    /// a resolution of another shape), before anything is drawn.
+    pub fn non_square(&self) -> Option<NonSquare> {
+        let size = (self.scene.width, self.scene.height);
+        NonSquare::check(&self.request.lens, self.native, size)
     }
 
     /// The warning before an enormous request (on the current thread pool).
