@@ -1,4 +1,4 @@
-//! Issue 41, point 3: a scene whose resolution is not of the report's view plane's shape
+//! A scene whose resolution is not of the report's view plane's shape
 //! draws non-square pixels; both commands warn once, naming the fixes, and stay silent
 //! on the report's own 4:3 and on square framings.
 

@@ -92,8 +92,8 @@ mod tests {
         assert!((w.aspect - 540.0 / 672.0).abs() < 1e-12, "{}", w.aspect);
         // 0.35 · 1920/1080 = 0.6222…
         assert!((w.square_width() - 0.35 * 16.0 / 9.0).abs() < 1e-12);
-        // 2·atan(0.175) = 19.8537…°
-        assert!((w.fov() - 19.853_7).abs() < 1e-4, "{}", w.fov());
+        // 2·atan(0.175) = 2 × 9.9262° = 19.8525°
+        assert!((w.fov() - 19.852_5).abs() < 1e-4, "{}", w.fov());
         let text = w.to_string();
         assert!(text.contains("0.804") && text.contains("0.6222"), "{text}");
         assert!(
