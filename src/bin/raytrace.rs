@@ -13,7 +13,6 @@ use cli::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use std::io::IsTerminal;
 use std::process::ExitCode;
-use whitted::camera::Lens;
 use whitted::exit::Outcome;
 use whitted::output::{check_target, write_atomic, write_atomic_layers, ImageFormat, OutputError};
 use whitted::passes::{visible::picture, PassSet};
@@ -67,6 +66,7 @@ fn out_format(args: &Args, out: &std::path::Path) -> Result<ImageFormat, OutputE
 }
 
 fn run(args: Args) -> anyhow::Result<()> {
+    let started = std::time::Instant::now();
     whitted_anim::process::exit_on_signals();
     let out = args
         .out
@@ -87,16 +87,16 @@ fn run(args: Args) -> anyhow::Result<()> {
         .into());
     }
     let native = (scene.width, scene.height);
-    (scene.width, scene.height) = args.size.unwrap_or(native);
+    let spd_size = (whitted::spd::SPD_SIZE, whitted::spd::SPD_SIZE);
+    let size = if args.spd { Some(spd_size) } else { args.size };
+    (scene.width, scene.height) = size.unwrap_or(native);
     let pool =
         whitted_anim::process::pool(args.threads).context("cannot start the worker threads")?;
-    let lens = Lens {
-        fov: args.fov,
-        roll: args.roll,
-    };
+    let lens = scene.lens.overridden(args.fov, args.roll);
     let (w, h, n) = (scene.width, scene.height, args.samples);
     let aa = args.aa.map_or(Antialias::Grid(n), Antialias::Adaptive);
     let still = Still::new(&scene, native, (w, h), &lens, aa)
+        .and_then(|s| if args.spd { s.spd() } else { Some(s) })
         .expect("the parser refuses an eye placed on its look-at point");
     if !args.quiet {
         if let Some(e) = pool.install(|| still.enormous()) {
@@ -132,6 +132,11 @@ fn run(args: Args) -> anyhow::Result<()> {
     let traced = start.elapsed().as_secs_f64();
     if let Some(frame) = &frame {
         write_atomic(&out, frame, format)?;
+    }
+    if args.stats {
+        let wall = started.elapsed().as_secs_f64();
+        let cpu = whitted_anim::stats::cpu_seconds();
+        eprintln!("{}", whitted_anim::stats::line(&rays, wall, cpu));
     }
     if !args.quiet {
         let mrays = rays.total() as f64 / traced.max(1e-9) / 1e6;
