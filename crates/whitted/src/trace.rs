@@ -282,19 +282,9 @@ impl<'a> Tracer<'a> {
         let lights = &self.scene.lights;
         // The beauty-only path calls `direct`, the function it always called.
         let mut out = if R::ACTIVE {
-            let k = (m.kd, m.highlight);
-            shading::direct_rec(self, lights, p, n, v, c, k, &mut count.shadow, rec)
+            shading::direct_rec(self, lights, p, n, v, c, m, &mut count.shadow, rec)
         } else {
-            shading::direct(
-                self,
-                lights,
-                p,
-                n,
-                v,
-                c,
-                (m.kd, m.highlight),
-                &mut count.shadow,
-            )
+            shading::direct(self, lights, p, n, v, c, m, &mut count.shadow)
         };
         if depth >= self.rules.max_depth {
             return out;
