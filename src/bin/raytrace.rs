@@ -133,11 +133,6 @@ fn run(args: Args) -> anyhow::Result<()> {
     if let Some(frame) = &frame {
         write_atomic(&out, frame, format)?;
     }
-    if args.stats {
-        let wall = started.elapsed().as_secs_f64();
-        let cpu = whitted_anim::stats::cpu_seconds();
-        eprintln!("{}", whitted_anim::stats::line(&rays, wall, cpu));
-    }
     if !args.quiet {
         let mrays = rays.total() as f64 / traced.max(1e-9) / 1e6;
         let n = match aa {
@@ -157,6 +152,12 @@ fn run(args: Args) -> anyhow::Result<()> {
             h,
             rays.total()
         );
+    }
+    // Last, so that `tail -1` of standard error is the stats line.
+    if args.stats {
+        let wall = started.elapsed().as_secs_f64();
+        let cpu = whitted_anim::stats::cpu_seconds();
+        eprintln!("{}", whitted_anim::stats::line(&rays, wall, cpu));
     }
     Ok(())
 }
