@@ -40,7 +40,7 @@ fn inside(p: DVec2, a: DVec2, b: DVec2, c: DVec2) -> bool {
 /// `v`; empty when it has no area.
 pub fn triangulate(v: &[DVec3]) -> Vec<[usize; 3]> {
     let n = newell(v);
-    if v.len() < 3 || !(n.length_squared() > 0.0) {
+    if v.len() < 3 || n.length_squared().partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         return Vec::new();
     }
     // Drop the axis the normal is largest along; keep the winding counter-clockwise by
