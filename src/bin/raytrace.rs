@@ -36,6 +36,7 @@ fn progress(rows: u32, quiet: bool) -> (ProgressBar, Option<RowPoller>) {
 }
 
 fn run(args: Args) -> anyhow::Result<()> {
+    let started = std::time::Instant::now();
     process::exit_on_signals();
     let job = Job::prepare(&args.request())?;
     let pool = process::pool(args.threads).context("cannot start the worker threads")?;
@@ -54,6 +55,12 @@ fn run(args: Args) -> anyhow::Result<()> {
     let done = done?;
     if !args.quiet {
         eprintln!("raytrace: {}", done.summary());
+    }
+    // Last, so that `tail -1` of standard error is the stats line.
+    if args.stats {
+        let wall = started.elapsed().as_secs_f64();
+        let cpu = whitted_anim::stats::cpu_seconds();
+        eprintln!("{}", whitted_anim::stats::line(&done.rays, wall, cpu));
     }
     Ok(())
 }

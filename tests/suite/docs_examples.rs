@@ -138,6 +138,25 @@ fn the_scene_errors_shown_are_the_real_ones() {
 }
 
 #[test]
+fn every_nff_example_parses_and_its_errors_are_the_real_ones() {
+    let page = page("scene-format.md");
+    let complete: Vec<_> = blocks(&page)
+        .into_iter()
+        .filter(|(info, _, _)| info == "nff complete")
+        .collect();
+    assert!(!complete.is_empty());
+    for (_, text, line) in complete {
+        whitted::scene::nff::parse(&text, "scene.nff").unwrap_or_else(|e| {
+            panic!("docs/scene-format.md:{line}: the example is refused:\n{e}")
+        });
+    }
+    for (src, shown, line) in refusals(&page, "nff refused") {
+        let err = whitted::scene::nff::parse(&src, "scene.nff").unwrap_err();
+        assert_eq!(err.to_string(), shown, "docs/scene-format.md:{line}");
+    }
+}
+
+#[test]
 fn the_pages_point_nowhere_outside_the_repository() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     for name in [

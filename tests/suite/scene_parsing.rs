@@ -47,7 +47,8 @@ fn the_reports_example_sphere() {
             kr: 0.2,
             kt: 0.0,
             ior: 1.5,
-            bump: Bump::None
+            bump: Bump::None,
+            highlight: Default::default(),
         }
     );
     // And the records around it.
@@ -95,6 +96,7 @@ fn every_record_kind_in_order() {
         kt,
         ior,
         bump,
+        highlight: Default::default(),
     };
     let expected = vec![
         Object {

@@ -39,6 +39,7 @@ fn the_list_is_what_git_tracks() {
         .chain(
             shipped::ANIMATIONS
                 .iter()
+                .chain(shipped::SPD_ANIMATIONS)
                 .map(|n| format!("animations/{n}")),
         )
         .collect();

@@ -27,6 +27,7 @@ pub mod process;
 pub mod progress;
 pub mod project;
 pub mod refusal;
+pub mod stats;
 pub mod timeline;
 mod typo;
 pub mod view;

@@ -14,7 +14,7 @@ use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, OnceLock};
 use whitted::accel::Accel;
-use whitted::camera::{Camera, NonSquare, VIEW_HEIGHT, VIEW_WIDTH};
+use whitted::camera::{Camera, Lens, NonSquare, VIEW_HEIGHT, VIEW_WIDTH};
 use whitted::limits::size_ok;
 use whitted::output::ImageFormat;
 use whitted::passes::record::{finish, Sums};
@@ -79,12 +79,8 @@ impl Project {
     /// built once per project, whatever the number of animations drawn from it.
     fn shared_accel(&self) -> Option<Arc<Accel>> {
         let base = &self.timeline.base;
-        (!self.timeline.moves_geometry()).then(|| {
-            Arc::clone(
-                self.accel
-                    .get_or_init(|| Arc::new(Accel::new(&base.objects))),
-            )
-        })
+        (!self.timeline.moves_geometry())
+            .then(|| Arc::clone(self.accel.get_or_init(|| Arc::new(Accel::for_scene(base)))))
     }
 }
 
@@ -175,24 +171,31 @@ impl<'p> Animation<'p> {
         self
     }
 
+    /// The framing: the manifest's `fov` and `roll` over the scene's own lens (an NFF
+    /// view's angle and up; the report's for a Scene.txt).
+    fn lens(&self) -> Lens {
+        let own = &self.manifest.lens;
+        self.timeline.base.lens.overridden(own.fov, own.roll)
+    }
+
     /// The camera of a frame state, `None` when the eye is on the point it looks at.
     fn camera(&self, state: &Snapshot) -> Option<Camera> {
         let native = (self.timeline.base.width, self.timeline.base.height);
         let size = (self.width, self.height);
-        Camera::framed(state.eye, state.look_at, native, size, &self.manifest.lens)
+        Camera::framed(state.eye, state.look_at, native, size, &self.lens())
     }
 
     /// The warning for frames whose pixels are not square (the report's view plane at
     /// a resolution of another shape, without `[camera] fov`).
     pub fn non_square(&self) -> Option<NonSquare> {
         let native = (self.timeline.base.width, self.timeline.base.height);
-        NonSquare::check(&self.manifest.lens, native, (self.width, self.height))
+        NonSquare::check(&self.lens(), native, (self.width, self.height))
     }
 
     /// The view plane (width, height) and roll when they are not the report's 0.5 × 0.35
     /// unrolled plane (a size of another shape than the scene's, a `fov`, a `roll`).
     pub fn view(&self) -> Option<[f64; 3]> {
-        let lens = &self.manifest.lens;
+        let lens = &self.lens();
         let native = (self.timeline.base.width, self.timeline.base.height);
         let (w, h) = lens.plane(native, (self.width, self.height));
         let report = (w, h) == (VIEW_WIDTH, VIEW_HEIGHT) && lens.roll == 0.0;

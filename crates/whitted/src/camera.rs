@@ -33,19 +33,47 @@ pub const VIEW_WIDTH: f64 = 0.5;
 pub const VIEW_HEIGHT: f64 = 0.35;
 
 /// The framing of a camera beyond its eye and look-at point: a vertical field of view
-/// and a roll, both in degrees. The default is the report's plane with no roll.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+/// and a roll, both in degrees, and the world's up. The default is the report's plane
+/// with no roll and y up.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Lens {
     /// The vertical field of view in degrees, 0 < fov < 180; `None`: the report's plane.
     pub fov: Option<f64>,
     /// The roll about the viewing direction in degrees; positive banks to the right.
     pub roll: f64,
+    /// The world's up (H of SPEC §2): (0, 1, 0), or an NFF view's `up` (SPEC §17).
+    pub up: DVec3,
+    /// The field of view spans the outer pixel centres (NFF's `angle`) instead of the
+    /// picture's edges.
+    pub centres: bool,
+}
+
+impl Default for Lens {
+    fn default() -> Lens {
+        Lens {
+            fov: None,
+            roll: 0.0,
+            up: DVec3::Y,
+            centres: false,
+        }
+    }
 }
 
 /// The largest roll taken, in degrees (a thousand turns).
 pub const MAX_ROLL: f64 = 360_000.0;
 
 impl Lens {
+    /// This scene lens with a user's field of view (which then spans the picture's
+    /// edges) and roll.
+    pub fn overridden(&self, fov: Option<f64>, roll: f64) -> Lens {
+        Lens {
+            fov: fov.or(self.fov),
+            roll,
+            up: self.up,
+            centres: fov.is_none() && self.centres,
+        }
+    }
+
     /// Whether `fov` is a vertical field of view taken: strictly between 0 and 180 degrees.
     pub fn fov_ok(fov: f64) -> bool {
         fov > 0.0 && fov < 180.0
@@ -64,6 +92,10 @@ impl Lens {
         let (w, h) = (u64::from(size.0.max(1)), u64::from(size.1.max(1)));
         let (nw, nh) = (u64::from(native.0.max(1)), u64::from(native.1.max(1)));
         let height = match self.fov {
+            // Between the outer pixel centres: h − 1 pixels span the angle.
+            Some(fov) if self.centres && h > 1 => {
+                2.0 * (fov.to_radians() / 2.0).tan() * h as f64 / (h - 1) as f64
+            }
             Some(fov) => 2.0 * (fov.to_radians() / 2.0).tan(),
             None if w * nh == h * nw => return (VIEW_WIDTH, VIEW_HEIGHT),
             None => VIEW_HEIGHT,
@@ -96,6 +128,7 @@ impl Camera {
             (width, height),
             (VIEW_WIDTH, VIEW_HEIGHT),
             0.0,
+            DVec3::Y,
         )
     }
 
@@ -108,7 +141,8 @@ impl Camera {
         size: (u32, u32),
         lens: &Lens,
     ) -> Option<Camera> {
-        Camera::with_plane(eye, look_at, size, lens.plane(native, size), lens.roll)
+        let plane = lens.plane(native, size);
+        Camera::with_plane(eye, look_at, size, plane, lens.roll, lens.up)
     }
 
     /// A camera whose view plane is `plane` = (width, height) at distance 1.0, turned by
@@ -119,18 +153,22 @@ impl Camera {
         (width, height): (u32, u32),
         (plane_w, plane_h): (f64, f64),
         roll: f64,
+        up: DVec3,
     ) -> Option<Camera> {
         let to = look_at - eye;
         // |to|² under- or overflows for a tiny or huge `to`: scaled first, it normalises.
         let u = to
             .try_normalize()
             .or_else(|| (to / to.abs().max_element()).try_normalize())?;
-        // |U × H| is the sine of the angle between them: below 1e-9 they are parallel.
-        let across = u.cross(DVec3::Y);
+        // |U × H| is the sine of the angle between them: below 1e-9 they are parallel,
+        // and z (y for a world whose up is z) stands in.
+        let h = up.try_normalize().unwrap_or(DVec3::Y);
+        let across = u.cross(h);
         let mut right = if across.length() > 1e-9 {
             across.normalize()
         } else {
-            u.cross(DVec3::Z).normalize()
+            let alt = if h.z.abs() > 0.9 { DVec3::Y } else { DVec3::Z };
+            u.cross(alt).normalize()
         };
         let mut up = right.cross(u);
         if roll != 0.0 {
@@ -238,6 +276,7 @@ mod tests {
         let lens = Lens {
             fov: Some(90.0),
             roll: 0.0,
+            ..Lens::default()
         };
         let (w, h) = lens.plane((640, 480), (200, 100));
         assert!(
@@ -275,8 +314,8 @@ mod tests {
         // pixel of a 2×2 image leans towards +x (up-right of the unrolled view) and +y…
         // by hand: corner = −z + (h/2)·x − (w/2)·(−y) = (0.175, 0.25, −1).
         let lens = Lens {
-            fov: None,
             roll: 90.0,
+            ..Lens::default()
         };
         let cam = Camera::framed(DVec3::ZERO, -DVec3::Z, (2, 2), (2, 2), &lens).unwrap();
         let c = cam.corner;
@@ -295,5 +334,37 @@ mod tests {
         for (x, y) in [(0.5, 0.5), (63.5, 0.5), (10.0, 40.0)] {
             assert!((cam.ray(x, y).dir.length() - 1.0).abs() < 1e-12);
         }
+    }
+
+    #[test]
+    fn nff_angle_between_outer_pixel_centres_and_z_up() {
+        // 3×3 pixels, angle 90° between the outer centres, z up, looking along +y: the
+        // top-left centre ray leans 45° left and 45° up, (−1, 1, 1)/√3; the centre pixel
+        // looks straight ahead.
+        let lens = Lens {
+            fov: Some(90.0),
+            up: DVec3::Z,
+            centres: true,
+            ..Lens::default()
+        };
+        let (w, h) = lens.plane((3, 3), (3, 3));
+        assert!(
+            (h - 3.0).abs() < 1e-12 && (w - 3.0).abs() < 1e-12,
+            "{w} {h}"
+        );
+        let cam = Camera::framed(DVec3::ZERO, DVec3::Y, (3, 3), (3, 3), &lens).unwrap();
+        assert!(close(cam.ray(1.5, 1.5).dir, DVec3::Y));
+        let want = DVec3::new(-1.0, 1.0, 1.0).normalize();
+        assert!(
+            close(cam.ray(0.5, 0.5).dir, want),
+            "{}",
+            cam.ray(0.5, 0.5).dir
+        );
+        // A user's fov overrides the scene's, and spans the edges again.
+        let user = lens.overridden(Some(60.0), 5.0);
+        assert_eq!(
+            (user.fov, user.centres, user.roll, user.up),
+            (Some(60.0), false, 5.0, DVec3::Z)
+        );
     }
 }

@@ -78,6 +78,7 @@ pub mod render;
 pub mod scene;
 pub mod shading;
 pub mod shapes;
+pub mod spd;
 pub mod still;
 pub mod texture;
 pub mod trace;

@@ -1,6 +1,6 @@
-//! What a scene holds besides geometry: materials (`Kd Kr Kt Ior BumpType BumpValue`),
-//! objects (a shape with a texture and a material) and point lights
-//! (`Lx Ly Lz R G B Intensity`).
+//! What a scene holds besides geometry: materials (`Kd Kr Kt Ior BumpType BumpValue`, or
+//! an NFF's `Kd Ks Shine T index` with its Phong highlight), objects (a shape with a
+//! texture and a material) and point lights (`Lx Ly Lz R G B Intensity`).
 
 use crate::bump::Bump;
 use crate::shapes::Shape;
@@ -20,6 +20,23 @@ pub struct Material {
     pub ior: f64,
     /// How the normal is perturbed (bump type and amplitude).
     pub bump: Bump,
+    /// The specular highlight: the report's, or an NFF's Phong term.
+    pub highlight: Highlight,
+}
+
+/// The specular highlight of a material (SPEC §2 and §17).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub enum Highlight {
+    /// The report's: `(1 − Kd)·I·max(0, V·R)^20·Lc`.
+    #[default]
+    Report,
+    /// NFF's Phong term: `Ks·I·max(0, V·R)^Shine·Lc`.
+    Phong {
+        /// The highlight's weight, NFF's Ks.
+        ks: f64,
+        /// The Phong exponent, NFF's Shine.
+        shine: f64,
+    },
 }
 
 /// One renderable object.

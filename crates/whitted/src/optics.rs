@@ -10,20 +10,45 @@ use glam::DVec3;
 /// distance in scene units.
 pub const T_MIN: f64 = 0.01;
 
-/// A half-line `origin + t·dir`, t > 0, with `dir` of unit length.
+/// A half-line `origin + t·dir`, t > `t_min`, with `dir` of unit length.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Ray {
     /// Where the ray starts.
     pub origin: DVec3,
     /// Its direction, of unit length.
     pub dir: DVec3,
+    /// A hit counts only past this distance: the report's `T_MIN` for a Scene.txt, the
+    /// scene's own epsilon for an NFF scene (`Scene::t_min`).
+    pub t_min: f64,
 }
 
 impl Ray {
-    /// A ray from `origin` along `dir`, which must already be unit length.
+    /// A ray from `origin` along `dir`, which must already be unit length, with the
+    /// report's epsilon.
     #[inline]
     pub fn new(origin: DVec3, dir: DVec3) -> Ray {
-        Ray { origin, dir }
+        Ray {
+            origin,
+            dir,
+            t_min: T_MIN,
+        }
+    }
+
+    /// This ray with another epsilon.
+    #[inline]
+    pub fn with_t_min(self, t_min: f64) -> Ray {
+        Ray { t_min, ..self }
+    }
+
+    /// A ray from `origin` along the unit `dir` with this ray's epsilon (a reflected,
+    /// refracted or shadow ray spawned at a hit of this one).
+    #[inline]
+    pub fn spawn(&self, origin: DVec3, dir: DVec3) -> Ray {
+        Ray {
+            origin,
+            dir,
+            t_min: self.t_min,
+        }
     }
 
     /// The point at parameter `t`.

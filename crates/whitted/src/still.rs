@@ -17,6 +17,7 @@ use crate::passes::{Layers, PassSet};
 use crate::render::estimate::{self, Enormous};
 use crate::render::{render_layers, render_observed, render_with, Antialias, Frame};
 use crate::scene::Scene;
+use crate::spd::{render_corners, Rules};
 use crate::trace::{RayCount, Tracer};
 
 /// Rows per band streamed to tev: a band is a few milliseconds of work at the report's
@@ -36,6 +37,8 @@ pub struct Still<'s> {
     pub aa: Antialias,
     camera: Camera,
     tracer: Tracer<'s>,
+    /// The SPD's testing procedure: a camera through the pixel corners.
+    corners: Option<Camera>,
 }
 
 impl<'s> Still<'s> {
@@ -58,7 +61,25 @@ impl<'s> Still<'s> {
             aa,
             camera,
             tracer: Tracer::new(scene),
+            corners: None,
         })
+    }
+
+    /// This picture drawn by the SPD's testing procedure (`crate::spd`): the
+    /// (w + 1) × (h + 1) rays through the pixel corners averaged, the SPD's depth and
+    /// spawning. `None` when the eye is on its look-at point.
+    pub fn spd(mut self) -> Option<Still<'s>> {
+        let size = (self.width + 1, self.height + 1);
+        let s = self.scene;
+        self.corners = Some(Camera::framed(
+            s.eye,
+            s.look_at,
+            self.native,
+            size,
+            &self.lens,
+        )?);
+        self.tracer = self.tracer.with_rules(Rules::spd());
+        Some(self)
     }
 
     /// n of the n×n grid (1 under adaptive anti-aliasing, whose rays are counted from
@@ -106,6 +127,9 @@ impl<'s> Still<'s> {
 
     /// The picture.
     pub fn render(&self) -> (Frame, RayCount) {
+        if let Some(corners) = &self.corners {
+            return render_corners(&self.tracer, corners, self.width, self.height);
+        }
         render_with(&self.tracer, &self.camera, self.width, self.height, self.aa)
     }
 

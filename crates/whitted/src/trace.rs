@@ -8,7 +8,12 @@
 //!   `+ Kt · C ⊙ trace(T)`, or `+ Kt · trace(reflect(V, N))` on total internal reflection;
 //! - at most `MAX_DEPTH` bounces after the primary ray, and no secondary ray whose weight
 //!   (the product of the Kr / Kt along its path) is below 1/256;
-//! - a ray that hits nothing is black.
+//! - a ray that hits nothing is the scene's background (black for a Scene.txt).
+//!
+//! The limits are the tracer's `Rules` (`crate::spd`): the report's by default, or the
+//! SPD's testing procedure (depth 5 counting the eye ray, no weight cut-off, a reflection
+//! ray off every transmitter), whose spawning is `spd`'s. Every ray starts past the
+//! scene's epsilon (`Scene::t_min`).
 //!
 //! The passes (`crate::passes`) listen through `Record`: the camera ray's shading calls
 //! its hooks (first hit, each term of the light split, fog). Every method is generic over
@@ -21,6 +26,7 @@ use crate::optics::{reflect, refract, Ray};
 pub use crate::record::{NoRecord, Record};
 use crate::scene::Scene;
 use crate::shading::{self, Occluders};
+use crate::spd::Rules;
 use crate::texture::Color;
 use glam::DVec3;
 use std::sync::Arc;
@@ -30,15 +36,21 @@ pub const MAX_DEPTH: u32 = 5;
 /// Secondary rays weighing less than this are not traced.
 pub const MIN_WEIGHT: f64 = 1.0 / 256.0;
 
-/// Counts of rays cast, for rays-per-second figures.
+/// Counts of rays cast, for rays-per-second figures and the SPD's table.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct RayCount {
     /// Camera rays.
     pub primary: u64,
-    /// Reflected and refracted rays.
+    /// Reflected and refracted rays (`reflect + refract`).
     pub secondary: u64,
     /// Rays towards lights.
     pub shadow: u64,
+    /// Camera rays that hit an object.
+    pub eye_hits: u64,
+    /// Reflected rays (total internal reflection included).
+    pub reflect: u64,
+    /// Refracted rays.
+    pub refract: u64,
 }
 
 impl RayCount {
@@ -55,6 +67,9 @@ impl std::ops::Add for RayCount {
             primary: self.primary + o.primary,
             secondary: self.secondary + o.secondary,
             shadow: self.shadow + o.shadow,
+            eye_hits: self.eye_hits + o.eye_hits,
+            reflect: self.reflect + o.reflect,
+            refract: self.refract + o.refract,
         }
     }
 }
@@ -65,9 +80,10 @@ impl std::ops::Add for RayCount {
 /// their own scene values through one structure built once (`with_accel`). The light
 /// buffer depends on the lights, so every tracer builds its own (microseconds).
 pub struct Tracer<'a> {
-    scene: &'a Scene,
+    pub(crate) scene: &'a Scene,
     accel: Arc<Accel>,
     lights: LightBuffer,
+    pub(crate) rules: Rules,
 }
 
 impl<'a> Tracer<'a> {
@@ -78,7 +94,7 @@ impl<'a> Tracer<'a> {
 
     /// Prepares `scene` for tracing: builds its BVH (once; every frame shares it).
     pub fn new(scene: &'a Scene) -> Tracer<'a> {
-        Tracer::with_accel(scene, Arc::new(Accel::new(&scene.objects)))
+        Tracer::with_accel(scene, Arc::new(Accel::for_scene(scene)))
     }
 
     /// A tracer for `scene` that reuses `accel`, built by `Accel::new` from objects with
@@ -86,11 +102,29 @@ impl<'a> Tracer<'a> {
     /// colours, other coefficients and lights may differ. The caller guarantees it. (The
     /// light buffer, which depends on the lights too, is built here from `scene`.)
     pub fn with_accel(scene: &'a Scene, accel: Arc<Accel>) -> Tracer<'a> {
+        // The light buffer's proofs assume the report's epsilon (`lightbuf::outside2`).
+        let lights = if scene.t_min == crate::optics::T_MIN {
+            LightBuffer::new(&scene.objects, &scene.lights)
+        } else {
+            LightBuffer::default()
+        };
         Tracer {
             scene,
             accel,
-            lights: LightBuffer::new(&scene.objects, &scene.lights),
+            lights,
+            rules: Rules::default(),
         }
+    }
+
+    /// This tracer with other limits (the SPD's testing procedure: `Rules::spd`).
+    pub fn with_rules(mut self, rules: Rules) -> Tracer<'a> {
+        self.rules = rules;
+        self
+    }
+
+    /// The limits this tracer follows.
+    pub fn rules(&self) -> Rules {
+        self.rules
     }
 
     /// The acceleration structure, to share with `with_accel`.
@@ -148,6 +182,7 @@ impl<'a> Tracer<'a> {
         rec: &mut R,
     ) -> Color {
         count.primary += 1;
+        let ray = &ray.with_t_min(self.scene.t_min);
         let objects = &self.scene.objects;
         let hit = match tile.and_then(|h| h.nearest(objects, ray)) {
             Some(found) => found,
@@ -155,6 +190,7 @@ impl<'a> Tracer<'a> {
         };
         match hit {
             Some((t, i)) => {
+                count.eye_hits += 1;
                 // The tile's mirror lists answer for the reflection off that plane only.
                 let mirror = tile.filter(|h| h.mirror_plane() == Some(i));
                 if R::ACTIVE {
@@ -169,18 +205,19 @@ impl<'a> Tracer<'a> {
                 self.scene.fog.apply(c, t)
             }
             None => {
+                let background = self.scene.background;
                 if R::ACTIVE {
                     let f = self.scene.fog.amount(f64::INFINITY);
                     rec.fog(f);
-                    return self.scene.fog.apply_amount(Color::ZERO, f);
+                    return self.scene.fog.apply_amount(background, f);
                 }
-                self.scene.fog.apply(Color::ZERO, f64::INFINITY)
+                self.scene.fog.apply(background, f64::INFINITY)
             }
         }
     }
 
     /// The colour along a secondary ray at recursion `depth` with path weight `weight`.
-    fn trace(&self, ray: &Ray, depth: u32, weight: f64, count: &mut RayCount) -> Color {
+    pub(crate) fn trace(&self, ray: &Ray, depth: u32, weight: f64, count: &mut RayCount) -> Color {
         self.trace_hit(ray, self.nearest(ray), depth, weight, count)
     }
 
@@ -197,7 +234,7 @@ impl<'a> Tracer<'a> {
         count.secondary += 1;
         match hit {
             Some((t, obj)) => self.shade(ray, t, obj, None, depth, weight, count),
-            None => Color::ZERO,
+            None => self.scene.background,
         }
     }
 
@@ -245,15 +282,20 @@ impl<'a> Tracer<'a> {
         let lights = &self.scene.lights;
         // The beauty-only path calls `direct`, the function it always called.
         let mut out = if R::ACTIVE {
-            shading::direct_rec(self, lights, p, n, v, c, m.kd, &mut count.shadow, rec)
+            shading::direct_rec(self, lights, p, n, v, c, m, &mut count.shadow, rec)
         } else {
-            shading::direct(self, lights, p, n, v, c, m.kd, &mut count.shadow)
+            shading::direct(self, lights, p, n, v, c, m, &mut count.shadow)
         };
-        if depth >= MAX_DEPTH {
+        if depth >= self.rules.max_depth {
             return out;
         }
-        if m.kr > 0.0 && weight * m.kr >= MIN_WEIGHT {
-            let r = Ray::new(p, reflect(v, n).normalize());
+        if self.rules.spd {
+            return out + self.spawn_spd(ray, p, n, c, obj, entering, depth, count);
+        }
+        let min_weight = self.rules.min_weight;
+        if m.kr > 0.0 && weight * m.kr >= min_weight {
+            count.reflect += 1;
+            let r = ray.spawn(p, reflect(v, n).normalize());
             let objects = &self.scene.objects;
             let found = mirror.and_then(|h| h.mirrored(objects, &r));
             let hit = match found {
@@ -266,15 +308,17 @@ impl<'a> Tracer<'a> {
             }
             out += reflected;
         }
-        if m.kt > 0.0 && weight * m.kt >= MIN_WEIGHT {
+        if m.kt > 0.0 && weight * m.kt >= min_weight {
             let eta = if entering { 1.0 / m.ior } else { m.ior };
             let through = match refract(v, n, eta) {
                 Some(dir) => {
-                    let r = Ray::new(p, dir.normalize());
+                    count.refract += 1;
+                    let r = ray.spawn(p, dir.normalize());
                     m.kt * c * self.trace(&r, depth + 1, weight * m.kt, count)
                 }
                 None => {
-                    let r = Ray::new(p, reflect(v, n).normalize());
+                    count.refract += 1;
+                    let r = ray.spawn(p, reflect(v, n).normalize());
                     m.kt * self.trace(&r, depth + 1, weight * m.kt, count)
                 }
             };

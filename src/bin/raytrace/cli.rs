@@ -16,12 +16,15 @@ Formats, by OUT's extension: .png, .jpg/.jpeg (quality 90), .ppm (binary P6), .r
 report's headerless RGB bytes, rows top to bottom), .exr (OpenEXR: the beauty unclamped,
 half unless --exr-depth float, and the --passes asked for; docs/exr.md). OUT defaults to
 the scene's path with .png, beside the scene file (raytrace sub/t.txt writes sub/t.png).
+--spd renders 512×512 by the SPD's testing procedure; --stats prints
+{\"eye\":…,\"eye_hits\":…,\"reflect\":…,\"refract\":…,\"shadow\":…,\"wall_s\":…,\"cpu_s\":…}
+on standard error after the image (cpu_s: the process's user and system time).
 --pass NAME writes one pass as the picture: depth as near/z (the nearest point white, twice
 as far half grey, no hit black); normals as (N+1)/2 in RGB; positions as 0.5+0.5·x/(1+|x|)
 per axis; colours clamped and rounded; Cryptomatte ids as flat colours.
 Exit status: 0 success; 2 nothing was rendered (bad arguments or scene, an output path
 that cannot be used); 1 the image could not be written; 130/143 stopped by SIGINT/SIGTERM
-(no image is written). Scene.txt: docs/scene-format.md.";
+(no image is written). Scene.txt and NFF (*.nff): docs/scene-format.md.";
 
 /// Render one Scene.txt to an image.
 #[derive(Parser, Debug)]
@@ -76,6 +79,15 @@ pub struct Args {
     /// 127.0.0.1:14158) or `tev=HOST:PORT`. A missing viewer is a warning.
     #[arg(long, value_name = "tev[=HOST:PORT]")]
     pub display: Option<Display>,
+    /// The Standard Procedural Databases' testing procedure: 512×512 pixels, each the
+    /// average of the 513×513 rays through the pixel corners, depth 5 counting the eye
+    /// ray, no weight cut-off (SPEC §17).
+    #[arg(long, conflicts_with_all = ["size", "samples", "aa", "passes", "pass", "display"])]
+    pub spd: bool,
+    /// After the image, print one JSON line on standard error: the ray counts (eye,
+    /// eye_hits, reflect, refract, shadow) and the seconds taken (wall_s, cpu_s).
+    #[arg(long)]
+    pub stats: bool,
 }
 
 impl Args {
@@ -84,6 +96,7 @@ impl Args {
         let lens = Lens {
             fov: self.fov,
             roll: self.roll,
+            ..Lens::default()
         };
         Request {
             scene: self.scene.clone(),
@@ -96,6 +109,7 @@ impl Args {
             pass: self.pass,
             exr_depth: self.exr_depth,
             display: self.display.clone(),
+            spd: self.spd,
         }
     }
 }

@@ -39,6 +39,11 @@ pub const ANIMATIONS: &[&str] = &[
     "turn-to-glass.toml",
 ];
 
+/// The shipped manifests that render a Standard Procedural Database from the copy
+/// beside the repository (`../shared/spd`, not in it): listed apart, since they load only
+/// where that copy is (`tests/suite/nff.rs` loads them there, and skips elsewhere).
+pub const SPD_ANIMATIONS: &[&str] = &["sphereflake.toml"];
+
 /// The repository's root.
 pub fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))

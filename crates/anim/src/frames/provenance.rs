@@ -14,7 +14,10 @@ use crate::project::Animation;
 use glam::DVec3;
 use sha2::{Digest, Sha256};
 use std::path::{Path, PathBuf};
+use whitted::camera::Lens;
 use whitted::fog::Fog;
+use whitted::object::Highlight;
+use whitted::optics::T_MIN;
 use whitted::scene::{Scene, ShapeSpec};
 
 /// The keyword of the digest in every format.
@@ -62,6 +65,21 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
                 v(point, &mut f);
                 f(radius);
             }
+            ShapeSpec::Triangle { corners } => {
+                f(5.0);
+                corners.iter().for_each(|&c| v(c, &mut f));
+            }
+            ShapeSpec::Patch { corners, normals } => {
+                f(6.0);
+                corners.iter().chain(&normals).for_each(|&c| v(c, &mut f));
+            }
+            ShapeSpec::Cone { base, apex } => {
+                f(7.0);
+                v(base.0, &mut f);
+                f(base.1);
+                v(apex.0, &mut f);
+                f(apex.1);
+            }
         }
         let (_, kind, colors) = obj.texture.record();
         f(f64::from(kind));
@@ -75,12 +93,30 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
         let (bump_kind, eps) = m.bump.record();
         f(f64::from(bump_kind));
         f(eps);
+        // An NFF's Phong highlight (nothing for the report's, so that a Scene.txt's
+        // digests stay what they were).
+        if let Highlight::Phong { ks, shine } = m.highlight {
+            f(8.0);
+            f(ks);
+            f(shine);
+        }
     }
     for light in &scene.lights {
         f(4.0);
         v(light.position, &mut f);
         v(light.color, &mut f);
         f(light.intensity);
+    }
+    // An NFF's background, epsilon and view (nothing for a Scene.txt's defaults).
+    let lens = scene.lens;
+    if scene.background != DVec3::ZERO || scene.t_min != T_MIN || lens != Lens::default() {
+        f(9.0);
+        v(scene.background, &mut f);
+        f(scene.t_min);
+        f(lens.fov.unwrap_or(0.0));
+        f(lens.roll);
+        v(lens.up, &mut f);
+        f(f64::from(u8::from(lens.centres)));
     }
 }
 

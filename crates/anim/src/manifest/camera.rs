@@ -104,7 +104,11 @@ impl Source<'_> {
             Some(v) => self.number(v, "roll", MAX_ROLL)?,
             None => 0.0,
         };
-        Ok(Lens { fov, roll })
+        Ok(Lens {
+            fov,
+            roll,
+            ..Lens::default()
+        })
     }
 
     /// A fixed look-at point, or the object to follow.

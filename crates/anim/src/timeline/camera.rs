@@ -17,9 +17,14 @@
 //! (center.x + radius·sin θ, height, center.z + radius·cos θ). The fraction turns·i/N is
 //! reduced modulo 1 before it becomes an angle, so frame N is exactly frame 0 when turns
 //! is a whole number and the video loops without a repeated frame.
+//!
+//! A scene whose world's up is not y (an NFF view's `up`, SPEC §17) turns the circle about
+//! that axis: the same construction in the frame the shortest rotation taking y to `up`
+//! makes (`height` is then along `up`; for z up, θ = 0 puts the eye on the −y side of the
+//! centre: (center.x + radius·sin θ, center.y − radius·cos θ, height)).
 
 use super::spline::Spline;
-use glam::DVec3;
+use glam::{DQuat, DVec3};
 
 /// A horizontal circle travelled over the sequence: the camera's orbit, and the path of
 /// a tracked position that follows a circle.
@@ -54,6 +59,21 @@ impl Circle {
     }
 }
 
+impl Circle {
+    /// `at`, the circle turning about the unit `up` (`at` itself for y).
+    pub fn at_about(&self, frame: f64, frames: u32, up: DVec3) -> DVec3 {
+        if up == DVec3::Y {
+            return self.at(frame, frames);
+        }
+        let q = DQuat::from_rotation_arc(DVec3::Y, up);
+        let local = Circle {
+            center: q.inverse() * self.center,
+            ..*self
+        };
+        q * local.at(frame, frames)
+    }
+}
+
 /// Where the camera is on each frame.
 #[derive(Clone, Debug, PartialEq)]
 pub enum CameraPath {
@@ -72,10 +92,22 @@ impl CameraPath {
     /// Eye and look-at point of frame `frame` of a `frames`-frame sequence;
     /// `scene_look_at` is the scene file's point, used when the path gives none.
     pub fn at(&self, frame: f64, frames: u32, scene_look_at: DVec3) -> (DVec3, DVec3) {
+        self.at_about(frame, frames, scene_look_at, DVec3::Y)
+    }
+
+    /// `at` in a world whose unit up is `up`: a circle turns about it.
+    pub fn at_about(
+        &self,
+        frame: f64,
+        frames: u32,
+        scene_look_at: DVec3,
+        up: DVec3,
+    ) -> (DVec3, DVec3) {
         match self {
-            CameraPath::Circle { circle, look_at } => {
-                (circle.at(frame, frames), look_at.unwrap_or(circle.center))
-            }
+            CameraPath::Circle { circle, look_at } => (
+                circle.at_about(frame, frames, up),
+                look_at.unwrap_or(circle.center),
+            ),
             CameraPath::Spline(spline) => spline.at(frame, frames, scene_look_at),
         }
     }
@@ -106,6 +138,23 @@ mod tests {
 
     fn assert_close(a: DVec3, b: DVec3) {
         assert!(a.distance(b) < 1e-12, "{a} is not {b}");
+    }
+
+    #[test]
+    fn a_circle_turns_about_z_when_z_is_up() {
+        // Centre (2, 1, −3), radius 12, height 3, z up: frame 0 at (2, 1 − 12, 3), a quarter
+        // turn at (2 + 12, 1, 3); the look-at point is the centre itself.
+        let path = orbit(0.0, 1.0, None);
+        let (eye, look) = path.at_about(0.0, 4, DVec3::ZERO, DVec3::Z);
+        assert_close(eye, DVec3::new(2.0, -11.0, 3.0));
+        assert_close(look, DVec3::new(2.0, 1.0, -3.0));
+        let (eye, _) = path.at_about(1.0, 4, DVec3::ZERO, DVec3::Z);
+        assert_close(eye, DVec3::new(14.0, 1.0, 3.0));
+        // y up: exactly `at`.
+        assert_eq!(
+            path.at_about(1.0, 4, DVec3::ZERO, DVec3::Y),
+            path.at(1.0, 4, DVec3::ZERO)
+        );
     }
 
     #[test]

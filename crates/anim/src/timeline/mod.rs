@@ -217,7 +217,7 @@ impl Timeline {
             Cow::Owned(scene)
         };
         let (eye, path_look) = match &self.camera {
-            Some(path) => path.at(t, self.frames, scene.look_at),
+            Some(path) => path.at_about(t, self.frames, scene.look_at, self.base.lens.up),
             None => (scene.eye, scene.look_at),
         };
         let look_at = match &self.gaze {

@@ -113,7 +113,7 @@ mod tests {
         // A field of view: square at any size.
         let fov = Lens {
             fov: Some(30.0),
-            roll: 0.0,
+            ..Lens::default()
         };
         assert_eq!(NonSquare::check(&fov, (1920, 1080), (1920, 1080)), None);
         // 10:7, the plane's own shape: exactly square.

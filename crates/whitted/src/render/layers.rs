@@ -230,10 +230,12 @@ mod tests {
             Lens {
                 fov: Some(60.0),
                 roll: 0.0,
+                ..Lens::default()
             },
             Lens {
                 fov: Some(30.0),
                 roll: 20.0,
+                ..Lens::default()
             },
         ];
         for lens in lenses {

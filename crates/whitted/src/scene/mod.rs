@@ -1,4 +1,7 @@
-//! A scene as Scene.txt describes it (report III.1, SPEC §1), and loading one.
+//! A scene as Scene.txt describes it (report III.1, SPEC §1) or an NFF file does (SPEC
+//! §17, `nff`), and loading one: `Scene::load` reads a `*.nff` with the NFF reader and
+//! anything else as a Scene.txt. Both produce the same `Scene`; the tracer never learns
+//! which format it came from.
 //!
 //! ```text
 //! 640 480                 # ResX ResY
@@ -15,23 +18,26 @@
 //! 4 marble); MATERIAL is `Kd Kr Kt Ior BumpType BumpValue`. Cylinders are
 //! `Ax Ay Az Px Py Pz Radius TEXTURE MATERIAL`, infinite, with an axis of any direction.
 
+mod decode;
 mod error;
 mod lexer;
+pub mod nff;
 mod parser;
 mod spec;
 
 pub use error::{FileLoc, SceneError};
 
-use crate::camera::Camera;
+use crate::camera::{Camera, Lens};
 use crate::fog::Fog;
 use crate::object::{Light, Object};
+use crate::texture::Color;
 use glam::DVec3;
 use std::path::Path;
 
 pub use crate::limits::{MAX_COUNT, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
 pub use spec::{direction, ShapeSpec};
 
-/// Everything one Scene.txt holds.
+/// Everything one Scene.txt (or NFF file) holds.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Scene {
     /// The image's width in pixels, 1 to `MAX_SIDE`.
@@ -51,6 +57,14 @@ pub struct Scene {
     pub specs: Vec<ShapeSpec>,
     /// The point lights, in file order.
     pub lights: Vec<Light>,
+    /// What a ray that hits nothing sees: black for a Scene.txt, NFF's `b`.
+    pub background: Color,
+    /// A hit counts only past this distance: the report's 0.01 for a Scene.txt, a
+    /// length scaled to the scene for an NFF (`nff::epsilon`).
+    pub t_min: f64,
+    /// The scene's own framing: the report's for a Scene.txt; an NFF view's angle
+    /// (between the outer pixel centres) and up.
+    pub lens: Lens,
 }
 
 impl Scene {
@@ -74,7 +88,12 @@ impl Scene {
             path: name.clone(),
             source,
         })?;
-        let scene = Scene::parse(parser::decode(&bytes, &name)?, &name)?;
+        let text = decode::decode(&bytes, &name)?;
+        let scene = if nff::is_nff(path) {
+            nff::parse(text, &name)?
+        } else {
+            Scene::parse(text, &name)?
+        };
         Ok((scene, bytes))
     }
 
@@ -107,7 +126,8 @@ impl Scene {
 
     /// The scene's own camera, at its resolution.
     pub fn camera(&self) -> Camera {
-        Camera::new(self.eye, self.look_at, self.width, self.height)
+        let size = (self.width, self.height);
+        Camera::framed(self.eye, self.look_at, size, size, &self.lens)
             .expect("the parser refuses an eye placed on its look-at point")
     }
 }

@@ -5,6 +5,7 @@
 //! (`counts`).
 
 mod counts;
+mod place;
 
 use super::error::{FileLoc, SceneError};
 use super::lexer::{Lexer, Token};
@@ -17,51 +18,7 @@ use crate::object::{Light, Material, Object};
 use crate::texture::{Color, Texture};
 use counts::{Counts, Record};
 use glam::DVec3;
-
-/// Decodes file bytes as UTF-8, or says where the first invalid byte is.
-pub(super) fn decode<'a>(bytes: &'a [u8], file: &str) -> Result<&'a str> {
-    std::str::from_utf8(bytes).map_err(|e| {
-        let good = std::str::from_utf8(&bytes[..e.valid_up_to()]).unwrap_or_default();
-        // As in the lexer, a leading byte-order mark is not a column.
-        let good = good.strip_prefix('\u{feff}').unwrap_or(good);
-        let line = good.matches('\n').count() + 1;
-        let column = good.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
-        SceneError::Syntax {
-            loc: FileLoc {
-                file: file.to_string(),
-                line,
-                column,
-            },
-            message: "the file is not UTF-8 text".to_string(),
-            context: "byte that cannot be read".to_string(),
-        }
-    })
-}
-
-/// Where the parser is in the structure, for messages: a record (with its index among
-/// its kind), an optional part (texture, material), and the field.
-#[derive(Clone, Copy)]
-struct Place {
-    record: &'static str,
-    index: Option<(u64, u64)>,
-    part: Option<&'static str>,
-}
-
-impl Place {
-    fn describe(&self, field: &str) -> String {
-        let mut s = self.record.to_string();
-        if let Some((i, n)) = self.index {
-            s += &format!(" {i} of {n}");
-        }
-        if let Some(part) = self.part {
-            s += &format!(", {part}");
-        }
-        if !field.is_empty() {
-            s += &format!(", field {field}");
-        }
-        s
-    }
-}
+use place::Place;
 
 struct Parser<'a> {
     lexer: Lexer<'a>,
@@ -247,6 +204,7 @@ impl<'a> Parser<'a> {
             kt,
             ior,
             bump,
+            highlight: Default::default(),
         })
     }
 
@@ -411,5 +369,8 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
         objects,
         specs,
         lights,
+        background: Color::ZERO,
+        t_min: crate::optics::T_MIN,
+        lens: crate::camera::Lens::default(),
     })
 }

@@ -1,9 +1,10 @@
 //! A shape as Scene.txt states it: a sphere's centre and radius, a plane's point and
-//! normal, a cylinder's axis, point and radius. The tracer draws `Shape`s built from these
+//! normal, a cylinder's axis, point and radius; or as an NFF does: a triangle of a
+//! polygon, a patch's corners and normals, a cone's end circles. The tracer draws `Shape`s built from these
 //! (a cylinder becomes a quadric and forgets its axis); animation tracks change a value
 //! here and build the shape again, exactly as the parser would from the changed file.
 
-use crate::shapes::{Plane, Quadric, Shape, Sphere};
+use crate::shapes::{Cone, Plane, Quadric, Shape, SmoothTriangle, Sphere, Triangle};
 use glam::DVec3;
 
 /// The values one shape record of Scene.txt gives.
@@ -32,6 +33,25 @@ pub enum ShapeSpec {
         /// The radius, > 0.
         radius: f64,
     },
+    /// One triangle of an NFF polygon (valid: the reader checked it).
+    Triangle {
+        /// The corners, counter-clockwise seen from the front.
+        corners: [DVec3; 3],
+    },
+    /// An NFF `pp` patch (valid: the reader checked it).
+    Patch {
+        /// The corners.
+        corners: [DVec3; 3],
+        /// The normal at each corner.
+        normals: [DVec3; 3],
+    },
+    /// An NFF `c` open cone or cylinder (valid: the reader checked it).
+    Cone {
+        /// The base circle's centre and radius.
+        base: (DVec3, f64),
+        /// The apex circle's centre and radius.
+        apex: (DVec3, f64),
+    },
 }
 
 impl ShapeSpec {
@@ -45,6 +65,15 @@ impl ShapeSpec {
                 point,
                 radius,
             } => Shape::Quadric(Quadric::cylinder(axis, point, radius)),
+            ShapeSpec::Triangle { corners: [a, b, c] } => {
+                Shape::Triangle(Triangle::new(a, b, c).expect("the NFF reader checks triangles"))
+            }
+            ShapeSpec::Patch { corners, normals } => Shape::Smooth(
+                SmoothTriangle::new(corners, normals).expect("the NFF reader checks patches"),
+            ),
+            ShapeSpec::Cone { base, apex } => Shape::Cone(
+                Cone::new(base.0, base.1, apex.0, apex.1).expect("the NFF reader checks cones"),
+            ),
         }
     }
 
@@ -54,15 +83,24 @@ impl ShapeSpec {
             ShapeSpec::Sphere { .. } => "sphere",
             ShapeSpec::Plane { .. } => "plane",
             ShapeSpec::Cylinder { .. } => "cylinder",
+            ShapeSpec::Triangle { .. } => "triangle",
+            ShapeSpec::Patch { .. } => "patch",
+            ShapeSpec::Cone { .. } => "cone",
         }
     }
 
     /// The point a camera looks at when told to look at this object: a sphere's centre,
-    /// a plane's or a cylinder's point.
+    /// a plane's or a cylinder's point, a triangle's or a patch's centroid, the middle of
+    /// a cone's axis.
     pub fn anchor(&self) -> DVec3 {
         match *self {
             ShapeSpec::Sphere { center, .. } => center,
             ShapeSpec::Plane { point, .. } | ShapeSpec::Cylinder { point, .. } => point,
+            ShapeSpec::Triangle { corners: [a, b, c] }
+            | ShapeSpec::Patch {
+                corners: [a, b, c], ..
+            } => (a + b + c) / 3.0,
+            ShapeSpec::Cone { base, apex } => 0.5 * (base.0 + apex.0),
         }
     }
 }

@@ -1,23 +1,31 @@
-//! Geometry: the shapes a Scene.txt can hold and how a ray meets them (report IV.1).
+//! Geometry: the shapes a Scene.txt can hold (sphere, plane, quadric cylinder) and those
+//! an NFF adds (triangle, smooth triangle, open cone), and how a ray meets them (report
+//! IV.1).
 //!
 //! Every shape answers one question, `roots`: the parameters t (up to two, ascending, any
 //! sign) where the ray's line crosses its surface. From that the tracer gets the nearest
-//! hit (`hit`, t in (0.01, t_max)) and the list of surface crossings a shadow ray makes
+//! hit (`hit`, t in (ray.t_min, t_max)) and the list of surface crossings a shadow ray makes
 //! (`crossings`). `normal` gives the outward unit geometric normal at a surface point;
 //! deciding entering or leaving, and flipping the normal to face the ray, is the tracer's
 //! job (SPEC §2). A plane's "outward" side is the side its normal points to.
 //!
 //! Shapes are a closed enum, not trait objects, so the hot loop has no virtual calls.
 
+mod cone;
 mod plane;
 mod quadric;
+mod smooth;
 mod sphere;
+mod triangle;
 
+pub use cone::Cone;
 pub use plane::Plane;
 pub use quadric::Quadric;
+pub use smooth::SmoothTriangle;
 pub use sphere::Sphere;
+pub use triangle::Triangle;
 
-use crate::optics::{Ray, T_MIN};
+use crate::optics::Ray;
 use glam::DVec3;
 
 /// Where a line crosses a surface: up to two parameters, ascending.
@@ -49,21 +57,21 @@ impl Roots {
         &self.t[..self.n]
     }
 
-    /// Every root with T_MIN < t < t_max, ascending: the surface crossings of a shadow ray.
+    /// Every root with t_min < t < t_max, ascending: the surface crossings of a shadow ray.
     #[inline]
-    pub fn crossings(self, t_max: f64) -> impl Iterator<Item = f64> {
+    pub fn crossings(self, t_min: f64, t_max: f64) -> impl Iterator<Item = f64> {
         (0..self.n)
             .map(move |i| self.t[i])
-            .filter(move |&t| t > T_MIN && t < t_max)
+            .filter(move |&t| t > t_min && t < t_max)
     }
 
-    /// The first root with T_MIN < t < t_max, if any: what a ray hits.
+    /// The first root with t_min < t < t_max, if any: what a ray hits.
     #[inline]
-    pub fn first_hit(&self, t_max: f64) -> Option<f64> {
+    pub fn first_hit(&self, t_min: f64, t_max: f64) -> Option<f64> {
         self.as_slice()
             .iter()
             .copied()
-            .find(|&t| t > T_MIN && t < t_max)
+            .find(|&t| t > t_min && t < t_max)
     }
 }
 
@@ -76,6 +84,12 @@ pub enum Shape {
     Plane(Plane),
     /// A general quadric; the parser's cylinders are quadrics.
     Quadric(Quadric),
+    /// A triangle (NFF polygons are cut into them).
+    Triangle(Triangle),
+    /// A triangle with a normal per corner (NFF's `pp`).
+    Smooth(SmoothTriangle),
+    /// An open cone or cylinder of finite length (NFF's `c`).
+    Cone(Cone),
 }
 
 impl Shape {
@@ -86,30 +100,51 @@ impl Shape {
             Shape::Sphere(s) => s.roots(ray),
             Shape::Plane(p) => p.roots(ray),
             Shape::Quadric(q) => q.roots(ray),
+            Shape::Triangle(t) => t.roots(ray),
+            Shape::Smooth(t) => t.roots(ray),
+            Shape::Cone(c) => c.roots(ray),
         }
     }
 
-    /// The nearest hit with T_MIN < t < t_max, if any.
+    /// The nearest hit with ray.t_min < t < t_max, if any.
     #[inline(always)]
     pub fn hit(&self, ray: &Ray, t_max: f64) -> Option<f64> {
         match self {
             Shape::Sphere(s) => s.hit(ray, t_max),
             Shape::Plane(p) => p.hit(ray, t_max),
             Shape::Quadric(q) => q.hit(ray, t_max),
+            Shape::Triangle(t) => t.hit(ray, t_max),
+            Shape::Smooth(t) => t.hit(ray, t_max),
+            Shape::Cone(c) => c.hit(ray, t_max),
         }
     }
 
-    /// True for a shape that fits in a finite box (a sphere); planes and cylinders are
+    /// True for a shape that fits in a finite box; planes and quadric cylinders are
     /// infinite.
     #[inline]
     pub fn is_bounded(&self) -> bool {
-        matches!(self, Shape::Sphere(_))
+        self.bounds().is_some()
     }
 
-    /// Every crossing with T_MIN < t < t_max (what a shadow ray passes through).
+    /// The low and high corners of a box around a bounded shape; `None` for the
+    /// infinite ones.
+    pub fn bounds(&self) -> Option<(DVec3, DVec3)> {
+        match self {
+            Shape::Sphere(s) => Some((
+                s.center - DVec3::splat(s.radius),
+                s.center + DVec3::splat(s.radius),
+            )),
+            Shape::Plane(_) | Shape::Quadric(_) => None,
+            Shape::Triangle(t) => Some(t.bounds()),
+            Shape::Smooth(t) => Some(t.flat.bounds()),
+            Shape::Cone(c) => Some(c.bounds()),
+        }
+    }
+
+    /// Every crossing with ray.t_min < t < t_max (what a shadow ray passes through).
     #[inline]
     pub fn crossings(&self, ray: &Ray, t_max: f64) -> impl Iterator<Item = f64> {
-        self.roots(ray).crossings(t_max)
+        self.roots(ray).crossings(ray.t_min, t_max)
     }
 
     /// The outward unit normal at a point `p` of the surface.
@@ -119,6 +154,9 @@ impl Shape {
             Shape::Sphere(s) => s.normal(p),
             Shape::Plane(pl) => pl.normal(),
             Shape::Quadric(q) => q.normal(p),
+            Shape::Triangle(t) => t.normal(),
+            Shape::Smooth(t) => t.normal(p),
+            Shape::Cone(c) => c.normal(p),
         }
     }
 }

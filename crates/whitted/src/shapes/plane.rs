@@ -4,7 +4,7 @@
 //! the plane (|N·Dir| < 1e-12) misses it.
 
 use super::Roots;
-use crate::optics::{Ray, T_MIN};
+use crate::optics::Ray;
 use glam::DVec3;
 
 /// A plane through `point` with unit `normal`.
@@ -43,7 +43,7 @@ impl Plane {
             return None;
         }
         let t = self.normal.dot(self.point - ray.origin) / denom;
-        (t > T_MIN && t < t_max).then_some(t)
+        (t > ray.t_min && t < t_max).then_some(t)
     }
 
     /// The plane's unit normal, as given (not turned towards any ray).

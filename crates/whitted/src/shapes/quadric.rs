@@ -97,7 +97,7 @@ impl Quadric {
     /// `roots(ray).first_hit(t_max)`, inlined.
     #[inline(always)]
     pub fn hit(&self, ray: &Ray, t_max: f64) -> Option<f64> {
-        self.roots(ray).first_hit(t_max)
+        self.roots(ray).first_hit(ray.t_min, t_max)
     }
 
     /// The report's general form, term by term.

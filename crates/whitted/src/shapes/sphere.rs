@@ -7,7 +7,7 @@
 //! applies only there (a refracted ray inside a glass sphere must still find its exit).
 
 use super::Roots;
-use crate::optics::{Ray, T_MIN};
+use crate::optics::Ray;
 use glam::DVec3;
 
 /// A sphere given by centre and radius (> 0).
@@ -49,7 +49,7 @@ impl Sphere {
         Roots::two(oh - half, oh + half)
     }
 
-    /// The first root with T_MIN < t < t_max: `roots(ray).first_hit(t_max)` without
+    /// The first root with ray.t_min < t < t_max: `roots(ray).first_hit(t_max)` without
     /// building the `Roots` (the roots oh ∓ half are already in ascending order).
     #[inline(always)]
     pub fn hit(&self, ray: &Ray, t_max: f64) -> Option<f64> {
@@ -65,11 +65,11 @@ impl Sphere {
         }
         let half = (self.radius2 - ch2).sqrt();
         let t0 = oh - half;
-        if t0 > T_MIN && t0 < t_max {
+        if t0 > ray.t_min && t0 < t_max {
             return Some(t0);
         }
         let t1 = oh + half;
-        if t1 > T_MIN && t1 < t_max {
+        if t1 > ray.t_min && t1 < t_max {
             return Some(t1);
         }
         None
@@ -145,7 +145,11 @@ mod tests {
                         k += 1;
                         let r = Ray::new(DVec3::new(ox, 0.0, oz), d);
                         for t_max in [f64::INFINITY, 4.0, 1.0] {
-                            assert_eq!(s.hit(&r, t_max), s.roots(&r).first_hit(t_max), "{r:?}");
+                            assert_eq!(
+                                s.hit(&r, t_max),
+                                s.roots(&r).first_hit(r.t_min, t_max),
+                                "{r:?}"
+                            );
                         }
                     }
                 }

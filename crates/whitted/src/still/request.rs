@@ -48,6 +48,8 @@ pub struct Request {
     pub exr_depth: Option<ExrDepth>,
     /// A live viewer the picture streams to while it is drawn.
     pub display: Option<Display>,
+    /// The SPD's testing procedure (`--spd`): 512 × 512 from 513 × 513 corner rays.
+    pub spd: bool,
 }
 
 /// Why `raytrace` drew nothing, or could not write what it drew.
@@ -157,7 +159,13 @@ impl Job {
             .into());
         }
         let native = (scene.width, scene.height);
-        (scene.width, scene.height) = request.size.unwrap_or(native);
+        let spd_size = (crate::spd::SPD_SIZE, crate::spd::SPD_SIZE);
+        let size = if request.spd {
+            Some(spd_size)
+        } else {
+            request.size
+        };
+        (scene.width, scene.height) = size.unwrap_or(native);
         let request = request.clone();
         Ok(Job {
             scene,
@@ -177,23 +185,25 @@ impl Job {
         (self.request.aa).map_or(Antialias::Grid(self.request.samples), Antialias::Adaptive)
     }
 
+    /// The scene's own lens (an NFF's view angle) with the command line's overrides.
+    fn lens(&self) -> Lens {
+        let Lens { fov, roll, .. } = self.request.lens;
+        self.scene.lens.overridden(fov, roll)
+    }
+
     fn still(&self) -> Still<'_> {
         let size = (self.scene.width, self.scene.height);
-        Still::new(
-            &self.scene,
-            self.native,
-            size,
-            &self.request.lens,
-            self.aa(),
-        )
-        .expect("the parser refuses an eye placed on its look-at point")
+        let spd = self.request.spd;
+        Still::new(&self.scene, self.native, size, &self.lens(), self.aa())
+            .and_then(|s| if spd { s.spd() } else { Some(s) })
+            .expect("the parser refuses an eye placed on its look-at point")
     }
 
     /// The warning for a picture whose pixels are not square (the report's view plane at
     /// a resolution of another shape), before anything is drawn.
     pub fn non_square(&self) -> Option<NonSquare> {
         let size = (self.scene.width, self.scene.height);
-        NonSquare::check(&self.request.lens, self.native, size)
+        NonSquare::check(&self.lens(), self.native, size)
     }
 
     /// The warning before an enormous request (on the current thread pool).

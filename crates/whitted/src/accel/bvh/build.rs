@@ -1,0 +1,116 @@
+//! Building the tree: binned SAH splits along the widest axis of the primitives'
+//! centres, down to leaves of `LEAF_MAX` (or `MAX_DEPTH` levels).
+
+use super::{Item, Node, BINS, BLANK, LEAF_MAX, MAX_DEPTH};
+use glam::DVec3;
+
+fn surface_area(lo: DVec3, hi: DVec3) -> f64 {
+    let d = (hi - lo).max(DVec3::ZERO);
+    2.0 * (d.x * d.y + d.y * d.z + d.z * d.x)
+}
+
+/// Fills node `index` with the bounds of `items` (which start at `offset` in the final
+/// primitive order) and splits it, recursively.
+pub(super) fn build_node<P>(
+    nodes: &mut Vec<Node>,
+    items: &mut [Item<P>],
+    offset: usize,
+    index: usize,
+    depth: usize,
+) {
+    let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+    let (mut clo, mut chi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+    for it in items.iter() {
+        lo = lo.min(it.lo);
+        hi = hi.max(it.hi);
+        clo = clo.min(it.centre);
+        chi = chi.max(it.centre);
+    }
+    nodes[index].b = [lo.to_array(), hi.to_array()];
+    let n = items.len();
+    let leaf = |nodes: &mut Vec<Node>| {
+        nodes[index].first = offset as u32;
+        nodes[index].count = n as u32;
+    };
+    if n <= LEAF_MAX || depth >= MAX_DEPTH {
+        return leaf(nodes);
+    }
+    let extent = chi - clo;
+    let axis = if extent.x >= extent.y && extent.x >= extent.z {
+        0
+    } else if extent.y >= extent.z {
+        1
+    } else {
+        2
+    };
+    let mid = if extent[axis] > 0.0 {
+        // Binned SAH along the widest axis of the centres.
+        let k = BINS as f64 / extent[axis];
+        let bin_of = |c: f64| (((c - clo[axis]) * k) as usize).min(BINS - 1);
+        let mut bins = [(DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize); BINS];
+        for it in items.iter() {
+            let b = &mut bins[bin_of(it.centre[axis])];
+            b.0 = b.0.min(it.lo);
+            b.1 = b.1.max(it.hi);
+            b.2 += 1;
+        }
+        // Costs of splitting after bin i: sweep from the right, then from the left.
+        let mut right = [0.0f64; BINS];
+        let (mut rlo, mut rhi, mut rn) = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize);
+        for i in (1..BINS).rev() {
+            rlo = rlo.min(bins[i].0);
+            rhi = rhi.max(bins[i].1);
+            rn += bins[i].2;
+            right[i - 1] = surface_area(rlo, rhi) * rn as f64;
+        }
+        let (mut llo, mut lhi, mut ln) = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize);
+        let mut best = (f64::INFINITY, 0usize);
+        for i in 0..BINS - 1 {
+            llo = llo.min(bins[i].0);
+            lhi = lhi.max(bins[i].1);
+            ln += bins[i].2;
+            if ln == 0 || ln == n {
+                continue;
+            }
+            let cost = surface_area(llo, lhi) * ln as f64 + right[i];
+            if cost < best.0 {
+                best = (cost, i);
+            }
+        }
+        if best.0.is_finite() {
+            let split = best.1;
+            partition(items, |it| bin_of(it.centre[axis]) <= split)
+        } else {
+            n / 2
+        }
+    } else {
+        n / 2
+    };
+    let mid = if mid == 0 || mid == n {
+        // All centres in one bin (or all equal): split at the median.
+        items.select_nth_unstable_by(n / 2, |a, b| a.centre[axis].total_cmp(&b.centre[axis]));
+        n / 2
+    } else {
+        mid
+    };
+    let left = nodes.len();
+    nodes.push(BLANK);
+    nodes.push(BLANK);
+    nodes[index].first = left as u32;
+    nodes[index].count = 0;
+    let (a, b) = items.split_at_mut(mid);
+    build_node(nodes, a, offset, left, depth + 1);
+    build_node(nodes, b, offset + mid, left + 1, depth + 1);
+}
+
+/// Moves the items satisfying `pred` to the front; returns how many there are.
+fn partition<P>(items: &mut [Item<P>], pred: impl Fn(&Item<P>) -> bool) -> usize {
+    let mut i = 0;
+    for j in 0..items.len() {
+        if pred(&items[j]) {
+            items.swap(i, j);
+            i += 1;
+        }
+    }
+    i
+}

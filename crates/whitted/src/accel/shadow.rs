@@ -1,0 +1,173 @@
+//! Shadow rays through the accelerator: what a ray from a surface point towards a light
+//! lets through, exactly as `shading::transmission`'s linear scan answers (see the
+//! parent module for the order of the product).
+
+use super::{Accel, CROSSINGS_MAX, GLASS_LINEAR_MAX};
+use crate::object::Object;
+use crate::optics::Ray;
+use crate::texture::Color;
+use glam::DVec3;
+
+/// The transparent crossings of one shadow ray: (object, t), at most `CROSSINGS_MAX`.
+struct Crossings {
+    buf: [(u32, f64); CROSSINGS_MAX],
+    n: usize,
+    overflow: bool,
+}
+
+impl Crossings {
+    #[inline]
+    fn push(&mut self, i: u32, t: f64) {
+        if self.n < CROSSINGS_MAX {
+            self.buf[self.n] = (i, t);
+            self.n += 1;
+        } else {
+            self.overflow = true;
+        }
+    }
+}
+
+impl Accel {
+    /// What a shadow ray from `p` along the unit `to_light` lets through over (t_min,
+    /// dist): exactly `shading::transmission(objects, p, to_light, dist)`.
+    ///
+    /// Always inlined, as 46b440d's build inlined it on its own into `shading::direct`,
+    /// its one caller then: `direct_rec` with a recorder made a second one, LLVM kept it
+    /// out of line, and the call in the light loop (cold where the light buffer answers)
+    /// cost `direct` 20 M instructions on the orbit at one thread (callgrind) in spills
+    /// around it; where the buffer cannot answer it is the hot path itself.
+    #[inline(always)]
+    pub fn transmission(&self, objects: &[Object], p: DVec3, to_light: DVec3, dist: f64) -> Color {
+        let ray = Ray::new(p, to_light).with_t_min(self.t_min);
+        for shape in &self.unbounded_opaque {
+            if shape.hit(&ray, dist).is_some() {
+                return Color::ZERO;
+            }
+        }
+        if self.glass_all.len() > GLASS_LINEAR_MAX {
+            return self.transmission_collecting(objects, &ray, dist);
+        }
+        // Few transparent objects: the tree only looks for an opaque blocker ...
+        if let Some(opaque) = self.tree.flat_opaque() {
+            for prim in opaque {
+                if prim.sphere.hit(&ray, dist).is_some() {
+                    return Color::ZERO;
+                }
+            }
+        } else {
+            let mut blocked = false;
+            self.tree.traverse(&ray, dist, |prim, limit| {
+                if prim.opaque && prim.sphere.hit(&ray, dist).is_some() {
+                    blocked = true;
+                    return None;
+                }
+                Some(limit)
+            });
+            if blocked {
+                return Color::ZERO;
+            }
+        }
+        if !self.shapes.is_empty() && self.shapes_blocked(&ray, dist) {
+            return Color::ZERO;
+        }
+        // ... and the transparent ones are crossed in the linear scan's own loop.
+        self.glass_linear(objects, &ray, dist)
+    }
+
+    /// The linear scan's loop over the transparent objects.
+    #[inline(always)]
+    fn glass_linear(&self, objects: &[Object], ray: &Ray, dist: f64) -> Color {
+        let mut through = Color::ONE;
+        for &i in &self.glass_all {
+            let obj = &objects[i as usize];
+            for t in obj.shape.crossings(ray, dist) {
+                through *= obj.material.kt * obj.texture.color_at(ray.at(t));
+            }
+        }
+        through
+    }
+
+    /// `transmission` for many transparent objects: one walk through the tree stops at an
+    /// opaque blocker and collects the transparent crossings, which are then multiplied in
+    /// object order (or, past `CROSSINGS_MAX` of them, crossed by `glass_linear`).
+    #[inline(never)]
+    fn transmission_collecting(&self, objects: &[Object], ray: &Ray, dist: f64) -> Color {
+        let mut found = Crossings {
+            buf: [(0, 0.0); CROSSINGS_MAX],
+            n: 0,
+            overflow: false,
+        };
+        for &i in &self.unbounded_glass {
+            for t in objects[i as usize].shape.crossings(ray, dist) {
+                found.push(i, t);
+            }
+        }
+        let mut blocked = false;
+        self.tree.traverse(ray, dist, |prim, limit| {
+            if prim.opaque {
+                if prim.sphere.hit(ray, dist).is_some() {
+                    blocked = true;
+                    return None;
+                }
+            } else if prim.glass && !found.overflow {
+                for t in prim.sphere.roots(ray).crossings(ray.t_min, dist) {
+                    found.push(prim.index, t);
+                }
+            }
+            Some(limit)
+        });
+        if blocked {
+            return Color::ZERO;
+        }
+        if !self.shapes.is_empty() {
+            self.shapes.traverse(ray, dist, |prim, limit| {
+                if prim.opaque {
+                    if prim.shape.hit(ray, dist).is_some() {
+                        blocked = true;
+                        return None;
+                    }
+                } else if prim.glass && !found.overflow {
+                    for t in prim.shape.crossings(ray, dist) {
+                        found.push(prim.index, t);
+                    }
+                }
+                Some(limit)
+            });
+            if blocked {
+                return Color::ZERO;
+            }
+        }
+        if found.overflow {
+            return self.glass_linear(objects, ray, dist);
+        }
+        let crossings = &mut found.buf[..found.n];
+        // Stable insertion sort by object: each object's crossings stay in t order.
+        for k in 1..crossings.len() {
+            let mut j = k;
+            while j > 0 && crossings[j - 1].0 > crossings[j].0 {
+                crossings.swap(j - 1, j);
+                j -= 1;
+            }
+        }
+        let mut through = Color::ONE;
+        for &(i, t) in crossings.iter() {
+            let obj = &objects[i as usize];
+            through *= obj.material.kt * obj.texture.color_at(ray.at(t));
+        }
+        through
+    }
+
+    /// Whether an opaque shape of the second tree blocks the ray before `dist`.
+    #[inline(never)]
+    fn shapes_blocked(&self, ray: &Ray, dist: f64) -> bool {
+        let mut blocked = false;
+        self.shapes.traverse(ray, dist, |prim, limit| {
+            if prim.opaque && prim.shape.hit(ray, dist).is_some() {
+                blocked = true;
+                return None;
+            }
+            Some(limit)
+        });
+        blocked
+    }
+}
