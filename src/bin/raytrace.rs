@@ -17,6 +17,7 @@ use whitted::camera::Lens;
 use whitted::exit::Outcome;
 use whitted::output::{check_target, write_atomic, write_atomic_layers, ImageFormat, OutputError};
 use whitted::passes::{visible::picture, PassSet};
+use whitted::render::adaptive::AntialiasError;
 use whitted::render::Antialias;
 use whitted::still::Still;
 use whitted::{Scene, SceneError};
@@ -95,6 +96,9 @@ fn run(args: Args) -> anyhow::Result<()> {
         roll: args.roll,
     };
     let (w, h, n) = (scene.width, scene.height, args.samples);
+    if let Some(adaptive) = &args.aa {
+        adaptive.fits(w, h)?;
+    }
     let aa = args.aa.map_or(Antialias::Grid(n), Antialias::Adaptive);
     let still = Still::new(&scene, native, (w, h), &lens, aa)
         .expect("the parser refuses an eye placed on its look-at point");
@@ -179,6 +183,7 @@ fn main() -> ExitCode {
             ) {
                 (Some(_), _) => Outcome::BadInput,
                 _ if e.downcast_ref::<NotAScene>().is_some() => Outcome::BadInput,
+                _ if e.downcast_ref::<AntialiasError>().is_some() => Outcome::BadInput,
                 (_, Some(o)) => o.outcome(),
                 _ => Outcome::Failed,
             };

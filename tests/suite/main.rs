@@ -49,6 +49,7 @@ mod pgo_build;
 mod progress;
 mod raytrace_cli;
 mod readonly_folder;
+mod reliability_three;
 mod robust_parsers;
 mod scene_parsing;
 mod shape_properties;
