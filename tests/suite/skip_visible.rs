@@ -34,7 +34,8 @@ fn what_is_there_is_found_without_a_skip_line() {
 fn run(name: &str, ci: bool) -> (bool, String) {
     let me = std::env::current_exe().unwrap();
     let mut cmd = Command::new(me);
-    cmd.args(["--exact", name, "--test-threads", "1"])
+    let name = format!("skip_visible::{name}");
+    cmd.args(["--exact", &name, "--test-threads", "1"])
         .env("WHITTED_SKIP_DEMO", "1")
         .env_remove("CI");
     if ci {

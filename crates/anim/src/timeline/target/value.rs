@@ -1,0 +1,143 @@
+//! Reading and writing a track's value in a scene: `Target::read` gives what the base
+//! scene holds, `Target::apply` puts a value in (numbers travel as `(x, 0, 0)`), through
+//! the fog's distance and a texture's colours as the report's records lay them out.
+
+use super::{Field, Target};
+use glam::DVec3;
+use whitted::bump::Bump;
+use whitted::fog::Fog;
+use whitted::scene::{direction, Scene, ShapeSpec};
+use whitted::texture::Texture;
+
+impl Target {
+    /// The value the base scene holds (as `(x, 0, 0)` for a number).
+    pub fn read(&self, scene: &Scene) -> DVec3 {
+        let num = |x: f64| DVec3::new(x, 0.0, 0.0);
+        let i = self.index;
+        let obj = scene.objects.get(i);
+        let spec = scene.specs.get(i);
+        let (c1, c2, c3) = obj.map_or((DVec3::ZERO, DVec3::ZERO, DVec3::ZERO), |o| {
+            colors(&o.texture)
+        });
+        match (self.field, spec) {
+            (Field::Center, Some(ShapeSpec::Sphere { center, .. })) => *center,
+            (Field::Radius, Some(ShapeSpec::Sphere { radius, .. }))
+            | (Field::Radius, Some(ShapeSpec::Cylinder { radius, .. })) => num(*radius),
+            (Field::Point, Some(ShapeSpec::Plane { point, .. }))
+            | (Field::Point, Some(ShapeSpec::Cylinder { point, .. })) => *point,
+            (Field::Normal, Some(ShapeSpec::Plane { normal, .. })) => *normal,
+            (Field::Axis, Some(ShapeSpec::Cylinder { axis, .. })) => *axis,
+            (Field::Color | Field::Color1, _) => c1,
+            (Field::Color2, _) => c2,
+            (Field::Color3, _) => c3,
+            (Field::Kd, _) => num(obj.map_or(0.0, |o| o.material.kd)),
+            (Field::Kr, _) => num(obj.map_or(0.0, |o| o.material.kr)),
+            (Field::Kt, _) => num(obj.map_or(0.0, |o| o.material.kt)),
+            (Field::Ior, _) => num(obj.map_or(1.0, |o| o.material.ior)),
+            (Field::Bump, _) => num(match obj.map(|o| o.material.bump) {
+                Some(Bump::Uniform(e) | Bump::Water(e)) => e,
+                _ => 0.0,
+            }),
+            (Field::Position, _) => scene.lights[i].position,
+            (Field::LightColor, _) => scene.lights[i].color,
+            (Field::Intensity, _) => num(scene.lights[i].intensity),
+            (Field::FogDistance, _) => num(fog_distance(scene.fog)),
+            _ => DVec3::ZERO,
+        }
+    }
+
+    /// Puts `v` into `scene` (checked with `check` beforehand), rebuilding the shape from
+    /// its record when the field is geometric.
+    pub fn apply(&self, scene: &mut Scene, v: DVec3) {
+        let x = v.x;
+        let i = self.index;
+        match self.field {
+            Field::Center | Field::Radius | Field::Point | Field::Normal | Field::Axis => {
+                let spec = &mut scene.specs[i];
+                match (self.field, spec) {
+                    (Field::Center, ShapeSpec::Sphere { center, .. }) => *center = v,
+                    (Field::Radius, ShapeSpec::Sphere { radius, .. })
+                    | (Field::Radius, ShapeSpec::Cylinder { radius, .. }) => *radius = x,
+                    (Field::Point, ShapeSpec::Plane { point, .. })
+                    | (Field::Point, ShapeSpec::Cylinder { point, .. }) => *point = v,
+                    (Field::Normal, ShapeSpec::Plane { normal, .. }) => {
+                        *normal = direction(v).unwrap_or(v)
+                    }
+                    (Field::Axis, ShapeSpec::Cylinder { axis, .. }) => {
+                        *axis = direction(v).unwrap_or(v)
+                    }
+                    _ => {}
+                }
+                scene.objects[i].shape = scene.specs[i].build();
+            }
+            Field::Color | Field::Color1 | Field::Color2 | Field::Color3 => {
+                set_color(&mut scene.objects[i].texture, self.field, v)
+            }
+            Field::Kd => scene.objects[i].material.kd = x,
+            Field::Kr => scene.objects[i].material.kr = x,
+            Field::Kt => scene.objects[i].material.kt = x,
+            Field::Ior => scene.objects[i].material.ior = x,
+            Field::Bump => {
+                let bump = &mut scene.objects[i].material.bump;
+                *bump = match *bump {
+                    Bump::Uniform(_) => Bump::Uniform(x),
+                    Bump::Water(_) => Bump::Water(x),
+                    Bump::None => Bump::None,
+                }
+            }
+            Field::Position => scene.lights[i].position = v,
+            Field::LightColor => scene.lights[i].color = v,
+            Field::Intensity => scene.lights[i].intensity = x,
+            Field::FogDistance => scene.fog = fog_with_distance(scene.fog, x),
+        }
+    }
+}
+
+/// The fog's distance D (0 without fog).
+fn fog_distance(fog: Fog) -> f64 {
+    match fog {
+        Fog::None => 0.0,
+        Fog::Linear(d) | Fog::Exponential(d) | Fog::ExponentialSquared(d) => d,
+    }
+}
+
+/// The same kind of fog at distance `d`.
+fn fog_with_distance(fog: Fog, d: f64) -> Fog {
+    match fog {
+        Fog::None => Fog::None,
+        Fog::Linear(_) => Fog::Linear(d),
+        Fog::Exponential(_) => Fog::Exponential(d),
+        Fog::ExponentialSquared(_) => Fog::ExponentialSquared(d),
+    }
+}
+
+/// A texture's first, second and third colours (zero where it has none).
+fn colors(t: &Texture) -> (DVec3, DVec3, DVec3) {
+    match *t {
+        Texture::Uniform(c) => (c, DVec3::ZERO, DVec3::ZERO),
+        Texture::Checker(a, b) | Texture::Wood(a, b) | Texture::Marble(a, b) => (a, b, DVec3::ZERO),
+        Texture::Perlin(a, b, c) => (a, b, c),
+    }
+}
+
+fn set_color(t: &mut Texture, field: Field, v: DVec3) {
+    match (t, field) {
+        (Texture::Uniform(c), Field::Color) => *c = v,
+        (
+            Texture::Checker(c, _)
+            | Texture::Wood(c, _)
+            | Texture::Marble(c, _)
+            | Texture::Perlin(c, _, _),
+            Field::Color1,
+        ) => *c = v,
+        (
+            Texture::Checker(_, c)
+            | Texture::Wood(_, c)
+            | Texture::Marble(_, c)
+            | Texture::Perlin(_, c, _),
+            Field::Color2,
+        ) => *c = v,
+        (Texture::Perlin(_, _, c), Field::Color3) => *c = v,
+        _ => {}
+    }
+}
