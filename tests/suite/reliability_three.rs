@@ -138,3 +138,34 @@ fn adaptive_depth_and_size_are_bounded_before_rendering() {
     );
     assert!(!dir.path().join("big.png").exists());
 }
+
+#[test]
+fn shard_counts_are_bounded_before_anything_is_split() {
+    let (_dir, m) = project(&circle_manifest(""));
+    // Before: gigabytes of shard bounds, then an abort.
+    for args in [
+        vec!["estimate", "--shards", "4294967295"],
+        vec!["estimate", "--shards", "0"],
+        vec!["estimate", "--shards", "1000001"],
+    ] {
+        let (code, _, err) = run(&[&args[0], &m, &args[1], &args[2]]);
+        assert_eq!(code, Some(2), "{args:?}: {err}");
+        assert!(err.contains("1..=1000000"), "{args:?}: {err}");
+    }
+    let (code, _, err) = run(&[&m, &"--shard", &"1/4294967295", &"--balance", &"-q"]);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("from 1 to 1000000, the limit of shards"), "{err}");
+    // A Slurm count past u32 used to wrap to another count.
+    let out = animate()
+        .arg(&m)
+        .args(["--shard", "auto", "-q"])
+        .env("SLURM_ARRAY_TASK_ID", "0")
+        .env("SLURM_ARRAY_TASK_MIN", "0")
+        .env("SLURM_ARRAY_TASK_COUNT", "4294967297")
+        .timeout(PROMPT)
+        .output()
+        .unwrap();
+    let err = text(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("SLURM_ARRAY_TASK_COUNT=4294967297"), "{err}");
+}

@@ -51,6 +51,16 @@ pub enum AnimError {
         /// The asked height in pixels.
         height: u32,
     },
+    /// Adaptive anti-aliasing at this depth and frame size could need more memory than
+    /// `limits::MAX_ADAPTIVE_BYTES` (bad input, found before anything is allocated).
+    #[error("{}: {source}", shown(.manifest))]
+    Antialias {
+        /// The manifest that asks for it.
+        manifest: PathBuf,
+        /// The size, the depth and the worst case.
+        #[source]
+        source: whitted::render::adaptive::AntialiasError,
+    },
     /// At this frame the camera's eye coincides with its look-at point, so it has no
     /// direction (bad input, found before rendering); located at the manifest's
     /// `look_at` object, or its `[camera]` table.
@@ -161,6 +171,7 @@ impl AnimError {
             | AnimError::Select(_)
             | AnimError::Reference(_)
             | AnimError::Size { .. }
+            | AnimError::Antialias { .. }
             | AnimError::Camera { .. }
             | AnimError::Folder { .. }
             | AnimError::FfmpegMissing

@@ -14,6 +14,9 @@ use whitted_anim::{AnimError, Manifest, Project};
 
 use super::report::Usage;
 
+/// The most shards, for clap's ranges.
+const MAX_SHARDS: i64 = whitted::limits::MAX_SHARDS as i64;
+
 const AFTER_HELP: &str = "\
 Exit status: 0 success; 1 the run started and failed (a frame could not be rendered or
 written, ffmpeg failed; `check`: a frame failed; `status`: frames are stale or missing);
@@ -167,7 +170,7 @@ pub struct RenderArgs {
     /// The number of tasks, for `--shard auto` under Kubernetes or AWS Batch (under Slurm
     /// it must agree with the array's size).
     #[arg(long, value_name = "N", requires = "shard",
-          value_parser = clap::value_parser!(u32).range(1..))]
+          value_parser = clap::value_parser!(u32).range(1..=MAX_SHARDS))]
     pub shards: Option<u32>,
     /// Render only the frames that are missing or whose recorded inputs differ from what
     /// the manifest now gives them; leave up-to-date files untouched.
@@ -422,6 +425,6 @@ pub struct EstimateArgs {
     #[command(flatten)]
     pub common: Common,
     /// Also the predicted cost of each of N shards, balanced and by equal counts.
-    #[arg(long, value_name = "N", default_value_t = 0)]
-    pub shards: u32,
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=MAX_SHARDS))]
+    pub shards: Option<u32>,
 }

@@ -313,7 +313,7 @@ fn estimate(args: EstimateArgs) -> anyhow::Result<Outcome> {
     let anim = Animation::new(&project)?;
     let frames = run::frames_of(&anim, c.frames.as_deref(), None)?;
     let e = pool(c.threads)?.install(|| Estimate::new(&anim, &frames))?;
-    print!("{}", e.table(args.shards));
+    print!("{}", e.table(args.shards.unwrap_or(0)));
     Ok(Outcome::Success)
 }
 
