@@ -141,6 +141,26 @@ pub enum AnimError {
         /// How many.
         count: usize,
     },
+    /// Files under the names a command would replace or remove are not this manifest's:
+    /// another manifest's frames, or files with no record (bad input: nothing was done).
+    #[error("{files}: {whose}, and would be {what}")]
+    NotOurs {
+        /// `replaced` or `removed`.
+        what: String,
+        /// The first file, and how many others.
+        files: String,
+        /// Whose the first one is, in words.
+        whose: String,
+    },
+    /// An output would be written over one of the run's inputs, or over a file the tool
+    /// did not write (bad input: nothing was written).
+    #[error("{}: {why}; name another file", shown(.path))]
+    Overwrite {
+        /// The output as given.
+        path: PathBuf,
+        /// What it is.
+        why: String,
+    },
     /// The video file exists and would be replaced (bad input: nothing was rendered).
     #[error("the video {} exists and would be replaced", shown(.0))]
     VideoExists(PathBuf),
@@ -179,6 +199,8 @@ impl AnimError {
             | AnimError::Busy { .. }
             | AnimError::InUse { .. }
             | AnimError::Foreign { .. }
+            | AnimError::NotOurs { .. }
+            | AnimError::Overwrite { .. }
             | AnimError::VideoExists(_)
             | AnimError::NotReady { .. }
             | AnimError::StdoutClosed => Outcome::BadInput,

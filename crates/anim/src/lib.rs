@@ -10,6 +10,7 @@
 //!   and its events, provenance and status, video;
 //! - checking frames: `check` (`animate check` and `bless`: idiff metrics, FLIP, one
 //!   report value and its exporters: table, JSON, JUnit, HTML);
+//! - `guard`: outputs (reports, templates) that must not overwrite inputs or others' files;
 //! - `job`: job templates for render farms (Open Job Description);
 //! - `preview`: quick pictures for people (a GIF, a contact sheet, a plot of the paths);
 //! - `view`: `animate view`, a page that shows the animation while it is made (live
@@ -20,6 +21,7 @@
 pub mod check;
 pub mod error;
 pub mod frames;
+pub mod guard;
 pub mod job;
 pub mod manifest;
 pub mod preview;

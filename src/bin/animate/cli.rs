@@ -186,7 +186,8 @@ pub struct RenderArgs {
           conflicts_with_all = ["video", "out"])]
     pub stdout: Option<ImageFormat>,
     /// Write over what a run otherwise refuses to: frames in the folder recorded by another
-    /// manifest, an existing --video file, binary --stdout frames on a terminal.
+    /// manifest, files under frame names with no record, an existing --video file, binary
+    /// --stdout frames on a terminal.
     #[arg(long)]
     pub force: bool,
     /// Pipe the frames into ffmpeg (from PATH) to make this video file (written beside
@@ -286,6 +287,10 @@ pub struct BlessArgs {
     /// The references folder, instead of the manifest's `[check] references`.
     #[arg(long, value_name = "DIR")]
     pub references: Option<PathBuf>,
+    /// bless: replace references that another manifest recorded; check: write --junit and
+    /// --html over files that animate did not write.
+    #[arg(long)]
+    pub force: bool,
 }
 
 #[derive(Args, Debug)]
@@ -395,6 +400,10 @@ pub struct CleanArgs {
     /// Say what would be removed, and remove nothing.
     #[arg(long)]
     pub dry_run: bool,
+    /// Also remove files past the end that this manifest did not render (another
+    /// manifest's frames, files with no record).
+    #[arg(long)]
+    pub force: bool,
 }
 
 #[derive(Args, Debug)]
@@ -410,6 +419,9 @@ pub struct JobArgs {
     /// Write the template into this file (default: standard output).
     #[arg(short, long, value_name = "FILE")]
     pub out: Option<PathBuf>,
+    /// Write the template over an existing file that animate did not write.
+    #[arg(long)]
+    pub force: bool,
     /// Frames a task.
     #[arg(long, value_name = "N", conflicts_with = "chunk_seconds",
           value_parser = clap::value_parser!(u32).range(1..))]

@@ -25,7 +25,7 @@ use whitted_anim::frames::{balance, encode, folder};
 use whitted_anim::job::{openjd_template, relative_to, Chunking};
 use whitted_anim::select::sorted;
 use whitted_anim::view::ViewOptions;
-use whitted_anim::{preview, AnimError, Animation, Reporter};
+use whitted_anim::{guard, preview, AnimError, Animation, Reporter};
 
 fn pool(threads: Option<u32>) -> anyhow::Result<rayon::ThreadPool> {
     whitted_anim::process::pool(threads).context("cannot start the worker threads")
@@ -156,7 +156,7 @@ fn clean_command(args: CleanArgs) -> anyhow::Result<Outcome> {
         );
         return Ok(Outcome::Success);
     }
-    let cleaned = folder::clean(&anim, &dir)?;
+    let cleaned = folder::clean(&anim, &dir, args.force)?;
     println!(
         "{}: removed {} frame(s) past the end ({}) and {} temporary file(s)",
         shown(&dir),
@@ -195,7 +195,8 @@ fn bless(args: BlessArgs) -> anyhow::Result<Outcome> {
         args.references.as_deref(),
     );
     let (frames, refs) = targets.map_err(report::with_flags)?;
-    let blessed = pool(c.threads)?.install(|| check::bless(&anim, &frames, &refs))?;
+    let blessed =
+        pool(c.threads)?.install(|| check::bless(&anim, &frames, &refs, args.force))?;
     if !c.quiet {
         eprintln!(
             "animate: blessed {} reference(s) in {}: {}",
@@ -212,6 +213,13 @@ fn check_command(args: CheckArgs) -> anyhow::Result<Outcome> {
     let anim = Animation::new(&project)?;
     let opts =
         CheckOptions::new(&project.manifest, &args.overrides()).map_err(report::with_flags)?;
+    let (inputs, force) = (guard::inputs(&project), args.bless.force);
+    if let Some(file) = &args.junit {
+        guard::output(file, &inputs, guard::JUNIT, force)?;
+    }
+    if let Some(dir) = &args.html {
+        guard::output(&dir.join("index.html"), &inputs, guard::HTML, force)?;
+    }
     let report = pool(args.bless.common.threads)?.install(|| check::check(&anim, &opts))?;
     for exporter in args.exporters() {
         exporter
@@ -259,6 +267,9 @@ fn job(args: JobArgs) -> anyhow::Result<Outcome> {
     let project = c.load()?;
     let (m, anim) = (&project.manifest, Animation::new(&project)?);
     let frames = sorted(&run::frames_of(&anim, c.frames.as_deref(), None)?);
+    if let Some(file) = &args.out {
+        guard::output(file, &guard::inputs(&project), guard::OPENJD, args.force)?;
+    }
     let chunking = match args.chunk_seconds {
         Some(target) => {
             let e = pool(c.threads)?.install(|| Estimate::new(&anim, &frames))?;
