@@ -93,6 +93,13 @@ pub enum AnimError {
         #[source]
         source: OutputError,
     },
+    /// A command's text could not be written to standard output (a full disk; a closed
+    /// pipe is not an error) (a failed run).
+    #[error("cannot write standard output: {0}")]
+    Stdout(#[source] std::io::Error),
+    /// A check's results could not be exported (bad input: the report's place).
+    #[error(transparent)]
+    Export(#[from] crate::check::export::ExportError),
     /// Writing frames to standard output failed, e.g. the reader closed the pipe (a
     /// failed run).
     #[error("cannot write the frames to the output stream: {0}")]
@@ -201,10 +208,14 @@ impl AnimError {
             | AnimError::Foreign { .. }
             | AnimError::NotOurs { .. }
             | AnimError::Overwrite { .. }
+            | AnimError::Export(_)
             | AnimError::VideoExists(_)
             | AnimError::NotReady { .. }
             | AnimError::StdoutClosed => Outcome::BadInput,
-            AnimError::Write { .. } | AnimError::Stream(_) | AnimError::Ffmpeg(_) => {
+            AnimError::Write { .. }
+            | AnimError::Stream(_)
+            | AnimError::Stdout(_)
+            | AnimError::Ffmpeg(_) => {
                 Outcome::Failed
             }
             AnimError::Interrupted(sig) => Outcome::Interrupted(*sig),
