@@ -52,6 +52,7 @@ mod pixel_aspect;
 mod progress;
 mod raytrace_cli;
 mod readonly_folder;
+mod reliability_three;
 mod robust_parsers;
 mod scene_parsing;
 mod shape_properties;

@@ -51,6 +51,16 @@ pub enum AnimError {
         /// The asked height in pixels.
         height: u32,
     },
+    /// Adaptive anti-aliasing at this depth and frame size could need more memory than
+    /// `limits::MAX_ADAPTIVE_BYTES` (bad input, found before anything is allocated).
+    #[error("{}: {source}", shown(.manifest))]
+    Antialias {
+        /// The manifest that asks for it.
+        manifest: PathBuf,
+        /// The size, the depth and the worst case.
+        #[source]
+        source: whitted::render::adaptive::AntialiasError,
+    },
     /// At this frame the camera's eye coincides with its look-at point, so it has no
     /// direction (bad input, found before rendering); located at the manifest's
     /// `look_at` object, or its `[camera]` table.
@@ -83,6 +93,13 @@ pub enum AnimError {
         #[source]
         source: OutputError,
     },
+    /// A command's text could not be written to standard output (a full disk; a closed
+    /// pipe is not an error) (a failed run).
+    #[error("cannot write standard output: {0}")]
+    Stdout(#[source] std::io::Error),
+    /// A check's results could not be exported (bad input: the report's place).
+    #[error(transparent)]
+    Export(#[from] crate::check::export::ExportError),
     /// Writing frames to standard output failed, e.g. the reader closed the pipe (a
     /// failed run).
     #[error("cannot write the frames to the output stream: {0}")]
@@ -131,6 +148,26 @@ pub enum AnimError {
         /// How many.
         count: usize,
     },
+    /// Files under the names a command would replace or remove are not this manifest's:
+    /// another manifest's frames, or files with no record (bad input: nothing was done).
+    #[error("{files}: {whose}, and would be {what}")]
+    NotOurs {
+        /// `replaced` or `removed`.
+        what: String,
+        /// The first file, and how many others.
+        files: String,
+        /// Whose the first one is, in words.
+        whose: String,
+    },
+    /// An output would be written over one of the run's inputs, or over a file the tool
+    /// did not write (bad input: nothing was written).
+    #[error("{}: {why}; name another file", shown(.path))]
+    Overwrite {
+        /// The output as given.
+        path: PathBuf,
+        /// What it is.
+        why: String,
+    },
     /// The video file exists and would be replaced (bad input: nothing was rendered).
     #[error("the video {} exists and would be replaced", shown(.0))]
     VideoExists(PathBuf),
@@ -161,6 +198,7 @@ impl AnimError {
             | AnimError::Select(_)
             | AnimError::Reference(_)
             | AnimError::Size { .. }
+            | AnimError::Antialias { .. }
             | AnimError::Camera { .. }
             | AnimError::Folder { .. }
             | AnimError::FfmpegMissing
@@ -168,12 +206,16 @@ impl AnimError {
             | AnimError::Busy { .. }
             | AnimError::InUse { .. }
             | AnimError::Foreign { .. }
+            | AnimError::NotOurs { .. }
+            | AnimError::Overwrite { .. }
+            | AnimError::Export(_)
             | AnimError::VideoExists(_)
             | AnimError::NotReady { .. }
             | AnimError::StdoutClosed => Outcome::BadInput,
-            AnimError::Write { .. } | AnimError::Stream(_) | AnimError::Ffmpeg(_) => {
-                Outcome::Failed
-            }
+            AnimError::Write { .. }
+            | AnimError::Stream(_)
+            | AnimError::Stdout(_)
+            | AnimError::Ffmpeg(_) => Outcome::Failed,
             AnimError::Interrupted(sig) => Outcome::Interrupted(*sig),
         }
     }

@@ -10,6 +10,8 @@
 //!   and its events, provenance and status, video;
 //! - checking frames: `check` (`animate check` and `bless`: idiff metrics, FLIP, one
 //!   report value and its exporters: table, JSON, JUnit, HTML);
+//! - `guard`: outputs (reports, templates) that must not overwrite inputs or others' files;
+//! - `commands`: the subcommands of `animate` as library calls (request in, text out);
 //! - `job`: job templates for render farms (Open Job Description);
 //! - `preview`: quick pictures for people (a GIF, a contact sheet, a plot of the paths);
 //! - `view`: `animate view`, a page that shows the animation while it is made (live
@@ -18,8 +20,10 @@
 //!   message that refuses a name.
 
 pub mod check;
+pub mod commands;
 pub mod error;
 pub mod frames;
+pub mod guard;
 pub mod job;
 pub mod manifest;
 pub mod preview;

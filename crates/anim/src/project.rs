@@ -152,6 +152,13 @@ impl<'p> Animation<'p> {
                 height,
             });
         }
+        if let Some(aa) = &project.manifest.render.antialias {
+            aa.fits(width, height)
+                .map_err(|source| AnimError::Antialias {
+                    manifest: project.manifest.path.clone(),
+                    source,
+                })?;
+        }
         let shared = project.shared_accel();
         Ok(Animation {
             manifest: &project.manifest,

@@ -35,6 +35,13 @@ pub const MAX_MANIFEST_BYTES: u64 = 16 << 20;
 /// The largest frame file read by `status`, `--resume` and `encode`: the RGB bytes of
 /// the largest image accepted (`MAX_PIXELS`) and 16 MiB for headers and metadata.
 pub const MAX_FRAME_BYTES: u64 = 3 * MAX_PIXELS + (16 << 20);
+/// The most memory one adaptively anti-aliased frame's lattice may need in the worst case
+/// (every pixel splitting to the full depth): 2 GiB. 640×480 at depth 6, 1920×1080 at depth
+/// 4 and 3840×2160 at depth 2 fit; 4096×2048 at depth 6 (33 GB) does not.
+pub const MAX_ADAPTIVE_BYTES: u64 = 2 << 30;
+/// The largest number of shards a set of frames may be split into (`--shard K/N`,
+/// `estimate --shards N`, a scheduler's array size): as many as the most frames.
+pub const MAX_SHARDS: u32 = MAX_FRAMES;
 /// The longest piece of input an error message quotes, in characters; longer ones are
 /// cut with "…".
 pub const MAX_QUOTED: usize = 60;

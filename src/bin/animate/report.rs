@@ -313,6 +313,10 @@ pub fn hint(e: &AnimError) -> Option<&'static str> {
             Some("`--force` writes over them; `-o DIR` renders into another folder")
         }
         AnimError::VideoExists(_) => Some("`--force` replaces it; `-o` names another file"),
+        AnimError::NotOurs { .. } => Some("`--force` does it anyway"),
+        AnimError::Overwrite { why, .. } if why.contains("not written") => {
+            Some("`--force` writes over it")
+        }
         _ => None,
     }
 }

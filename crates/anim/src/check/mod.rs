@@ -214,13 +214,44 @@ pub fn bless_counts(blessed: &[Blessed]) -> String {
     parts.join(", ")
 }
 
-/// Renders `frames` and writes them as references into `refs`; says what each replaced.
-pub fn bless(anim: &Animation, frames: &[u32], refs: &Path) -> Result<Vec<Blessed>, AnimError> {
+/// Renders `frames` and writes them as references into `refs`, each with its record (as a
+/// frame's); says what each replaced. Holds the folder's lock (`frames::lock`) as a run
+/// does, and refuses to replace a reference that another manifest recorded unless
+/// `force` (references with no record, as older versions blessed them, are replaced).
+pub fn bless(
+    anim: &Animation,
+    frames: &[u32],
+    refs: &Path,
+    force: bool,
+) -> Result<Vec<Blessed>, AnimError> {
     create_dir(refs)?;
+    let _lock = crate::frames::lock::lock(refs, &anim.manifest.path)?;
+    let format = match anim.format().is_layered() {
+        true => ImageFormat::Exr(Default::default()),
+        false => ImageFormat::Png,
+    };
+    if !force {
+        use crate::frames::owner::{owner_as, refusal, Owner};
+        let others: Vec<(PathBuf, Owner)> = frames
+            .iter()
+            .map(|&f| reference_path(anim, refs, f))
+            .map(|p| (owner_as(anim, &p, format), p))
+            .filter(|(o, _)| matches!(o, Owner::Other(_)))
+            .map(|(o, p)| (p, o))
+            .collect();
+        if let Some(refused) = refusal("replaced", &others) {
+            return Err(refused);
+        }
+    }
     frames
         .par_iter()
         .map(|&frame| {
             let path = reference_path(anim, refs, frame);
+            let record = crate::frames::provenance::stamp(
+                anim,
+                frame,
+                crate::frames::provenance::digest(anim, frame),
+            );
             let before = std::fs::read(&path).ok();
             let written = if anim.format().is_layered() {
                 // The float beauty, losslessly: EXR float, ZIP.
@@ -229,10 +260,10 @@ pub fn bless(anim: &Animation, frames: &[u32], refs: &Path) -> Result<Vec<Blesse
                     depth: whitted::output::ExrDepth::Float,
                     ..Default::default()
                 });
-                whitted::output::write_atomic_layers(&path, layers, exr, &[])
+                whitted::output::write_atomic_layers(&path, layers, exr, &record)
             } else {
                 let (image, _) = anim.render(frame)?;
-                write_atomic(&path, &image, ImageFormat::Png)
+                whitted::output::write_atomic_with(&path, &image, ImageFormat::Png, &record)
             };
             written.map_err(|source| AnimError::Write { frame, source })?;
             let changed = before

@@ -71,8 +71,8 @@ pub(super) fn load_reference(
 }
 
 /// Refuses a reference that is missing, unreadable or of another size, from its header
-/// alone (the check's first pass, before anything renders). An EXR reference is only
-/// looked for here; its size is checked when it is read.
+/// alone (the check's first pass, before anything renders; nothing of its pixels is
+/// decoded, so an 8192² reference costs no more than a right one).
 pub(super) fn probe_reference(
     anim: &Animation,
     refs: &Path,
@@ -85,19 +85,21 @@ pub(super) fn probe_reference(
             shown(&path)
         )));
     }
-    if anim.format().is_layered() {
-        return Ok(path);
-    }
     let unreadable = |e: &dyn std::fmt::Display| {
         AnimError::Reference(format!("{}: cannot read it: {e}", shown(&path)))
     };
-    let limit = whitted::limits::MAX_FRAME_BYTES;
-    let (file, _) =
-        whitted::input::open_regular(&path, limit, "reference").map_err(|e| unreadable(&e))?;
-    let reader = image::ImageReader::new(std::io::BufReader::new(file))
-        .with_guessed_format()
-        .map_err(|e| unreadable(&e))?;
-    let (width, height) = reader.into_dimensions().map_err(|e| unreadable(&e))?;
+    let (width, height) = if anim.format().is_layered() {
+        whitted::output::exr_size(&path)
+            .map_err(|e| AnimError::Reference(format!("{}: {e}", shown(&path))))?
+    } else {
+        let limit = whitted::limits::MAX_FRAME_BYTES;
+        let (file, _) =
+            whitted::input::open_regular(&path, limit, "reference").map_err(|e| unreadable(&e))?;
+        let reader = image::ImageReader::new(std::io::BufReader::new(file))
+            .with_guessed_format()
+            .map_err(|e| unreadable(&e))?;
+        reader.into_dimensions().map_err(|e| unreadable(&e))?
+    };
     if (width, height) != (anim.width, anim.height) {
         return Err(AnimError::Reference(format!(
             "frame {frame}: the reference {} is {}×{}, the frame is {}×{}",

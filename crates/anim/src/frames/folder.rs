@@ -7,8 +7,10 @@
 //! - `temporaries`: hidden `.frame_0007.png.XXXXXX.tmp` files (and those of RAW records)
 //!   that a killed run left; a run holding the folder's lock (`lock`) removes them, since
 //!   no other run can be writing them;
-//! - `clean` (`animate clean`): removes both, and the records of removed RAW frames.
+//! - `clean` (`animate clean`): removes both, and the records of removed RAW frames;
+//!   files past the end that are not this manifest's (`owner`) only when forced.
 
+use super::owner::{owner, Owner};
 use super::provenance::{raw_record_path, RAW_RECORDS};
 use crate::error::AnimError;
 use crate::project::Animation;
@@ -93,10 +95,24 @@ pub struct Cleaned {
     pub temporaries: usize,
 }
 
+/// The files among `beyond(anim, dir)` that are not `anim`'s manifest's (another
+/// manifest's frames, files with no record), with their owners.
+pub fn not_ours(anim: &Animation, dir: &Path) -> Vec<(PathBuf, Owner)> {
+    beyond(anim, dir)
+        .into_iter()
+        .map(|(_, p)| {
+            let whose = owner(anim, &p);
+            (p, whose)
+        })
+        .filter(|(_, whose)| matches!(whose, Owner::Other(_) | Owner::Nobody))
+        .collect()
+}
+
 /// Removes from `dir` the files of frames past the end of `anim`'s sequence (with their
 /// RAW records) and the temporaries of killed runs, under the folder's lock: refused
-/// while any other run writes into it (`AnimError::Busy`, `AnimError::InUse`).
-pub fn clean(anim: &Animation, dir: &Path) -> Result<Cleaned, AnimError> {
+/// while any other run writes into it (`AnimError::Busy`, `AnimError::InUse`), and when
+/// a file to remove is not this manifest's (`AnimError::NotOurs`) unless `force`.
+pub fn clean(anim: &Animation, dir: &Path, force: bool) -> Result<Cleaned, AnimError> {
     let held = super::lock::lock(dir, &anim.manifest.path)?;
     if !held.alone() {
         return Err(AnimError::InUse {
@@ -107,6 +123,11 @@ pub fn clean(anim: &Animation, dir: &Path) -> Result<Cleaned, AnimError> {
         dir: dir.to_path_buf(),
         source,
     };
+    if !force {
+        if let Some(refusal) = super::owner::refusal("removed", &not_ours(anim, dir)) {
+            return Err(refusal);
+        }
+    }
     let past = beyond(anim, dir);
     let paths: Vec<PathBuf> = past.iter().map(|(_, p)| p.clone()).collect();
     remove(&paths).map_err(folder)?;

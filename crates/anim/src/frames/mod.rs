@@ -8,7 +8,8 @@
 //! - `provenance`: what made a frame, recorded in the frame file; `status`: which frames
 //!   of a folder are up to date, stale or missing;
 //! - `folder`: what else a frame folder holds (frames past the end, temporaries of
-//!   killed runs) and `animate clean`; `lock`: one run at a time per folder;
+//!   killed runs) and `animate clean`; `lock`: one run at a time per folder; `owner`:
+//!   whose a file under a frame's name is (runs, `clean` and `bless` touch only theirs);
 //! - `video`: ffmpeg, checked before the first frame; `encode`: a rendered folder into a
 //!   video;
 //! - `balance`: shards of equal predicted cost from a small pre-pass; `estimate`: the
@@ -20,6 +21,7 @@ pub mod estimate;
 pub mod events;
 pub mod folder;
 pub mod lock;
+pub mod owner;
 pub mod pipeline;
 pub mod policy;
 pub mod provenance;

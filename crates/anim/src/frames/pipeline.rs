@@ -18,6 +18,7 @@
 use super::events::{Event, Reporter};
 use super::folder;
 use super::lock::lock;
+use super::owner::{self, Owner};
 use super::policy::Policy;
 use super::provenance::{self, raw_record_path, Inspection};
 use super::status;
@@ -113,6 +114,9 @@ enum Found {
     UpToDate,
     /// Recorded by this other manifest: not overwritten unless forced.
     Foreign(String),
+    /// A sound image with no record, which the tool did not write (a photo under the
+    /// frame's name): not overwritten unless forced.
+    Unrecorded(std::path::PathBuf),
     /// Missing, stale or damaged, or the run is not told to look: to render.
     Render,
 }
@@ -137,6 +141,7 @@ fn found(anim: &Animation, dir: &Path, frame: u32, policy: &Policy, ours: Option
     }
     match record.manifest {
         Some(m) if !policy.force && Some(m.as_str()) != ours => Found::Foreign(m),
+        None if !policy.force => Found::Unrecorded(path),
         _ => Found::Render,
     }
 }
@@ -186,15 +191,20 @@ pub(crate) fn render_to_folder(
         .par_iter()
         .map(|&f| found(anim, dir, f, policy, ours.as_deref()))
         .collect();
-    let (mut todo, mut done, mut foreign) = (Vec::new(), Vec::new(), Vec::new());
+    let (mut todo, mut done, mut foreign, mut unrecorded) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     for (&f, seen) in frames.iter().zip(seen) {
         match seen {
             Found::UpToDate => done.push(f),
             Found::Foreign(m) => foreign.push((f, m)),
+            Found::Unrecorded(path) => unrecorded.push((path, Owner::Nobody)),
             Found::Render => todo.push(f),
         }
     }
     refuse_foreign(dir, &foreign)?;
+    if let Some(refusal) = owner::refusal("replaced", &unrecorded) {
+        return Err(refusal);
+    }
     reporter.event(Event::Started {
         total: frames.len(),
         skipped: done.len(),

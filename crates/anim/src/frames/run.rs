@@ -45,6 +45,20 @@ pub fn frames_of(
     Ok(select(anim.manifest.frames, list, shard)?)
 }
 
+/// The frames of a run: `frames_of`, or with `balance` the shard of equal predicted cost
+/// (a 1/8-size pre-pass, traced on the current rayon pool like the render).
+pub fn planned(
+    anim: &Animation,
+    list: Option<&str>,
+    shard: Option<(u32, u32)>,
+    balance: bool,
+) -> Result<Vec<u32>, AnimError> {
+    match balance {
+        true => super::balance::select_balanced(anim, list, shard),
+        false => frames_of(anim, list, shard),
+    }
+}
+
 /// Renders `frames` of `anim` to `destination` (a stream writes into `stream`), keeping
 /// and replacing what `policy` says.
 pub fn render(

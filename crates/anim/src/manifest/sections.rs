@@ -199,6 +199,12 @@ impl Source<'_> {
             .as_ref()
             .map(|a| self.antialias(a, &raw.samples, format))
             .transpose()?;
+        // A size from the scene is checked when the project is loaded.
+        if let (Some(aa), Some(w), Some(h), Some(at)) = (&antialias, width, height, &raw.antialias)
+        {
+            aa.fits(w, h)
+                .map_err(|e| self.error(at.span(), e.to_string()))?;
+        }
         Ok(RenderSpec {
             width,
             height,

@@ -191,6 +191,16 @@ pub(crate) fn half_keeping_byte(c: f64) -> f16 {
     v
 }
 
+/// The size of the first part of the EXR file `read` gives, from its header alone (nothing
+/// of its pixels is read or allocated).
+pub(super) fn header_size(read: impl std::io::Read) -> Result<(u32, u32), String> {
+    let meta = exr::meta::MetaData::read_from_buffered(read, false).map_err(|e| e.to_string())?;
+    let header = meta.headers.first().ok_or("no part in the file")?;
+    let size = header.layer_size;
+    let side = |v: usize| u32::try_from(v).map_err(|_| format!("a side of {v} pixels"));
+    Ok((side(size.width())?, side(size.height())?))
+}
+
 /// The beauty of the EXR file `bytes` as RGB floats, rows top to bottom, with its size
 /// (`read::read_beauty` reads the file).
 pub(super) fn read_beauty(bytes: &[u8]) -> Result<(u32, u32, Vec<[f32; 3]>), String> {

@@ -24,7 +24,7 @@ mod ppm;
 mod raw;
 mod read;
 
-pub use read::{beauty_bytes, read_beauty, read_rgb, ReadError};
+pub use read::{beauty_bytes, exr_size, read_beauty, read_rgb, ReadError};
 
 use crate::passes::{Layers, PassSet};
 use crate::render::Frame;

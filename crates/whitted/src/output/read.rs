@@ -129,11 +129,24 @@ fn ppm_pixels(mut bytes: Vec<u8>, width: u32, height: u32) -> Result<Vec<u8>, Re
 /// The float beauty (RGB, rows top to bottom) of the EXR file `path` of `width`×`height`.
 pub fn read_beauty(path: &Path, width: u32, height: u32) -> Result<Vec<[f32; 3]>, ReadError> {
     let bytes = read_regular(path, MAX_FRAME_BYTES, "frame")?;
+    // The header first: a picture of another size is never decoded (an 8192² reference
+    // would take gigabytes).
+    let (w, h) = super::exr::header_size(bytes.as_slice()).map_err(ReadError::Decode)?;
+    if (w, h) != (width, height) {
+        return Err(size_error(format!("{w}×{h}"), width, height));
+    }
     let (w, h, beauty) = super::exr::read_beauty(&bytes).map_err(ReadError::Decode)?;
     match (w, h) == (width, height) {
         true => Ok(beauty),
         false => Err(size_error(format!("{w}×{h}"), width, height)),
     }
+}
+
+/// The size of the EXR file `path` from its header alone, the file being regular and at
+/// most `MAX_FRAME_BYTES`.
+pub fn exr_size(path: &Path) -> Result<(u32, u32), ReadError> {
+    let (file, _) = crate::input::open_regular(path, MAX_FRAME_BYTES, "frame")?;
+    super::exr::header_size(std::io::BufReader::new(file)).map_err(ReadError::Decode)
 }
 
 /// A float beauty's picture: each channel through the clamp-and-round of §2.

@@ -37,6 +37,7 @@ mod tests;
 
 pub use measure::Measure;
 pub use parse::AntialiasError;
+pub use store::worst_bytes;
 
 /// The deepest subdivision accepted (4096 leaves per pixel at most).
 pub const MAX_DEPTH: u32 = 6;

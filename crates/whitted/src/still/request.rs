@@ -18,6 +18,7 @@ use crate::output::{
     check_target, write_atomic, write_atomic_layers, ExrDepth, ImageFormat, OutputError,
 };
 use crate::passes::{visible::picture, Pass, PassSet};
+use crate::render::adaptive::AntialiasError;
 use crate::render::estimate::Enormous;
 use crate::render::{Adaptive, Antialias};
 use crate::scene::{Scene, SceneError};
@@ -67,6 +68,9 @@ pub enum StillError {
          (or one frame: `animate {0} --frames 0`)"
     )]
     NotAScene(String),
+    /// Adaptive anti-aliasing asked for more than its bounds allow at this size.
+    #[error(transparent)]
+    Antialias(#[from] AntialiasError),
     /// The pass asked for has no picture (it was not recorded).
     #[error("the pass was not drawn")]
     PassNotDrawn,
@@ -76,7 +80,9 @@ impl StillError {
     /// The row of the exit-status table this error belongs to.
     pub fn outcome(&self) -> Outcome {
         match self {
-            StillError::Scene(_) | StillError::NotAScene(_) => Outcome::BadInput,
+            StillError::Scene(_) | StillError::NotAScene(_) | StillError::Antialias(_) => {
+                Outcome::BadInput
+            }
             StillError::Output(o) => o.outcome(),
             StillError::PassNotDrawn => Outcome::Failed,
         }
@@ -166,6 +172,9 @@ impl Job {
             request.size
         };
         (scene.width, scene.height) = size.unwrap_or(native);
+        if let Some(adaptive) = &request.aa {
+            adaptive.fits(scene.width, scene.height)?;
+        }
         let request = request.clone();
         Ok(Job {
             scene,

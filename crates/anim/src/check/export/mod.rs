@@ -59,9 +59,12 @@ impl Sink {
         match self {
             Sink::Stdout => {
                 let mut out = std::io::stdout().lock();
-                out.write_all(bytes)
-                    .and_then(|()| out.flush())
-                    .map_err(ExportError::Stdout)
+                match out.write_all(bytes).and_then(|()| out.flush()) {
+                    // The reader went away (`animate check M | head -1`): the check's
+                    // verdict stands, the other exporters still write their files.
+                    Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+                    other => other.map_err(ExportError::Stdout),
+                }
             }
             Sink::File(path) => write_file(path, bytes),
         }

@@ -211,7 +211,11 @@ impl Item {
                     f(x)
                 }
             }),
-            Step::Stagger(k) => (1..=k).rev().for_each(|s| self.stride(s, f)),
+            // Steps past the span add nothing but the first frame, which the step of the
+            // span itself gives: walk from there, never over the number as typed.
+            Step::Stagger(k) => (1..=k.min(self.span().max(1)))
+                .rev()
+                .for_each(|s| self.stride(s, f)),
         }
     }
 

@@ -84,6 +84,24 @@ pub enum ShardError {
         /// Where the count came from.
         of: String,
     },
+    /// A task count of 0 or past `limits::MAX_SHARDS` (`from` says where it came from:
+    /// `3/4294967295`, `SLURM_ARRAY_TASK_COUNT=…`, `--shards …`).
+    #[error(
+        "shard {from}: the number of tasks must be from 1 to {}, the limit of shards",
+        whitted::limits::MAX_SHARDS
+    )]
+    Count {
+        /// The count as given, with where it came from.
+        from: String,
+    },
+}
+
+/// A task count within `1..=limits::MAX_SHARDS`, or the error naming `from`.
+pub fn bounded_count(count: i128, from: impl FnOnce() -> String) -> Result<u32, ShardError> {
+    match u32::try_from(count) {
+        Ok(n) if (1..=whitted::limits::MAX_SHARDS).contains(&n) => Ok(n),
+        _ => Err(ShardError::Count { from: from() }),
+    }
 }
 
 /// Which part of the frames a task renders.
@@ -110,10 +128,11 @@ impl FromStr for Shard {
         let bad = || ShardError::Syntax(spec.to_string());
         let (k, n) = spec.split_once('/').ok_or_else(bad)?;
         let index: u32 = k.trim().parse().map_err(|_| bad())?;
-        let count: u32 = n.trim().parse().map_err(|_| bad())?;
-        if count == 0 || index >= count {
+        let count: u64 = n.trim().parse().map_err(|_| bad())?;
+        if count == 0 || u64::from(index) >= count {
             return Err(bad());
         }
+        let count = bounded_count(count.into(), || spec.trim().to_string())?;
         Ok(Shard::Part { index, count })
     }
 }
@@ -151,6 +170,7 @@ impl Shard {
                         index: u32::try_from(index).unwrap_or(u32::MAX),
                         count_name: count_name.to_string(),
                     })?;
+                    let n = bounded_count(n.into(), || format!("auto: {count_name} {n}"))?;
                     let of = format!("{count_name} {n}");
                     (index, format!("{var}={index}"), n, of)
                 }
@@ -229,17 +249,19 @@ impl<F: Fn(&str) -> Option<String>> Vars<'_, F> {
         if step > 1 {
             from = format!("({from}) ÷ {SLURM_STEP}={step}");
         }
-        let offset = id - min;
-        let index = if offset % step == 0 {
-            offset / step
-        } else {
-            -1
+        // In i128: ID − MIN of two i64 cannot wrap there.
+        let offset = i128::from(id) - i128::from(min);
+        let step = i128::from(step);
+        let index = match offset % step == 0 {
+            true => i64::try_from(offset / step).unwrap_or(-1),
+            false => -1,
         };
         if index < 0 {
             from.push_str(", not a task of the array");
         }
-        let n = u32::try_from(total).unwrap_or(0);
-        Ok((index, from, n, format!("{SLURM_COUNT}={total}")))
+        let of = format!("{SLURM_COUNT}={total}");
+        let n = bounded_count(total.into(), || format!("auto: {of}"))?;
+        Ok((index, from, n, of))
     }
 }
 

@@ -21,6 +21,39 @@ pub enum AntialiasError {
     /// A depth out of 0..=MAX_DEPTH.
     #[error("the depth must be a whole number from 0 to 6, found {0}")]
     Depth(String),
+    /// A depth and size whose worst case needs more than `limits::MAX_ADAPTIVE_BYTES`.
+    #[error(
+        "adaptive anti-aliasing at depth {depth} on {width}×{height} may need {} MiB for its \
+         samples, more than the limit of {} MiB a frame: lower the depth or the size",
+        bytes >> 20, crate::limits::MAX_ADAPTIVE_BYTES >> 20
+    )]
+    TooLarge {
+        /// The frame's width.
+        width: u32,
+        /// The frame's height.
+        height: u32,
+        /// The depth asked for.
+        depth: u32,
+        /// The worst case (`worst_bytes`).
+        bytes: u64,
+    },
+}
+
+impl Adaptive {
+    /// Whether a `width`×`height` frame at this depth stays within
+    /// `limits::MAX_ADAPTIVE_BYTES` whatever it shows; checked before anything is allocated.
+    pub fn fits(&self, width: u32, height: u32) -> Result<(), AntialiasError> {
+        let bytes = super::worst_bytes(width.into(), height.into(), self.depth);
+        if bytes <= crate::limits::MAX_ADAPTIVE_BYTES {
+            return Ok(());
+        }
+        Err(AntialiasError::TooLarge {
+            width,
+            height,
+            depth: self.depth,
+            bytes,
+        })
+    }
 }
 
 impl Adaptive {

@@ -39,6 +39,22 @@ fn keeps(waiting: usize, bytes: usize) -> bool {
     waiting.saturating_add(bytes) <= SPARE_BYTES
 }
 
+/// The most memory a `width`×`height` frame's store can need at `depth`: when every pixel
+/// splits, every edge of the frame gets its 2^depth − 1 cells (saturating, never wrapping).
+pub fn worst_bytes(width: u64, height: u64, depth: u32) -> u64 {
+    let edges = (height + 1)
+        .saturating_mul(width)
+        .saturating_add(height.saturating_mul(width + 1));
+    let per_edge = (1u64 << depth.min(63)) - 1;
+    let cells = edges.saturating_mul(per_edge);
+    let corners = (width + 1).saturating_mul(height + 1);
+    cells
+        .saturating_mul(std::mem::size_of::<std::sync::OnceLock<Color>>() as u64)
+        .saturating_add(edges.saturating_mul(4))
+        .saturating_add(corners.saturating_mul(std::mem::size_of::<Color>() as u64))
+        .saturating_add(width.saturating_mul(height).saturating_mul(2))
+}
+
 impl Store {
     /// A store for a `width`×`height` frame: a spare one when there is one, its corners
     /// zero and its splits false.
@@ -78,6 +94,18 @@ impl Store {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_worst_case_by_hand() {
+        // 2×1 pixels at depth 1: (1+1)·2 = 4 horizontal and 1·(2+1) = 3 vertical edges,
+        // each 1 cell (32 bytes) and 4 bytes of index; 3·2 corners of 24 bytes; 2 pixels
+        // of 2 flags.
+        assert_eq!(std::mem::size_of::<std::sync::OnceLock<Color>>(), 32);
+        assert_eq!(worst_bytes(2, 1, 1), 7 * 32 + 7 * 4 + 6 * 24 + 2 * 2);
+        // The 4096×2048 at depth 6: 33.8 GB.
+        assert!(worst_bytes(4096, 2048, 6) > 33_000_000_000);
+        assert_eq!(worst_bytes(u64::MAX, u64::MAX, 6), u64::MAX);
+    }
 
     #[test]
     fn a_taken_store_is_sized_and_empty_whatever_it_held() {

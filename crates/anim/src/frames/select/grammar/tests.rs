@@ -99,3 +99,14 @@ fn the_error_message_names_the_column() {
     let e = FrameSpec::parse("1-20x0").unwrap_err();
     assert_eq!(e.to_string(), "the step must not be 0 (column 6)");
 }
+
+#[test]
+fn a_step_past_the_range_is_not_walked() {
+    // Issue 40: `:N` walked N strides, so a huge N never returned. Steps past the span add
+    // only the first frame: `:N` is every frame, coarse to fine; `xN` the first frame.
+    assert_eq!(frames("0-11:9999999999"), frames("0-11:11"));
+    assert_eq!(frames("0-3:9999999999"), [0, 3, 2, 1]);
+    assert_eq!(frames("0-11x9999999999"), [0]);
+    assert_eq!(frames("0-11y9999999999"), (1..=11).collect::<Vec<_>>());
+    assert_eq!(frames("5-5:9223372036854775807"), [5]);
+}

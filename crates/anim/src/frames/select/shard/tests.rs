@@ -151,3 +151,21 @@ fn a_given_shard_must_agree_with_the_count() {
     let slurm = slurm("0", "0", "2");
     assert_eq!(part.resolve(env(&slurm), None, "-n"), Ok((3, 16)));
 }
+
+#[test]
+fn task_counts_are_bounded_and_slurm_ids_do_not_wrap() {
+    // Issue 40: 1/4294967295 took gigabytes in --balance; Slurm's arithmetic wrapped.
+    let e = "1/4294967295".parse::<Shard>().unwrap_err();
+    let limit = "the number of tasks must be from 1 to 1000000, the limit of shards";
+    assert_eq!(e.to_string(), format!("shard 1/4294967295: {limit}"));
+    assert!("1/1000000".parse::<Shard>().is_ok());
+    let e = auto(&slurm("0", "0", "4294967297"), None).unwrap_err();
+    assert!(matches!(e, ShardError::Count { .. }), "{e}");
+    let e = auto(&slurm("0", "0", "-3"), None).unwrap_err();
+    assert!(e.to_string().contains("SLURM_ARRAY_TASK_COUNT=-3"), "{e}");
+    let v = slurm("9223372036854775807", "-9223372036854775808", "4");
+    let e = auto(&v, None).unwrap_err();
+    assert!(matches!(e, ShardError::OutOfRange { index: -1, .. }), "{e}");
+    let e = auto(&[(K8S_INDEX, "0")], Some(0)).unwrap_err();
+    assert!(matches!(e, ShardError::Count { .. }), "{e}");
+}
