@@ -1,8 +1,10 @@
 //! `raytrace [SCENE] [-o OUT] [--size WxH] [--fov DEG] [--roll DEG]
-//! [--samples N | --aa adaptive[:T[:D]]] [--threads N] [--display tev] [--passes LIST] [--pass NAME] [--exr-depth half|float]`: one image from a
-//! Scene.txt, the report's main(). It parses the command line (`cli`), shows a progress
-//! bar, and calls the library (`whitted::still::Job`); exit statuses follow
-//! `whitted::exit` (2 bad input, 1 a failed write, 130/143 stopped by SIGINT/SIGTERM).
+//! [--samples N | --aa adaptive[:T[:D]]] [--threads N] [--display tev] [--passes LIST] [--pass NAME] [--exr-depth half|float]
+//! [--spd] [--stats]`: one image from a Scene.txt (the report's main()) or an NFF file
+//! (`*.nff`; `--spd` draws it by the SPD's testing procedure, `--stats` prints the ray
+//! counts as a JSON line last on standard error). It parses the command line (`cli`),
+//! shows a progress bar, and calls the library (`whitted::still::Job`); exit statuses
+//! follow `whitted::exit` (2 bad input, 1 a failed write, 130/143 stopped by SIGINT/SIGTERM).
 
 #[path = "raytrace/cli.rs"]
 mod cli;

@@ -228,3 +228,56 @@ fn the_sphereflake_manifest_orbits_about_z() {
     );
     assert!(dir.path().join("frame_0000.png").is_file());
 }
+
+#[test]
+fn tracks_move_nff_spheres_and_lights_and_the_circle_keeps_z_up() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::copy(still_life(), dir.path().join("still-life.nff")).unwrap();
+    let manifest = write(
+        dir.path(),
+        "m.toml",
+        r#"scene = "still-life.nff"
+frames = 4
+fps = 25
+[camera]
+path = "circle"
+center = [0.0, 0.0, 0.8]
+radius = 6.0
+height = 2.5
+turns = 0.25
+[[track]]
+target = "sphere 1 center"
+keys = [ { frame = 0, value = [-1.2, 0.5, 1.0] }, { frame = 3, value = [-1.2, 0.5, 2.5] } ]
+[[track]]
+target = "light 1 intensity"
+keys = [ { frame = 0, value = 0.35 }, { frame = 3, value = 1.0 } ]
+[output]
+dir = "out"
+"#,
+    );
+    let project = whitted_anim::Project::load(&manifest).unwrap_or_else(|e| panic!("{e}"));
+    let last = project.timeline.at(3.0);
+    // The floor's two triangles come first: sphere 1 is the third object.
+    assert_eq!(last.scene.specs[2].kind(), "sphere");
+    assert_eq!(
+        last.scene.specs[2].anchor(),
+        glam::DVec3::new(-1.2, 0.5, 2.5)
+    );
+    assert_eq!(last.scene.lights[0].intensity, 1.0);
+    // Frame 3 of 4 on a quarter turn is θ = 67.5° about z from the −y side, at z = 2.5:
+    // (6·sin θ, −6·cos θ, 2.5).
+    let (sin, cos) = 67.5f64.to_radians().sin_cos();
+    let want = glam::DVec3::new(6.0 * sin, -6.0 * cos, 2.5);
+    assert!((last.eye - want).length() < 1e-12, "{}", last.eye);
+    let run = animate().arg(&manifest).arg("-q").output().unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let out = dir.path().join("out");
+    assert_ne!(
+        pixels(&out.join("frame_0000.png")),
+        pixels(&out.join("frame_0003.png"))
+    );
+}

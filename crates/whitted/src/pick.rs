@@ -92,7 +92,10 @@ impl MaterialInfo {
 /// 0) hits first, or `None` when it hits nothing (or the pixel is outside the camera's
 /// image).
 pub fn pick(tracer: &Tracer, camera: &Camera, x: u32, y: u32) -> Option<Pick> {
-    let ray = camera.ray(f64::from(x) + 0.5, f64::from(y) + 0.5);
+    // With the scene's epsilon, as the tracer's camera rays have it.
+    let ray = camera
+        .ray(f64::from(x) + 0.5, f64::from(y) + 0.5)
+        .with_t_min(tracer.scene().t_min);
     let (t, index) = tracer.nearest_index(&ray)?;
     let scene = tracer.scene();
     let obj = scene.objects.get(index)?;

@@ -105,3 +105,29 @@ fn nff_by_extension() {
     assert!(is_nff(Path::new("a/balls.nff")) && is_nff(Path::new("X.NFF")));
     assert!(!is_nff(Path::new("Scene.txt")) && !is_nff(Path::new("nff")));
 }
+
+#[test]
+fn every_prefix_and_line_deletion_is_read_or_refused_without_a_panic() {
+    let src = format!(
+        "{VIEW}b 0.1 0.2 0.3\nl 1 2 3\nl 4 5 6 0.5 0.5 0.5\nf 1 0 0 0.7 0.3 20 0.5 1.5\n\
+         s 0 0 1 0.5\np 5\n-1 -1 0\n1 -1 0\n0 0 0\n1 1 0\n-1 1 0\nc 0 0 0 0.2 0 0 2 0.1\n\
+         pp 3\n0 0 3 0 0 1\n1 0 3 0 0 1\n0 1 3 0 0 1\ns 1e308 -1e308 0 -1e300\n"
+    );
+    let mut read = 0;
+    for end in 0..=src.len() {
+        if src.is_char_boundary(end) {
+            read += parse(&src[..end], "t.nff").is_ok() as usize;
+        }
+    }
+    let lines: Vec<&str> = src.lines().collect();
+    for k in 0..lines.len() {
+        let mut v = lines.clone();
+        v.remove(k);
+        let _ = parse(&v.join("\n"), "t.nff");
+        // And a line's tokens swapped for nonsense.
+        let mut w = lines.clone();
+        w[k] = "1e309 -0 nan x 0 0 0";
+        assert!(parse(&w.join("\n"), "t.nff").is_err(), "line {k}");
+    }
+    assert!(read > 10, "{read}");
+}
