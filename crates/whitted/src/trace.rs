@@ -20,13 +20,15 @@
 //! the recorder and the hooks sit behind `R::ACTIVE`, so the beauty-only path, which
 //! passes `NoRecord`, compiles to the code it had before passes existed.
 
+pub mod rules;
+pub use rules::Rules;
+
 use crate::accel::{Accel, Hint, LightBuffer};
 use crate::object::Object;
 use crate::optics::{reflect, refract, Ray};
 pub use crate::record::{NoRecord, Record};
 use crate::scene::Scene;
 use crate::shading::{self, Occluders};
-use crate::spd::Rules;
 use crate::texture::Color;
 use glam::DVec3;
 use std::sync::Arc;

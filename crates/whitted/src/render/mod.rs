@@ -17,6 +17,7 @@ use rayon::prelude::*;
 
 pub mod adaptive;
 pub mod control;
+pub mod corners;
 pub mod estimate;
 pub mod layers;
 pub use adaptive::{render_add_with, render_with, Adaptive, Antialias};
