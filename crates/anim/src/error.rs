@@ -215,9 +215,7 @@ impl AnimError {
             AnimError::Write { .. }
             | AnimError::Stream(_)
             | AnimError::Stdout(_)
-            | AnimError::Ffmpeg(_) => {
-                Outcome::Failed
-            }
+            | AnimError::Ffmpeg(_) => Outcome::Failed,
             AnimError::Interrupted(sig) => Outcome::Interrupted(*sig),
         }
     }

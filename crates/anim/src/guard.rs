@@ -77,9 +77,13 @@ mod tests {
         std::fs::write(&theirs, "<x/>").unwrap();
         let inputs = [input.clone()];
         let why = |p: &Path, force| output(p, &inputs, JUNIT, force).map_err(|e| e.to_string());
-        assert!(why(&input, true).unwrap_err().contains("an input of this run"));
+        assert!(why(&input, true)
+            .unwrap_err()
+            .contains("an input of this run"));
         assert!(why(dir.path(), true).unwrap_err().contains("is a folder"));
-        assert!(why(&theirs, false).unwrap_err().contains("not written by animate"));
+        assert!(why(&theirs, false)
+            .unwrap_err()
+            .contains("not written by animate"));
         assert_eq!(why(&theirs, true), Ok(()));
         assert_eq!(why(&mine, false), Ok(()));
         assert_eq!(why(&dir.path().join("new.xml"), false), Ok(()));

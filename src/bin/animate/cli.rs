@@ -110,4 +110,3 @@ impl Common {
         Project::load(self.manifest.as_deref().unwrap_or(Path::new("")))
     }
 }
-

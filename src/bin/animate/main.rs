@@ -46,12 +46,9 @@ fn view(args: ViewArgs) -> anyhow::Result<Outcome> {
         port: args.port,
         threads: args.threads,
     };
-    let stop = whitted_anim::process::watch_signals("animate");
-    let sig = whitted_anim::view::serve(&options, &stop, &|url| {
-        let m = args.manifest.display();
-        eprintln!("animate: view of {m} at {url} (Ctrl-C to stop)");
-        whitted_anim::view::print_url(url);
-    })?;
+    let stop = whitted_anim::process::watch_signals_quietly();
+    let ready = |url: &str| report::view_ready(&args.manifest, url, args.bind);
+    let sig = whitted_anim::view::serve(&options, &stop, &ready)?;
     Ok(Outcome::Interrupted(sig))
 }
 
@@ -59,12 +56,16 @@ fn bless(args: BlessArgs) -> anyhow::Result<Outcome> {
     let (c, project) = (&args.common, args.common.load()?);
     let anim = Animation::new(&project)?;
     let (list, refs) = (c.frames.as_deref(), args.references.as_deref());
-    let (frames, refs) = check::targets(&project.manifest, list, refs).map_err(report::with_flags)?;
+    let (frames, refs) =
+        check::targets(&project.manifest, list, refs).map_err(report::with_flags)?;
     let bless = || check::bless(&anim, &frames, &refs, args.force);
     let blessed = pool(c.threads)?.install(bless)?;
     if !c.quiet {
         let (n, counts) = (blessed.len(), check::bless_counts(&blessed));
-        eprintln!("animate: blessed {n} reference(s) in {}: {counts}", shown(&refs));
+        eprintln!(
+            "animate: blessed {n} reference(s) in {}: {counts}",
+            shown(&refs)
+        );
     }
     Ok(Outcome::Success)
 }

@@ -247,8 +247,11 @@ pub fn bless(
         .par_iter()
         .map(|&frame| {
             let path = reference_path(anim, refs, frame);
-            let record =
-                crate::frames::provenance::stamp(anim, frame, crate::frames::provenance::digest(anim, frame));
+            let record = crate::frames::provenance::stamp(
+                anim,
+                frame,
+                crate::frames::provenance::digest(anim, frame),
+            );
             let before = std::fs::read(&path).ok();
             let written = if anim.format().is_layered() {
                 // The float beauty, losslessly: EXR float, ZIP.

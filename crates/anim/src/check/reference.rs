@@ -89,7 +89,8 @@ pub(super) fn probe_reference(
         AnimError::Reference(format!("{}: cannot read it: {e}", shown(&path)))
     };
     let (width, height) = if anim.format().is_layered() {
-        whitted::output::exr_size(&path).map_err(|e| AnimError::Reference(format!("{}: {e}", shown(&path))))?
+        whitted::output::exr_size(&path)
+            .map_err(|e| AnimError::Reference(format!("{}: {e}", shown(&path))))?
     } else {
         let limit = whitted::limits::MAX_FRAME_BYTES;
         let (file, _) =

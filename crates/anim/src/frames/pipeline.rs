@@ -191,7 +191,8 @@ pub(crate) fn render_to_folder(
         .par_iter()
         .map(|&f| found(anim, dir, f, policy, ours.as_deref()))
         .collect();
-    let (mut todo, mut done, mut foreign, mut unrecorded) = (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut todo, mut done, mut foreign, mut unrecorded) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     for (&f, seen) in frames.iter().zip(seen) {
         match seen {
             Found::UpToDate => done.push(f),

@@ -88,4 +88,3 @@ impl CheckArgs {
         junit.chain(html).collect()
     }
 }
-

@@ -110,7 +110,6 @@ pub struct CleanArgs {
     pub force: bool,
 }
 
-
 impl StatusArgs {
     /// The library's request.
     pub fn request(&self) -> StatusRequest {

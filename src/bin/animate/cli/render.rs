@@ -138,4 +138,3 @@ fn stream_format(s: &str) -> Result<ImageFormat, String> {
         _ => Err("expected raw, ppm or png".into()),
     }
 }
-

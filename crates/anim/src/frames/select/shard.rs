@@ -86,7 +86,10 @@ pub enum ShardError {
     },
     /// A task count of 0 or past `limits::MAX_SHARDS` (`from` says where it came from:
     /// `3/4294967295`, `SLURM_ARRAY_TASK_COUNT=…`, `--shards …`).
-    #[error("shard {from}: the number of tasks must be from 1 to {}, the limit of shards", whitted::limits::MAX_SHARDS)]
+    #[error(
+        "shard {from}: the number of tasks must be from 1 to {}, the limit of shards",
+        whitted::limits::MAX_SHARDS
+    )]
     Count {
         /// The count as given, with where it came from.
         from: String,
