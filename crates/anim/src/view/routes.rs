@@ -63,6 +63,9 @@ impl Reply {
     }
 }
 
+/// An `/api/status` body, with the generation and folder fingerprint it was made from.
+pub type CachedStatus = ((u64, u64), Vec<u8>);
+
 /// What the routes share.
 pub struct Context {
     /// The project, reloaded as it changes.
@@ -74,7 +77,7 @@ pub struct Context {
     /// The address the server is bound to.
     pub bound: SocketAddr,
     /// The last `/api/status` body and what it was computed from.
-    pub status: std::sync::Mutex<Option<((u64, u64), Vec<u8>)>>,
+    pub status: std::sync::Mutex<Option<CachedStatus>>,
 }
 
 /// Whether `host` (a `Host` header) names this server: `IP:PORT` of the bound address,
