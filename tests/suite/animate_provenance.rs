@@ -163,7 +163,7 @@ fn status_reports_missing_foreign_and_broken_frames() {
     let table = String::from_utf8_lossy(&out.stdout);
     assert!(table.contains("missing:       2  4-5"), "{table}");
     // The still under frame 10's name has no record: not the tool's, so --resume refuses
-    // to replace it (issue 40) until told to.
+    // to replace it (reliability round three) until told to.
     let out = animate().arg(&manifest).arg("--resume").output().unwrap();
     assert_eq!(out.status.code(), Some(2));
     let out = animate()

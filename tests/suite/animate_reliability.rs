@@ -149,7 +149,7 @@ fn frames_past_a_shortened_sequence_are_reported_and_cleaned() {
     assert!(text.contains(" up to date:      10  0-9\n"), "{text}");
     assert!(text.contains("   past end:      10  10-19  ("), "{text}");
     // Frames 10-19 record anim.toml, not ten.toml: clean removes another manifest's
-    // frames only when forced (issue 40).
+    // frames only when forced (reliability round three).
     let out = animate().arg("clean").arg(&ten).output().unwrap();
     assert_eq!(out.status.code(), Some(2));
     let out = animate()

@@ -69,6 +69,16 @@ pub fn pool(threads: Option<u32>) -> Result<rayon::ThreadPool, rayon::ThreadPool
 /// at once, from a watcher thread (a signal handler itself only sets flags); a second
 /// signal ends the process at once with 128 + N.
 pub fn watch_signals(name: &'static str) -> Arc<AtomicUsize> {
+    watch(Some(name))
+}
+
+/// `watch_signals` for a process that renders no frames of its own run (`animate view`):
+/// no "stopping: N frames in progress" line, the flag alone.
+pub fn watch_signals_quietly() -> Arc<AtomicUsize> {
+    watch(None)
+}
+
+fn watch(name: Option<&'static str>) -> Arc<AtomicUsize> {
     use signal_hook::consts::{SIGINT, SIGTERM};
     let stop = Arc::new(AtomicUsize::new(0));
     let seen = Arc::new(AtomicBool::new(false));
@@ -82,6 +92,9 @@ pub fn watch_signals(name: &'static str) -> Arc<AtomicUsize> {
         std::thread::spawn(move || {
             if let Some(sig) = signals.forever().next() {
                 whitted::render::control::cancel(sig as usize);
+                let Some(name) = name else {
+                    return;
+                };
                 let n = whitted::render::control::frames_in_progress();
                 let frames = if n == 1 { "frame" } else { "frames" };
                 eprintln!(

@@ -46,12 +46,9 @@ fn view(args: ViewArgs) -> anyhow::Result<Outcome> {
         port: args.port,
         threads: args.threads,
     };
-    let stop = whitted_anim::process::watch_signals("animate");
-    let sig = whitted_anim::view::serve(&options, &stop, &|url| {
-        let m = args.manifest.display();
-        eprintln!("animate: view of {m} at {url} (Ctrl-C to stop)");
-        whitted_anim::view::print_url(url);
-    })?;
+    let stop = whitted_anim::process::watch_signals_quietly();
+    let ready = |url: &str| report::view_ready(&args.manifest, url, args.bind);
+    let sig = whitted_anim::view::serve(&options, &stop, &ready)?;
     Ok(Outcome::Interrupted(sig))
 }
 

@@ -203,6 +203,22 @@ pub fn warn_if_enormous(anim: &Animation, frames: &[u32]) {
     }
 }
 
+/// The view's first lines: where it listens (standard error, with a warning when it
+/// listens on every interface) and its URL alone on standard output, for scripts.
+pub fn view_ready(manifest: &std::path::Path, url: &str, bind: std::net::IpAddr) {
+    eprintln!(
+        "animate: view of {} at {url} (Ctrl-C to stop)",
+        manifest.display()
+    );
+    if bind.is_unspecified() {
+        eprintln!(
+            "animate: warning: listening on every interface ({bind}): whoever can reach this \
+             machine can see the scene and make it render"
+        );
+    }
+    whitted_anim::view::print_url(url);
+}
+
 /// The one-line summary: frames, wall time, frames/s, rays/s, where they went.
 pub fn summary(s: &Summary, start: Instant, place: &str) {
     let secs = start.elapsed().as_secs_f64().max(1e-9);

@@ -71,8 +71,27 @@ pub fn relative_to(path: &Path, base: &Path) -> std::path::PathBuf {
     out
 }
 
+/// Whether `text` can stand in a template as it is: no control character (OpenJD refuses
+/// them) and no `{{` or `}}` (a format string would read them as an expression).
+fn plain(text: &str) -> bool {
+    !text.chars().any(char::is_control) && !text.contains("{{") && !text.contains("}}")
+}
+
+/// `text` made plain (see [`plain`]): each control character and brace becomes `_`, and it
+/// is cut to `max` characters (OpenJD's names are at most 128).
+fn escaped(text: &str, max: usize) -> String {
+    text.chars()
+        .map(|c| match c.is_control() || c == '{' || c == '}' {
+            true => '_',
+            false => c,
+        })
+        .take(max)
+        .collect()
+}
+
 /// A PATH job parameter; its default only when it stays inside the template's folder
-/// (OpenJD refuses defaults that walk up), else the job must be given it (`-p NAME=…`).
+/// (OpenJD refuses defaults that walk up) and is plain text, else the job must be given it
+/// (`-p NAME=…`).
 fn path_param(name: &str, kind: &str, flow: &str, path: &Path) -> Value {
     let mut p = json!({"name": name, "type": "PATH", "objectType": kind, "dataFlow": flow});
     let inside = path.components().all(|c| {
@@ -81,7 +100,7 @@ fn path_param(name: &str, kind: &str, flow: &str, path: &Path) -> Value {
             std::path::Component::Normal(_) | std::path::Component::CurDir
         )
     });
-    if inside {
+    if inside && plain(&path.display().to_string()) {
         p["default"] = path.display().to_string().into();
     }
     p
@@ -150,8 +169,8 @@ pub fn openjd_template(
     json!({
         "specificationVersion": "jobtemplate-2023-09",
         "extensions": ["TASK_CHUNKING"],
-        "name": format!("animate {name}"),
-        "description": format!("Render {} frames of {} with animate, then encode them.", frames.len(), manifest_path.display()),
+        "name": escaped(&format!("animate {name}"), 128),
+        "description": escaped(&format!("Render {} frames of {} with animate, then encode them.", frames.len(), manifest_path.display()), 2048),
         "parameterDefinitions": params,
         "steps": steps,
     })

@@ -21,6 +21,8 @@ use std::time::Duration;
 
 /// Events closer together than this are one change.
 pub const DEBOUNCE: Duration = Duration::from_millis(20);
+/// The longest a burst of events delays a reload, however long it lasts.
+pub const MAX_BURST: Duration = Duration::from_millis(250);
 
 /// One load of the manifest.
 #[derive(Clone)]
@@ -146,9 +148,14 @@ pub fn watch(live: Arc<Live>) -> notify::Result<()> {
         .spawn(move || {
             while let Ok(event) = rx.recv() {
                 let mut hit = touches(&event, &files);
-                // Debounce: take every event of the burst before loading once.
-                while let Ok(more) = rx.recv_timeout(DEBOUNCE) {
-                    hit |= touches(&more, &files);
+                // Debounce: take the events of the burst before loading once, but never
+                // longer than `MAX_BURST`: a folder under constant writes would starve it.
+                let end = std::time::Instant::now() + MAX_BURST;
+                while let Some(left) = end.checked_duration_since(std::time::Instant::now()) {
+                    match rx.recv_timeout(left.min(DEBOUNCE)) {
+                        Ok(more) => hit |= touches(&more, &files),
+                        Err(_) => break,
+                    }
                 }
                 if hit {
                     live.reload();

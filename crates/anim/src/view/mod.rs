@@ -116,12 +116,16 @@ fn respond(request: tiny_http::Request, reply: Reply) {
 fn handle(ctx: &Context, request: tiny_http::Request, instead: Option<&str>) {
     let method = request.method().as_str().to_string();
     let target = instead.unwrap_or(request.url()).to_string();
-    let host = request
-        .headers()
-        .iter()
-        .find(|h| h.field.equiv("Host"))
-        .map(|h| h.value.as_str().to_string());
-    let reply = answer(ctx, &method, &target, host.as_deref());
+    let header = |name: &'static str| {
+        (request.headers().iter())
+            .find(|h| h.field.equiv(name))
+            .map(|h| h.value.as_str().to_string())
+    };
+    let (host, origin, site) = (header("Host"), header("Origin"), header("Sec-Fetch-Site"));
+    let reply = match routes::cross_site(origin.as_deref(), site.as_deref(), ctx.bound) {
+        Some(refused) => refused,
+        None => answer(ctx, &method, &target, host.as_deref()),
+    };
     respond(request, reply);
 }
 
@@ -154,6 +158,7 @@ pub fn serve(
         frames: frames::Frames::new(Arc::clone(&pool)),
         pool,
         bound,
+        status: std::sync::Mutex::new(None),
     });
     let (tx, rx) = mpsc::sync_channel::<tiny_http::Request>(QUEUE);
     let rx = Arc::new(std::sync::Mutex::new(rx));
@@ -187,7 +192,11 @@ pub fn serve(
         };
         let wait = request.url().starts_with("/api/wait");
         if wait && waiters.load(Ordering::SeqCst) >= WAITERS {
-            handle(&ctx, request, Some("/api/state"));
+            // Answering with the state at once would send the page straight back: a
+            // client loop at full speed. 503 with a delay instead.
+            let mut busy = Reply::error(503, "too many long polls held at once: retry in a second");
+            busy.headers.push(("Retry-After", "1".into()));
+            respond(request, busy);
             continue;
         }
         if wait {

@@ -63,6 +63,9 @@ impl Reply {
     }
 }
 
+/// An `/api/status` body, with the generation and folder fingerprint it was made from.
+pub type CachedStatus = ((u64, u64), Vec<u8>);
+
 /// What the routes share.
 pub struct Context {
     /// The project, reloaded as it changes.
@@ -73,6 +76,8 @@ pub struct Context {
     pub pool: Arc<rayon::ThreadPool>,
     /// The address the server is bound to.
     pub bound: SocketAddr,
+    /// The last `/api/status` body and what it was computed from.
+    pub status: std::sync::Mutex<Option<CachedStatus>>,
 }
 
 /// Whether `host` (a `Host` header) names this server: `IP:PORT` of the bound address,
@@ -97,6 +102,34 @@ pub fn host_ok(host: &str, bound: SocketAddr) -> bool {
     }
 }
 
+/// The refusal of a request another site's page made (an `<img>`, a `fetch`, a form):
+/// `Sec-Fetch-Site` other than `same-origin` or `none` (a browser's own navigation), or
+/// an `Origin` that is not this server's. Such a request is answered 403 before anything
+/// is rendered, whatever its method.
+pub fn cross_site(
+    origin: Option<&str>,
+    fetch_site: Option<&str>,
+    bound: SocketAddr,
+) -> Option<Reply> {
+    if let Some(site) = fetch_site {
+        if !matches!(site.trim(), "same-origin" | "none") {
+            return Some(Reply::error(
+                403,
+                format!("a request from another site (Sec-Fetch-Site: {site}): refused"),
+            ));
+        }
+    }
+    let origin = origin?.trim();
+    let host = origin.strip_prefix("http://");
+    match host.filter(|h| !h.contains('/') && host_ok(h, bound)) {
+        Some(_) => None,
+        None => Some(Reply::error(
+            403,
+            format!("a request from another origin ({origin}): refused"),
+        )),
+    }
+}
+
 /// The query's value of `key` (the last one given).
 fn param<'q>(query: &'q str, key: &str) -> Option<&'q str> {
     query
@@ -112,11 +145,17 @@ fn number(query: &str, key: &str, lo: u32, hi: u32, default: Option<u32>) -> Res
     let Some(text) = param(query, key) else {
         return default.ok_or_else(|| Reply::error(400, format!("missing parameter `{key}`")));
     };
+    let digits = !text.is_empty() && text.bytes().all(|b| b.is_ascii_digit());
     match text.parse::<u32>() {
         Ok(v) if (lo..=hi).contains(&v) => Ok(v),
         Ok(v) => Err(Reply::error(
             400,
             format!("`{key}` = {v} is out of range: expected {lo} to {hi}"),
+        )),
+        // A whole number too large for any range: say so, not "not a whole number".
+        Err(_) if digits => Err(Reply::error(
+            400,
+            format!("`{key}` = {text} is out of range: expected {lo} to {hi}"),
         )),
         Err(_) => Err(Reply::error(
             400,
@@ -264,13 +303,51 @@ fn strip(ctx: &Context) -> Reply {
         Err(e) => return Reply::error(422, format!("animate: {e}")),
     };
     let dir = &p.manifest.output.dir;
+    // The states hash every RAW frame: computed again only when the project or a file of
+    // the folder (its name, size or time) changed since the last answer.
+    let key = (loaded.generation, folder_fingerprint(dir));
+    if let Ok(cached) = ctx.status.lock() {
+        if let Some((_, body)) = cached.as_ref().filter(|(k, _)| *k == key) {
+            return Reply::bytes(200, "application/json", body.to_vec());
+        }
+    }
     let frames: Vec<u32> = (0..p.manifest.frames).collect();
     let states = ctx.pool.install(|| states(&anim, dir, &frames, false));
-    Reply::json(
+    let reply = Reply::json(
         200,
         json!({"generation": loaded.generation, "folder": dir.display().to_string(),
                "states": states}),
-    )
+    );
+    if let Ok(mut cached) = ctx.status.lock() {
+        *cached = Some((key, reply.body.to_vec()));
+    }
+    reply
+}
+
+/// A hash of the names, sizes and modification times of the files of `dir` and of its
+/// RAW records: it changes whenever a frame is written, replaced or removed.
+fn folder_fingerprint(dir: &std::path::Path) -> u64 {
+    use std::hash::{Hash, Hasher};
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    for d in [
+        dir.to_path_buf(),
+        dir.join(crate::frames::provenance::RAW_RECORDS),
+    ] {
+        let mut entries: Vec<(std::ffi::OsString, u64, Option<std::time::SystemTime>)> =
+            std::fs::read_dir(&d)
+                .into_iter()
+                .flatten()
+                .flatten()
+                .map(|e| {
+                    let meta = e.metadata().ok();
+                    let len = meta.as_ref().map_or(0, |m| m.len());
+                    (e.file_name(), len, meta.and_then(|m| m.modified().ok()))
+                })
+                .collect();
+        entries.sort();
+        entries.hash(&mut h);
+    }
+    h.finish()
 }
 
 #[cfg(test)]

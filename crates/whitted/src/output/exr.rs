@@ -234,14 +234,14 @@ pub(super) fn read_beauty(bytes: &[u8]) -> Result<(u32, u32, Vec<[f32; 3]>), Str
 }
 
 /// The string attributes of the header of the EXR file `file` reads, of `width`×`height`,
-/// from one reading, when it is whole (its header reads, with that size, and every chunk
-/// its offset table names is there and readable); `None` otherwise.
+/// when it is whole (its header reads, with that size, and its offset table and blocks
+/// are consistent: `exr_offsets`); `None` otherwise.
 pub fn texts_if_whole(
-    file: impl std::io::Read + std::io::Seek,
+    mut file: impl std::io::Read + std::io::Seek,
     width: u32,
     height: u32,
 ) -> Option<Vec<(String, String)>> {
-    let reader = exr::block::reader::Reader::read_from_buffered(file, false).ok()?;
+    let reader = exr::block::reader::Reader::read_from_buffered(&mut file, false).ok()?;
     let header = reader.headers().first()?;
     if header.layer_size != Vec2(width as usize, height as usize) {
         return None;
@@ -258,8 +258,10 @@ pub fn texts_if_whole(
             _ => None,
         })
         .collect();
-    let chunks = reader.all_chunks(false).ok()?;
-    chunks.into_iter().all(|c| c.is_ok()).then_some(texts)
+    drop(reader);
+    file.rewind().ok()?;
+    super::exr_offsets::check(&mut file).ok()?;
+    Some(texts)
 }
 
 #[cfg(test)]

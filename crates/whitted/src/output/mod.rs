@@ -18,6 +18,7 @@
 //! place, so a file under its final name is always complete.
 
 pub mod exr;
+mod exr_offsets;
 mod jpeg;
 pub(crate) mod png;
 mod ppm;

@@ -103,6 +103,7 @@ async function follow() {
   for (;;) {
     try {
       const r = await fetch(`/api/wait?since=${view.gen}`);
+      if (!r.ok) throw new Error(`wait: ${r.status}`); // busy: retry after a pause
       const s = await r.json();
       if (s.generation !== view.gen) {
         applyState(s);

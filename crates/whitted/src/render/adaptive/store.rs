@@ -102,7 +102,7 @@ mod tests {
         // of 2 flags.
         assert_eq!(std::mem::size_of::<std::sync::OnceLock<Color>>(), 32);
         assert_eq!(worst_bytes(2, 1, 1), 7 * 32 + 7 * 4 + 6 * 24 + 2 * 2);
-        // The 4096×2048 at depth 6: 33.8 GB.
+        // 4096×2048 at depth 6, the attack's request: 33.8 GB.
         assert!(worst_bytes(4096, 2048, 6) > 33_000_000_000);
         assert_eq!(worst_bytes(u64::MAX, u64::MAX, 6), u64::MAX);
     }

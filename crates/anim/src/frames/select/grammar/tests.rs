@@ -102,7 +102,7 @@ fn the_error_message_names_the_column() {
 
 #[test]
 fn a_step_past_the_range_is_not_walked() {
-    // Issue 40: `:N` walked N strides, so a huge N never returned. Steps past the span add
+    // Reliability round three: `:N` walked N strides, so a huge N never returned. Steps past the span add
     // only the first frame: `:N` is every frame, coarse to fine; `xN` the first frame.
     assert_eq!(frames("0-11:9999999999"), frames("0-11:11"));
     assert_eq!(frames("0-3:9999999999"), [0, 3, 2, 1]);

@@ -154,7 +154,7 @@ fn a_given_shard_must_agree_with_the_count() {
 
 #[test]
 fn task_counts_are_bounded_and_slurm_ids_do_not_wrap() {
-    // Issue 40: 1/4294967295 took gigabytes in --balance; Slurm's arithmetic wrapped.
+    // Reliability round three: 1/4294967295 took gigabytes in --balance; Slurm's arithmetic wrapped.
     let e = "1/4294967295".parse::<Shard>().unwrap_err();
     let limit = "the number of tasks must be from 1 to 1000000, the limit of shards";
     assert_eq!(e.to_string(), format!("shard 1/4294967295: {limit}"));
