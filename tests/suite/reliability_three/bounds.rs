@@ -1,5 +1,5 @@
-//! Points 1 and 2 of reliability round three: a step past its range, and sizes, depths and counts
-//! bounded before anything is allocated.
+//! Points 1 and 2 of reliability round three: a step past its range, and sizes, depths
+//! and counts bounded before anything is allocated.
 
 use super::{run, text, PROMPT};
 use crate::support::*;

@@ -1,5 +1,5 @@
-//! Points 3 and 4 of reliability round three: runs, `clean` and `bless` touch only their manifest's
-//! files; reports and templates do not overwrite inputs or others' files.
+//! Points 3 and 4 of reliability round three: runs, `clean` and `bless` touch only their
+//! manifest's files; reports and templates do not overwrite inputs or others' files.
 
 use super::{run, PROMPT};
 use crate::support::*;

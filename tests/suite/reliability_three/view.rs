@@ -1,5 +1,5 @@
-//! Points 6 and 9 of reliability round three: `view` and other sites' pages, long polls, the debounce,
-//! Ctrl-C and every interface.
+//! Points 6 and 9 of reliability round three: `view` and other sites' pages, the status
+//! cache, long polls, the debounce, Ctrl-C and every interface.
 
 use super::PROMPT;
 use crate::support::*;
@@ -83,17 +83,6 @@ fn long_polls_past_the_limit_wait_instead_of_spinning() {
     use std::io::Write;
     let (_dir, _m, v) = viewer();
     let host = format!("127.0.0.1:{}", v.port);
-    let (_, state) = v.json("/api/state");
-    let since = state["generation"].as_u64().unwrap();
-    // 32 held long polls (the server holds them 20 s), each on a `view-wait` thread.
-    let held: Vec<std::net::TcpStream> = (0..32)
-        .map(|_| {
-            let mut s = std::net::TcpStream::connect(("127.0.0.1", v.port)).unwrap();
-            let req = format!("GET /api/wait?since={since} HTTP/1.1\r\nHost: {host}\r\n\r\n");
-            s.write_all(req.as_bytes()).unwrap();
-            s
-        })
-        .collect();
     let waiting = || {
         let tasks = std::fs::read_dir(format!("/proc/{}/task", v.child.id())).unwrap();
         let comm = |t: &std::fs::DirEntry| std::fs::read_to_string(t.path().join("comm"));
@@ -102,8 +91,26 @@ fn long_polls_past_the_limit_wait_instead_of_spinning() {
             .filter(|t| comm(t).is_ok_and(|c| c.trim() == "view-wait"))
             .count()
     };
-    let all_held = poll_until(PROMPT, || waiting() == 32);
-    assert!(all_held.is_some(), "{} waiting", waiting());
+    // 32 held long polls (the server holds them 20 s), each on a `view-wait` thread. A
+    // late reload of the freshly written project answers them at once: then again.
+    let mut tries = 0;
+    let (held, since) = loop {
+        let (_, state) = v.json("/api/state");
+        let since = state["generation"].as_u64().unwrap();
+        let held: Vec<std::net::TcpStream> = (0..32)
+            .map(|_| {
+                let mut s = std::net::TcpStream::connect(("127.0.0.1", v.port)).unwrap();
+                let req = format!("GET /api/wait?since={since} HTTP/1.1\r\nHost: {host}\r\n\r\n");
+                s.write_all(req.as_bytes()).unwrap();
+                s
+            })
+            .collect();
+        if poll_until(Duration::from_secs(10), || waiting() == 32).is_some() {
+            break (held, since);
+        }
+        tries += 1;
+        assert!(tries < 5, "{} waiting", waiting());
+    };
     // Answered at once with the state, the page came straight back: a loop at full speed.
     let r = v.get(&format!("/api/wait?since={since}"));
     assert_eq!(r.status, 503, "{}", r.text());
@@ -162,4 +169,35 @@ fn view_says_nothing_of_frames_on_ctrl_c_and_warns_on_every_interface() {
         "{err}"
     );
     assert!(!err.contains("in progress"), "{err}");
+}
+
+#[test]
+fn the_folder_status_is_hashed_once_until_the_folder_changes() {
+    // 24 RAW frames of 640×480: 22 MB that every call of /api/status used to hash.
+    let manifest = circle_manifest("\n[render]\nwidth = 640\nheight = 480\n")
+        .replace("frames = 12", "frames = 24")
+        .replace("format = \"png\"", "format = \"raw\"");
+    let (dir, m) = project(&manifest);
+    let (code, _, err) = super::run(&[&m, &"-q"]);
+    assert_eq!(code, Some(0), "{err}");
+    let v = Viewer::start(&m, &[]);
+    let strip = |v: &Viewer| {
+        let (status, doc) = v.json("/api/status");
+        assert_eq!(status, 200, "{doc}");
+        doc["states"].clone()
+    };
+    let first = strip(&v);
+    let before = cpu_time(v.child.id());
+    for _ in 0..40 {
+        assert_eq!(strip(&v), first);
+    }
+    let spent = cpu_time(v.child.id()) - before;
+    // Hashing 40 × 22 MB takes seconds of CPU (SHA-256 at about 0.5-2 GB/s).
+    assert!(
+        spent < Duration::from_millis(300),
+        "{spent:?} of CPU for 40 calls"
+    );
+    // A frame removed is seen at once.
+    std::fs::remove_file(dir.path().join("frames/frame_0005.raw")).unwrap();
+    assert_ne!(strip(&v), first);
 }
