@@ -3,7 +3,7 @@
 //! a step that spun forever, sizes checked after the memory was taken, files that were
 //! not the tool's removed or overwritten, broken pipes, cross-site requests to `view`,
 //! EXR offset tables, OpenJD names, and the smaller ones (`bounds`: points 1-2;
-//! `ownership`: 3-4; `pipes`: 5; `view`: 6 and 9; `exr_openjd`: 7-8), then the property
+//! `ownership`: 3-4; `pipes`: 5; `view`: 6 and 9, `tev`: 9's viewer that never reads; `exr_openjd`: 7-8), then the property
 //! test of the validators (`properties`).
 
 use crate::support;
@@ -16,6 +16,7 @@ mod exr_openjd;
 mod ownership;
 mod pipes;
 mod properties;
+mod tev;
 mod view;
 
 /// Long enough for a loaded two-core machine to render twelve 64×48 frames; the fault

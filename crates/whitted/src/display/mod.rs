@@ -65,7 +65,7 @@ impl Tev {
         let conn = match conn {
             Ok(s) => {
                 let _ = s.set_nodelay(true);
-                let _ = s.set_write_timeout(Some(Duration::from_secs(5)));
+                let _ = s.set_write_timeout(Some(SEND_LIMIT));
                 Some(s)
             }
             Err(e) => {
@@ -101,7 +101,7 @@ impl Tev {
             return;
         };
         if let Some(s) = guard.as_mut() {
-            if let Err(e) = s.write_all(packet) {
+            if let Err(e) = write_within(s, packet, SEND_LIMIT) {
                 (self.warn)(&format!(
                     "the tev viewer at {} went away ({e}); rendering goes on without it",
                     self.addr
@@ -137,6 +137,34 @@ impl Tev {
             self.send(&packet::update_rgb(name, 0, y, width, h, chunk));
         }
     }
+}
+
+/// The longest one packet may take to send: a viewer that reads nothing for this long is
+/// given up for the rest of the run.
+pub const SEND_LIMIT: Duration = Duration::from_secs(5);
+
+/// Writes `buf` whole within `limit` in all. A write timeout alone bounds each `write`
+/// call, and a viewer that reads a little now and then lets every call return a few
+/// bytes just before its timeout: `write_all` then took a timeout per trickle (15.7 s
+/// for six frames to a viewer that never read).
+fn write_within(s: &mut TcpStream, mut buf: &[u8], limit: Duration) -> std::io::Result<()> {
+    use std::io::{Error, ErrorKind};
+    let start = std::time::Instant::now();
+    while !buf.is_empty() {
+        let left = limit.saturating_sub(start.elapsed());
+        if left.is_zero() {
+            let why = format!("it read nothing for {} s", limit.as_secs());
+            return Err(Error::new(ErrorKind::TimedOut, why));
+        }
+        s.set_write_timeout(Some(left))?;
+        match s.write(buf) {
+            Ok(0) => return Err(Error::from(ErrorKind::WriteZero)),
+            Ok(n) => buf = &buf[n..],
+            Err(e) if e.kind() == ErrorKind::Interrupted => {}
+            Err(e) => return Err(e),
+        }
+    }
+    Ok(())
 }
 
 fn resolve(addr: &str) -> Result<SocketAddr, String> {
