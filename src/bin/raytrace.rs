@@ -1,5 +1,5 @@
 //! `raytrace [SCENE] [-o OUT] [--size WxH] [--fov DEG] [--roll DEG]
-//! [--samples N | --aa adaptive[:T[:D]]] [--threads N] [--display tev] [--passes LIST] [--pass NAME] [--exr-depth half|float]`: one image from a
+//! [--samples N | --aa adaptive[:T[:D]]] [--threads N] [--display tev] [--passes LIST] [--pass NAME] [--exr-depth half|float] [--colour srgb|linear]`: one image from a
 //! Scene.txt, the report's main(). It parses the command line (`cli`), shows a progress
 //! bar, and calls the library (`whitted::still::Job`); exit statuses follow
 //! `whitted::exit` (2 bad input, 1 a failed write, 130/143 stopped by SIGINT/SIGTERM).

@@ -10,7 +10,7 @@
 //! - `folder`: what else a frame folder holds (frames past the end, temporaries of
 //!   killed runs) and `animate clean`; `lock`: one run at a time per folder;
 //! - `video`: ffmpeg, checked before the first frame; `encode`: a rendered folder into a
-//!   video;
+//!   video; `tags`: its BT.709 matrix and colour tags;
 //! - `balance`: shards of equal predicted cost from a small pre-pass; `estimate`: the
 //!   predicted cost and time of a render.
 
@@ -26,4 +26,5 @@ pub mod provenance;
 pub mod run;
 pub mod select;
 pub mod status;
+pub mod tags;
 pub mod video;

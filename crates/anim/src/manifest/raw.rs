@@ -137,6 +137,7 @@ pub(super) struct RawOutput {
     pub exr_depth: Option<Spanned<String>>,
     pub exr_compression: Option<Spanned<String>>,
     pub passes: Option<Spanned<Vec<Spanned<String>>>>,
+    pub colour: Option<Spanned<String>>,
 }
 
 #[derive(Deserialize)]

@@ -141,6 +141,7 @@ const OUTPUT: Place = Place {
         ("exr_depth", Value),
         ("exr_compression", Value),
         ("passes", Value),
+        ("colour", Value),
     ]],
 };
 
@@ -314,7 +315,8 @@ mod tests {
         assert_eq!(
             found[2].1,
             "output: unknown key `fromat` (did you mean `format`?); [output] takes `dir`, \
-             `name`, `format`, `jpeg_quality`, `exr_depth`, `exr_compression`, `passes`"
+             `name`, `format`, `jpeg_quality`, `exr_depth`, `exr_compression`, `passes`, \
+             `colour`"
         );
     }
 
