@@ -28,6 +28,7 @@ mod balance;
 mod check_bounded;
 mod check_browser;
 mod check_reports;
+mod colour_tags;
 mod degenerate_geometry;
 mod docs_commands;
 mod docs_examples;

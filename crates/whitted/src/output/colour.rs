@@ -195,8 +195,9 @@ mod tests {
         assert_eq!(decode(0.02), 0.02 / 12.92);
         assert!((decode(0.04045) - 0.0031308).abs() < 1e-7);
         assert_eq!((decode(0.0), decode(1.0)), (0.0, 1.0));
-        // Past 1 along the curve: ((2 + 0.055)/1.055)^2.4 = 4.9535.
-        assert!((decode(2.0) - 4.953_5).abs() < 1e-4, "{}", decode(2.0));
+        // Past 1 along the curve: ((2 + 0.055)/1.055)^2.4 = 1.947867^2.4
+        // = e^(2.4·0.666710) = e^1.600104 = 4.95385.
+        assert!((decode(2.0) - 4.953_85).abs() < 1e-5, "{}", decode(2.0));
         assert_eq!(decode(-0.5), -decode(0.5));
         for k in -100..=400 {
             let v = f64::from(k) / 200.0;
