@@ -30,6 +30,7 @@ mod check_browser;
 mod check_reports;
 mod colour_tags;
 mod degenerate_geometry;
+mod directing;
 mod docs_commands;
 mod docs_examples;
 mod exit_status;

@@ -125,6 +125,7 @@ pub(super) struct RawKey {
     pub frame: Spanned<i64>,
     pub position: Vec3,
     pub look_at: Option<Vec3>,
+    pub ease: Option<Spanned<String>>,
 }
 
 #[derive(Deserialize)]

@@ -23,7 +23,7 @@ fn unknown_keys_are_located_and_the_valid_ones_named() {
     let src = TOUR.replace("{ frame = 120,", "{ frame = 120, fov = 2,");
     assert_eq!(
         refusal(&src),
-        "10:18: camera.keys[1]: unknown key `fov`; a spline key takes `frame`, `position`, `look_at`"
+        "10:18: camera.keys[1]: unknown key `fov`; a spline key takes `frame`, `position`, `ease`, `look_at`"
     );
 }
 

@@ -109,7 +109,10 @@ const ANY_CAMERA: Place = Place {
 
 const SPLINE_KEY: Place = Place {
     name: "a spline key",
-    groups: &[&[("frame", Value), ("position", Value)], LOOK_AT],
+    groups: &[
+        &[("frame", Value), ("position", Value), ("ease", Value)],
+        LOOK_AT,
+    ],
 };
 
 const TRACK: Place = Place {

@@ -67,7 +67,7 @@ impl Source<'_> {
         }
     }
 
-    fn name_of<T>(
+    pub(super) fn name_of<T>(
         &self,
         v: &Option<Spanned<String>>,
         what: &str,
