@@ -183,11 +183,14 @@ fn sort_header(bytes: &mut [u8]) -> Result<(), &'static str> {
     Ok(())
 }
 
+/// A beauty as an EXR file stores it: width, height, RGB rows top to bottom, encoding.
+pub(super) type Stored = (u32, u32, Vec<[f32; 3]>, Colour);
+
 /// The beauty of the EXR file `bytes` as stored (RGB, rows top to bottom), with its size
 /// and its encoding: its `whitted:colour`, or `Linear` when the header has no such
 /// attribute (frames written before it held the values as they are). `read` reads the
 /// file.
-pub(super) fn read_beauty(bytes: &[u8]) -> Result<(u32, u32, Vec<[f32; 3]>, Colour), String> {
+pub(super) fn read_beauty(bytes: &[u8]) -> Result<Stored, String> {
     let image = read()
         .no_deep_data()
         .largest_resolution_level()
