@@ -147,8 +147,9 @@ impl Source<'_> {
         let lens = self.lens(raw.fov.as_ref(), raw.roll.as_ref())?;
         let mut keys = Vec::with_capacity(raw.keys.get_ref().len());
         for key in raw.keys.get_ref() {
+            let span = key.span();
             let key = key.get_ref();
-            let frame = self.key_frame(&key.frame, frames)?;
+            let (frame, _) = self.key_when(key.frame.as_ref(), key.time.as_ref(), span, frames)?;
             let position = self.point(&key.position, "position")?;
             let key_look_at = match &key.look_at {
                 Some(v) => Some(self.point(v, "look_at")?),
@@ -182,7 +183,14 @@ fn spline_error_span(raw: &RawSpline, e: &SplineError) -> std::ops::Range<usize>
     let keys = raw.keys.get_ref();
     let key = |index: usize| keys.get(index);
     let span = match e {
-        SplineError::FrameOrder { index, .. } => key(*index).map(|k| k.get_ref().frame.span()),
+        SplineError::FrameOrder { index, .. } => key(*index).map(|k| {
+            let when = (k.get_ref().frame.as_ref().map(|f| f.span())).or(k
+                .get_ref()
+                .time
+                .as_ref()
+                .map(|t| t.span()));
+            when.unwrap_or(k.span())
+        }),
         SplineError::MixedLookAt { index }
         | SplineError::BadCoordinate { index }
         | SplineError::EaseWithConstantSpeed { index } => key(*index).map(|k| k.span()),

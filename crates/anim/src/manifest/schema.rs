@@ -110,7 +110,12 @@ const ANY_CAMERA: Place = Place {
 const SPLINE_KEY: Place = Place {
     name: "a spline key",
     groups: &[
-        &[("frame", Value), ("position", Value), ("ease", Value)],
+        &[
+            ("frame", Value),
+            ("time", Value),
+            ("position", Value),
+            ("ease", Value),
+        ],
         LOOK_AT,
     ],
 };
@@ -131,7 +136,12 @@ const TRACK: Place = Place {
 
 const TRACK_KEY: Place = Place {
     name: "a track key",
-    groups: &[&[("frame", Value), ("value", Value), ("ease", Value)]],
+    groups: &[&[
+        ("frame", Value),
+        ("time", Value),
+        ("value", Value),
+        ("ease", Value),
+    ]],
 };
 
 const OUTPUT: Place = Place {
