@@ -1,6 +1,6 @@
 //! `raytrace [SCENE] [-o OUT] [--size WxH] [--fov DEG] [--roll DEG]
 //! [--samples N | --aa adaptive[:T[:D]]] [--threads N] [--display tev] [--passes LIST] [--pass NAME] [--exr-depth half|float]
-//! [--spd] [--stats]`: one image from a Scene.txt (the report's main()) or an NFF file
+//! [--colour srgb|linear] [--spd] [--stats]`: one image from a Scene.txt (the report's main()) or an NFF file
 //! (`*.nff`; `--spd` draws it by the SPD's testing procedure, `--stats` prints the ray
 //! counts as a JSON line last on standard error). It parses the command line (`cli`),
 //! shows a progress bar, and calls the library (`whitted::still::Job`); exit statuses

@@ -37,12 +37,13 @@ fn depth_position_and_normal_at_hand_computed_pixels_of_one_sphere() {
     let ch = exr_channels(&out);
     let at = |name: &str, i: usize, j: usize| f64::from(ch[name][j * 5 + i]);
     // Centre pixel (2, 2): the ray is −z exactly; it meets the sphere at t = 4, p = (0, 0, 1),
-    // N = +z, depth (along the view axis) 4, albedo the sphere's colour.
+    // N = +z, depth (along the view axis) 4, albedo the sphere's colour (0.4 green) decoded
+    // to linear light like the beauty: ((0.4 + 0.055)/1.055)^2.4 = 0.1328683.
     assert!((at("Z", 2, 2) - 4.0).abs() < 1e-6);
     for (name, want) in [("P.X", 0.0), ("P.Y", 0.0), ("P.Z", 1.0), ("N.Z", 1.0)] {
         assert!((at(name, 2, 2) - want).abs() < 1e-6, "{name}");
     }
-    assert!((at("albedo.G", 2, 2) - 0.4).abs() < 1e-6);
+    assert!((at("albedo.G", 2, 2) - 0.132_868_3).abs() < 1e-6);
     // Pixel (1, 2): d = (−0.1, 0, −1)/|·|; |e + t·d|² = 1 with e = (0, 0, 5) gives
     // t = 5·|d_z| − sqrt(25·d_z² − 24); p = e + t·d is its own normal; depth = t·|d_z|.
     let d = ray_dir(1.0, 2.0);
@@ -75,7 +76,10 @@ fn depth_position_and_normal_at_hand_computed_pixels_of_one_sphere() {
 }
 
 #[test]
-fn the_beauty_rounds_to_the_png_at_one_sample_in_half_and_float() {
+fn the_beauty_in_srgb_is_the_png_at_one_sample_in_half_and_float() {
+    // The beauty holds the display values decoded to linear light: its sRGB encoding,
+    // clamped and rounded, is the PNG's byte, exactly (the stored value is chosen so);
+    // `--colour linear` stores the values as they are, whose clamp-and-round is the byte.
     let dir = tempfile::tempdir().unwrap();
     let scene = scene_txt(dir.path(), [1.0, 3.0, 8.0]);
     raytrace()
@@ -86,26 +90,43 @@ fn the_beauty_rounds_to_the_png_at_one_sample_in_half_and_float() {
         .assert()
         .success();
     let png = pixels(&dir.path().join("a.png"));
-    for depth in ["half", "float"] {
-        let out = dir.path().join(format!("a-{depth}.exr"));
+    let linear_byte = |v: f32| (f64::from(v).clamp(0.0, 1.0) * 255.0).round() as u8;
+    for (depth, colour) in [
+        ("half", "srgb"),
+        ("float", "srgb"),
+        ("half", "linear"),
+        ("float", "linear"),
+    ] {
+        let out = dir.path().join(format!("a-{depth}-{colour}.exr"));
         raytrace()
             .arg(&scene)
             .arg("-o")
             .arg(&out)
-            .args(["--exr-depth", depth, "-q"])
+            .args(["--exr-depth", depth, "--colour", colour, "-q"])
             .assert()
             .success();
         let ch = exr_channels(&out);
-        let byte = |v: f32| (f64::from(v).clamp(0.0, 1.0) * 255.0).round() as u8;
+        let byte = |v: f32| match colour {
+            "srgb" => srgb_byte(v),
+            _ => linear_byte(v),
+        };
         let bytes: Vec<u8> = (0..png.len() / 3)
             .flat_map(|k| ["R", "G", "B"].map(|c| byte(ch[c][k])))
             .collect();
-        assert_eq!(bytes, png, "{depth}");
+        assert_eq!(bytes, png, "{depth} {colour}");
         // The tracer's values, not the bytes over 255.
         assert!(
             ch["R"].iter().any(|v| (v * 255.0).fract().abs() > 1e-3),
             "{depth}"
         );
+        // Linear light is darker than the display value it shows (0 < v < 1).
+        let (lin, shown) = (
+            ch["R"][png.len() / 6],
+            f32::from(png[png.len() / 2]) / 255.0,
+        );
+        if colour == "srgb" && shown > 0.1 && shown < 0.9 {
+            assert!(lin < shown - 0.05, "{lin} shows as {shown}");
+        }
     }
 }
 

@@ -1,7 +1,8 @@
 //! An EXR manifest (`format = "exr"`) through `animate check`, `animate preview`,
 //! `--video` and `animate encode` (SPEC §12, §2): check compares the float beauties with
 //! float limits (a difference below one 8-bit level still counts), preview and the videos
-//! take the frames through the clamp-and-round, so they are the PNG manifest's pictures.
+//! take the frames' sRGB encoding through the clamp-and-round, so they are the PNG
+//! manifest's pictures.
 //! The video tests need ffmpeg: without it they say "skipped" and pass, except under CI.
 
 use crate::skip;
@@ -101,8 +102,9 @@ fn video_and_encode_of_an_exr_manifest_are_its_clamped_beauty() {
     }
     let (dir, m) = project(&manifest("exr", 3, ""));
     animate().arg(&m).arg("-q").assert().success();
-    // round(255·clamp(v)) of each frame's beauty, computed here from the EXR files.
-    let to_byte = |v: f32| (f64::from(v).clamp(0.0, 1.0) * 255.0).round() as u8;
+    // round(255·clamp(sRGB(v))) of each frame's beauty, computed here from the EXR files
+    // (the beauty is linear light; the video shows what an sRGB view shows).
+    let to_byte = srgb_byte;
     let (mut want, mut above_one) = (Vec::new(), 0);
     for f in 0..3 {
         let [r, g, b] = beauty(&dir.path().join(format!("frames/frame_{f:04}.exr")));

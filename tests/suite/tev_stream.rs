@@ -1,7 +1,9 @@
 //! `--display tev`: a test server written from tev's IPC protocol (`include/tev/Ipc.h`,
 //! `src/Ipc.cpp`: u32 size, u8 type, payload) decodes what `raytrace` and `animate`
 //! stream and reassembles the frame, which must equal the `.raw` file byte for byte
-//! (floats back to bytes as round(255·f), the inverse of the b/255 sent); the packets
+//! (floats back to bytes as tev's sRGB view shows them: the sent floats are linear light,
+//! what an EXR frame holds); an EXR manifest's frames arrive as its files hold them, as
+//! they are under `colour = "linear"`; the packets
 //! PyPI's `tevclient` (the official client) sends for the same image decode to the same
 //! bytes; a missing viewer is one warning and the render goes on.
 
@@ -66,10 +68,15 @@ impl Reader<'_> {
 }
 
 fn to_byte(f: f32) -> u8 {
-    (f.clamp(0.0, 1.0) * 255.0).round() as u8
+    support::srgb_byte(f)
 }
 
 impl Image {
+    /// The floats of channel `name`.
+    fn floats(&self, name: &str) -> &[f32] {
+        &self.data[self.channels.iter().position(|c| c == name).unwrap()]
+    }
+
     fn rgb(&self) -> Vec<u8> {
         let at = |name: &str| self.channels.iter().position(|c| c == name).unwrap();
         let (r, g, b) = (at("R"), at("G"), at("B"));
@@ -265,6 +272,47 @@ fn animate_sends_every_frame_of_an_exr_manifest() {
 }
 
 #[test]
+fn tev_receives_what_the_exr_frame_holds_in_either_colour() {
+    // The default EXR holds linear light: tev's floats show the file's bytes in an sRGB
+    // view and sit within a level of the file's values. `colour = "linear"` stores and
+    // sends the values as they are: b/255 for the file's clamp-and-round b.
+    for colour in ["", "colour = \"linear\"\n"] {
+        let extra = colour;
+        let (dir, manifest) = project(&circle_manifest(extra).replace("\"png\"", "\"exr\""));
+        let (port, got) = server();
+        let out = animate()
+            .arg(&manifest)
+            .args(["--frames", "0", "-q", "-o"])
+            .arg(dir.path().join("exr"))
+            .args(["--display", &format!("tev=127.0.0.1:{port}")])
+            .output()
+            .unwrap();
+        stdout_ok(out);
+        let seen = decode(&got.join().unwrap());
+        let img = seen.images.values().next().expect("an image");
+        let file = exr_channels(&dir.path().join("exr/frame_0000.exr"));
+        let mut compared = 0;
+        for c in ["R", "G", "B"] {
+            for (k, (&sent, &held)) in img.floats(c).iter().zip(&file[c]).enumerate() {
+                let held = held.clamp(0.0, 1.0);
+                if colour.is_empty() {
+                    assert_eq!(srgb_byte(sent), srgb_byte(held), "{c} {k}");
+                    assert!((sent - held).abs() < 0.01, "{c} {k}: {sent} vs {held}");
+                } else {
+                    let byte = (held * 255.0).round();
+                    assert!(
+                        (sent - byte / 255.0).abs() < 1e-7,
+                        "{c} {k}: {sent} vs {held}"
+                    );
+                }
+                compared += 1;
+            }
+        }
+        assert_eq!(compared, 64 * 48 * 3);
+    }
+}
+
+#[test]
 fn tevclient_packets_decode_the_same() {
     if !skip::have("python3", &["-c", "import tevclient, numpy"]) {
         return;
@@ -282,9 +330,11 @@ fn tevclient_packets_decode_the_same() {
     let script = format!(
         "import numpy as np, tevclient\n\
          b = np.fromfile('x.raw', dtype=np.uint8).reshape(61, 97, 3)\n\
+         v = b / 255.0\n\
+         lin = np.where(v <= 0.04045, v / 12.92, ((v + 0.055) / 1.055) ** 2.4)\n\
          with tevclient.Ipc('127.0.0.1', {port}) as tev:\n\
          \x20   tev.create_image('x', 97, 61, ['R', 'G', 'B'])\n\
-         \x20   tev.update_image('x', b.astype(np.float32) / np.float32(255), ['R', 'G', 'B'])\n"
+         \x20   tev.update_image('x', lin.astype(np.float32), ['R', 'G', 'B'])\n"
     );
     let ran = Command::new("python3")
         .args(["-c", &script])

@@ -54,6 +54,7 @@ mod schema;
 mod sections;
 mod source;
 mod tracks;
+mod when;
 
 use source::{CameraParts, Source};
 
@@ -193,14 +194,24 @@ impl Manifest {
         let src = std::str::from_utf8(&bytes).map_err(|e| {
             let good = std::str::from_utf8(&bytes[..e.valid_up_to()]).unwrap_or_default();
             let message = "the manifest is not UTF-8 text: this byte cannot be read";
-            Source { text: good, path }.error(good.len()..good.len(), message)
+            let fps = DEFAULT_FPS;
+            Source {
+                text: good,
+                path,
+                fps,
+            }
+            .error(good.len()..good.len(), message)
         })?;
         Manifest::parse(src, path)
     }
 
     /// Parses manifest text; `path` is where it came from (for errors and relative paths).
     pub fn parse(src: &str, path: &Path) -> Result<Manifest, ManifestError> {
-        let source = Source { text: src, path };
+        let mut source = Source {
+            text: src,
+            path,
+            fps: DEFAULT_FPS,
+        };
         let unknown = schema::unknown_keys(src);
         if !unknown.is_empty() {
             let found = unknown
@@ -210,6 +221,11 @@ impl Manifest {
             return Err(ManifestError::Unknown(found));
         }
         let probe: Probe = source.deserialize()?;
+        source.fps = match &probe.fps {
+            Some(toml::Value::Float(f)) => *f,
+            Some(toml::Value::Integer(i)) => *i as f64,
+            _ => DEFAULT_FPS,
+        };
         let camera_loc = source.loc(probe.camera.as_ref().map_or(0..0, |c| c.span()));
         let kind = probe
             .camera

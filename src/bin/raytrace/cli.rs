@@ -6,6 +6,7 @@ use clap::Parser;
 use std::path::PathBuf;
 use whitted::camera::Lens;
 use whitted::display::Display;
+use whitted::output::colour::Colour;
 use whitted::output::ExrDepth;
 use whitted::passes::{Pass, PassSet};
 use whitted::render::Adaptive;
@@ -14,7 +15,9 @@ use whitted::still::Request;
 const AFTER_HELP: &str = "\
 Formats, by OUT's extension: .png, .jpg/.jpeg (quality 90), .ppm (binary P6), .raw (the
 report's headerless RGB bytes, rows top to bottom), .exr (OpenEXR: the beauty unclamped,
-half unless --exr-depth float, and the --passes asked for; docs/exr.md). OUT defaults to
+in linear light (the display values decoded with the sRGB curve, unless --colour linear),
+with alpha (coverage, not premultiplied), half unless --exr-depth float, and the --passes
+asked for; docs/exr.md). PNGs are tagged sRGB. OUT defaults to
 the scene's path with .png, beside the scene file (raytrace sub/t.txt writes sub/t.png).
 --spd renders 512×512 by the SPD's testing procedure; --stats prints
 {\"eye\":…,\"eye_hits\":…,\"reflect\":…,\"refract\":…,\"shadow\":…,\"wall_s\":…,\"cpu_s\":…}
@@ -72,6 +75,10 @@ pub struct Args {
     /// The sample type of an .exr beauty.
     #[arg(long, value_name = "DEPTH", value_parser = parse_depth)]
     pub exr_depth: Option<ExrDepth>,
+    /// How an .exr stores colours: `srgb` (default: the display values decoded to linear
+    /// light, so a viewer's sRGB view shows the PNG's look) or `linear` (as they are).
+    #[arg(long, value_name = "srgb|linear", value_parser = parse_colour)]
+    pub colour: Option<Colour>,
     /// Print nothing on success.
     #[arg(short, long)]
     pub quiet: bool,
@@ -108,6 +115,7 @@ impl Args {
             passes: self.passes,
             pass: self.pass,
             exr_depth: self.exr_depth,
+            colour: self.colour,
             display: self.display.clone(),
             spd: self.spd,
         }
@@ -154,6 +162,10 @@ fn parse_passes(s: &str) -> Result<PassSet, String> {
     }
     let list: Result<Vec<Pass>, String> = s.split(',').map(|p| parse_pass(p.trim())).collect();
     Ok(PassSet::of(&list?))
+}
+
+fn parse_colour(s: &str) -> Result<Colour, String> {
+    Colour::from_name(s).ok_or_else(|| format!("expected srgb or linear, found {s:?}"))
 }
 
 fn parse_depth(s: &str) -> Result<ExrDepth, String> {

@@ -38,3 +38,16 @@ pub fn exr_channels(path: &Path) -> HashMap<String, Vec<f32>> {
         })
         .collect()
 }
+
+/// The byte an sRGB view shows of a linear value: the sRGB encoding (IEC 61966-2-1,
+/// written here from the standard: 12.92·v up to 0.0031308, else 1.055·v^(1/2.4) − 0.055)
+/// of the value clamped to 0..1, times 255, rounded.
+pub fn srgb_byte(v: f32) -> u8 {
+    let v = f64::from(v).clamp(0.0, 1.0);
+    let e = if v <= 0.0031308 {
+        12.92 * v
+    } else {
+        1.055 * v.powf(1.0 / 2.4) - 0.055
+    };
+    (e * 255.0).round() as u8
+}

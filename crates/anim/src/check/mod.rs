@@ -254,10 +254,13 @@ pub fn bless(
             );
             let before = std::fs::read(&path).ok();
             let written = if anim.format().is_layered() {
-                // The float beauty, losslessly: EXR float, ZIP.
-                let (layers, _) = anim.render_layers(frame, whitted::passes::PassSet::NONE)?;
+                // The tracer's float beauty, losslessly and as it is (check compares
+                // it bit for bit): EXR float, ZIP, `colour = "linear"`, no alpha.
+                let (mut layers, _) = anim.render_layers(frame, whitted::passes::PassSet::NONE)?;
+                layers.alpha = None;
                 let exr = ImageFormat::Exr(whitted::output::ExrOptions {
                     depth: whitted::output::ExrDepth::Float,
+                    colour: whitted::output::colour::Colour::Linear,
                     ..Default::default()
                 });
                 whitted::output::write_atomic_layers(&path, layers, exr, &record)

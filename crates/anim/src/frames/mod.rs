@@ -11,7 +11,7 @@
 //!   killed runs) and `animate clean`; `lock`: one run at a time per folder; `owner`:
 //!   whose a file under a frame's name is (runs, `clean` and `bless` touch only theirs);
 //! - `video`: ffmpeg, checked before the first frame; `encode`: a rendered folder into a
-//!   video;
+//!   video; `tags`: its BT.709 matrix and colour tags;
 //! - `balance`: shards of equal predicted cost from a small pre-pass; `estimate`: the
 //!   predicted cost and time of a render.
 
@@ -28,4 +28,5 @@ pub mod provenance;
 pub mod run;
 pub mod select;
 pub mod status;
+pub mod tags;
 pub mod video;

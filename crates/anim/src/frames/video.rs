@@ -3,8 +3,12 @@
 //!
 //! ```text
 //! ffmpeg -y -loglevel error -f rawvideo -pix_fmt rgb24 -s WxH -r FPS -i - \
-//!        -vf pad=ceil(iw/2)*2:ceil(ih/2)*2 [-c:v CODEC] [-crf N] -pix_fmt yuv420p .FILE.XXXXXX.EXT
+//!        -vf pad=ceil(iw/2)*2:ceil(ih/2)*2,scale=out_color_matrix=bt709:out_range=tv \
+//!        [-c:v CODEC] [-crf N] -pix_fmt yuv420p BT.709 TAGS [-movflags +faststart] \
+//!        .FILE.XXXXXX.EXT
 //! ```
+//!
+//! The BT.709 matrix, tags and `faststart` are `tags`'.
 //!
 //! ffmpeg writes a hidden temporary beside FILE, renamed onto FILE when it succeeds: an
 //! interrupted, killed or failing encode leaves the previous FILE as it was. An existing
@@ -156,17 +160,22 @@ impl Ffmpeg {
         let mut cmd = Command::new("ffmpeg");
         cmd.args(["-y", "-nostdin", "-loglevel", "error", "-f", "rawvideo"])
             .args(["-pix_fmt", "rgb24", "-s", &format!("{width}x{height}")])
-            .args(["-r", &fps.to_string(), "-i", "-"])
-            .args(["-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2"]);
+            .args(["-r", &fps.to_string(), "-i", "-"]);
+        let pix_fmt = encoding.pix_fmt.as_deref().unwrap_or("yuv420p");
+        let pad = "pad=ceil(iw/2)*2:ceil(ih/2)*2";
+        match super::tags::filter(pix_fmt) {
+            Some(scale) => cmd.args(["-vf", &format!("{pad},{scale}")]),
+            None => cmd.args(["-vf", pad]),
+        };
         if let Some(codec) = &encoding.codec {
             cmd.args(["-c:v", codec]);
         }
         if let Some(crf) = encoding.crf {
             cmd.args(["-crf", &crf.to_string()]);
         }
-        let pix_fmt = encoding.pix_fmt.as_deref().unwrap_or("yuv420p");
         let mut child = cmd
             .args(["-pix_fmt", pix_fmt])
+            .args(super::tags::options(pix_fmt, &ext))
             .arg(&temp)
             .stdin(Stdio::piped())
             .stdout(Stdio::null())

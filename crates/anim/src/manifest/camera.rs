@@ -12,6 +12,7 @@
 //! [camera]
 //! path = "spline"            # closed and constant_speed default to false
 //! keys = [ { frame = 0, position = [0.0, 3.0, 12.0], look_at = [0.0, 1.0, 0.0] }, ... ]
+//!                            # a key may ease the segment it starts: ease = "in" (`Ease`)
 //!
 //! [camera]                   # no path: the scene file's eye holds still
 //! look_at = "sphere 2"       # any camera may follow an object (or look at [x, y, z])
@@ -22,7 +23,7 @@
 use super::raw::{RawCircle, RawSpline, RawStill, Vec3};
 use super::{CameraParts, ManifestError, Source};
 use crate::timeline::LookAt;
-use crate::timeline::{coord_ok, CameraPath, Circle, Key, Spline, SplineError};
+use crate::timeline::{coord_ok, CameraPath, Circle, Ease, Key, Spline, SplineError};
 use glam::DVec3;
 use toml::Spanned;
 use whitted::camera::{Lens, MAX_ROLL};
@@ -150,17 +151,20 @@ impl Source<'_> {
         let lens = self.lens(raw.fov.as_ref(), raw.roll.as_ref())?;
         let mut keys = Vec::with_capacity(raw.keys.get_ref().len());
         for key in raw.keys.get_ref() {
+            let span = key.span();
             let key = key.get_ref();
-            let frame = self.key_frame(&key.frame, frames)?;
+            let (frame, _) = self.key_when(key.frame.as_ref(), key.time.as_ref(), span, frames)?;
             let position = self.point(&key.position, "position")?;
             let key_look_at = match &key.look_at {
                 Some(v) => Some(self.point(v, "look_at")?),
                 None => None,
             };
+            let ease = self.name_of(&key.ease, "ease", &Ease::NAMES, Ease::from_name)?;
             keys.push(Key {
                 frame,
                 position,
                 look_at: key_look_at,
+                ease: ease.unwrap_or_default(),
             });
         }
         if follow.is_some() && keys.iter().any(|k| k.look_at.is_some()) {
@@ -183,10 +187,17 @@ fn spline_error_span(raw: &RawSpline, e: &SplineError) -> std::ops::Range<usize>
     let keys = raw.keys.get_ref();
     let key = |index: usize| keys.get(index);
     let span = match e {
-        SplineError::FrameOrder { index, .. } => key(*index).map(|k| k.get_ref().frame.span()),
-        SplineError::MixedLookAt { index } | SplineError::BadCoordinate { index } => {
-            key(*index).map(|k| k.span())
-        }
+        SplineError::FrameOrder { index, .. } => key(*index).map(|k| {
+            let when = (k.get_ref().frame.as_ref().map(|f| f.span())).or(k
+                .get_ref()
+                .time
+                .as_ref()
+                .map(|t| t.span()));
+            when.unwrap_or(k.span())
+        }),
+        SplineError::MixedLookAt { index }
+        | SplineError::BadCoordinate { index }
+        | SplineError::EaseWithConstantSpeed { index } => key(*index).map(|k| k.span()),
         SplineError::BothLookAts | SplineError::BadLookAt => raw.look_at.as_ref().map(|v| v.span()),
         SplineError::TooFewKeys { .. } => None,
     };

@@ -16,6 +16,8 @@ pub(super) type Vec3 = Spanned<[f64; 3]>;
 #[derive(Deserialize)]
 pub(super) struct Probe {
     pub camera: Option<Spanned<CameraProbe>>,
+    /// Read here so that `time = "2.5s"` keys can be turned into frames (checked later).
+    pub fps: Option<toml::Value>,
 }
 
 #[derive(Deserialize)]
@@ -72,7 +74,8 @@ pub(super) struct RawTrack {
     expecting = "a key: { frame = 0, value = 1.0 } or { frame = 0, value = [x, y, z] }"
 )]
 pub(super) struct RawTrackKey {
-    pub frame: Spanned<i64>,
+    pub frame: Option<Spanned<i64>>,
+    pub time: Option<Spanned<String>>,
     pub value: Spanned<toml::Value>,
     pub ease: Option<Spanned<String>>,
 }
@@ -122,9 +125,11 @@ pub(super) struct RawSpline {
     expecting = "a key: { frame = 0, position = [x, y, z] }"
 )]
 pub(super) struct RawKey {
-    pub frame: Spanned<i64>,
+    pub frame: Option<Spanned<i64>>,
+    pub time: Option<Spanned<String>>,
     pub position: Vec3,
     pub look_at: Option<Vec3>,
+    pub ease: Option<Spanned<String>>,
 }
 
 #[derive(Deserialize)]
@@ -137,6 +142,7 @@ pub(super) struct RawOutput {
     pub exr_depth: Option<Spanned<String>>,
     pub exr_compression: Option<Spanned<String>>,
     pub passes: Option<Spanned<Vec<Spanned<String>>>>,
+    pub colour: Option<Spanned<String>>,
 }
 
 #[derive(Deserialize)]

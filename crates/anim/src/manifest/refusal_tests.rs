@@ -23,7 +23,7 @@ fn unknown_keys_are_located_and_the_valid_ones_named() {
     let src = TOUR.replace("{ frame = 120,", "{ frame = 120, fov = 2,");
     assert_eq!(
         refusal(&src),
-        "10:18: camera.keys[1]: unknown key `fov`; a spline key takes `frame`, `position`, `look_at`"
+        "10:18: camera.keys[1]: unknown key `fov`; a spline key takes `frame`, `time`, `position`, `ease`, `look_at`"
     );
 }
 
@@ -41,7 +41,7 @@ fn misspelt_tables_and_keys_are_all_located_with_the_nearest_name() {
          5:2: unknown table `[camra]` (did you mean `[camera]`?); the top level takes `scene`, `frames`, `fps`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`\n\
          8:1: render: unknown key `samles` (did you mean `samples`?); [render] takes `width`, `height`, `samples`, `motion_blur`, `antialias`\n\
          9:17: render.motion_blur: unknown key `shuter` (did you mean `shutter`?); motion_blur takes `shutter`, `samples`\n\
-         12:22: track[0].keys[0]: unknown key `vlaue` (did you mean `value`?); a track key takes `frame`, `value`, `ease`"
+         12:22: track[0].keys[0]: unknown key `vlaue` (did you mean `value`?); a track key takes `frame`, `time`, `value`, `ease`"
     );
     // A top-level key near a table's name is suggested as the table.
     assert!(refusal("scene = \"s\"\nframe = 3\n")

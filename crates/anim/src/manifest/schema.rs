@@ -109,7 +109,15 @@ const ANY_CAMERA: Place = Place {
 
 const SPLINE_KEY: Place = Place {
     name: "a spline key",
-    groups: &[&[("frame", Value), ("position", Value)], LOOK_AT],
+    groups: &[
+        &[
+            ("frame", Value),
+            ("time", Value),
+            ("position", Value),
+            ("ease", Value),
+        ],
+        LOOK_AT,
+    ],
 };
 
 const TRACK: Place = Place {
@@ -128,7 +136,12 @@ const TRACK: Place = Place {
 
 const TRACK_KEY: Place = Place {
     name: "a track key",
-    groups: &[&[("frame", Value), ("value", Value), ("ease", Value)]],
+    groups: &[&[
+        ("frame", Value),
+        ("time", Value),
+        ("value", Value),
+        ("ease", Value),
+    ]],
 };
 
 const OUTPUT: Place = Place {
@@ -141,6 +154,7 @@ const OUTPUT: Place = Place {
         ("exr_depth", Value),
         ("exr_compression", Value),
         ("passes", Value),
+        ("colour", Value),
     ]],
 };
 
@@ -314,7 +328,8 @@ mod tests {
         assert_eq!(
             found[2].1,
             "output: unknown key `fromat` (did you mean `format`?); [output] takes `dir`, \
-             `name`, `format`, `jpeg_quality`, `exr_depth`, `exr_compression`, `passes`"
+             `name`, `format`, `jpeg_quality`, `exr_depth`, `exr_compression`, `passes`, \
+             `colour`"
         );
     }
 

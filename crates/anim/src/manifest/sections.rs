@@ -10,6 +10,8 @@
 //! exr_depth = "half"        # exr only: half | float; default half
 //! exr_compression = "zip"   # exr only: none | rle | zips | zip | piz; default zip
 //! passes = ["depth", "normal", "crypto_object"]   # exr only; default none (whitted::passes)
+//! colour = "srgb"           # exr only: srgb (display values decoded to linear) | linear
+//!                           # (the tracer's values as they are); default srgb
 //!
 //! [render]
 //! width = 1280              # 1..=16384 each, width·height <= 2^26 when both are given
@@ -35,6 +37,7 @@ use std::collections::HashSet;
 use std::path::Path;
 use toml::Spanned;
 use whitted::limits::{MAX_PIXELS, MAX_SAMPLES, MAX_SIDE};
+use whitted::output::colour::Colour;
 use whitted::output::{ExrCompression, ExrDepth, ExrOptions, ImageFormat};
 use whitted::passes::{Pass, PassSet};
 
@@ -48,6 +51,7 @@ impl Source<'_> {
             exr_depth: None,
             exr_compression: None,
             passes: None,
+            colour: None,
         });
         let dir = match &raw.dir {
             Some(dir) => self.resolve(dir, "dir")?,
@@ -82,7 +86,7 @@ impl Source<'_> {
         Ok(OutputSpec { dir, name, format })
     }
 
-    /// `exr_depth`, `exr_compression` and `passes`: checked whatever the format (so a typo
+    /// `exr_depth`, `exr_compression`, `passes` and `colour`: checked whatever the format (so a typo
     /// is caught before the format changes), refused with a reason when the format is not
     /// EXR (no other format can carry them).
     fn exr_options(
@@ -109,6 +113,10 @@ impl Source<'_> {
             options.compression = ExrCompression::from_name(v.get_ref())
                 .ok_or_else(|| named(v, "exr_compression", &ExrCompression::NAMES))?;
         }
+        if let Some(v) = &raw.colour {
+            options.colour =
+                Colour::from_name(v.get_ref()).ok_or_else(|| named(v, "colour", &Colour::NAMES))?;
+        }
         if let Some(list) = &raw.passes {
             let all: Vec<&str> = Pass::ALL.iter().map(|p| p.name()).collect();
             let mut passes = Vec::new();
@@ -130,6 +138,7 @@ impl Source<'_> {
                         .as_ref()
                         .map(|v| ("exr_compression", v.span())),
                     raw.passes.as_ref().map(|v| ("passes", v.span())),
+                    raw.colour.as_ref().map(|v| ("colour", v.span())),
                 ];
                 match given.into_iter().flatten().next() {
                     Some((key, span)) => Err(self.error(

@@ -21,6 +21,8 @@ pub(super) type CameraParts = (Option<CameraPath>, Option<LookAt>, Lens);
 pub(super) struct Source<'a> {
     pub(super) text: &'a str,
     pub(super) path: &'a Path,
+    /// The manifest's frames per second, for keys given in seconds (`when`).
+    pub(super) fps: f64,
 }
 
 impl Source<'_> {

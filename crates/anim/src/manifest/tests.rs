@@ -130,6 +130,7 @@ fn the_spec_spline_parses_with_defaults() {
         frame,
         position: DVec3::from_array(p),
         look_at: None,
+        ease: Default::default(),
     };
     let keys = vec![
         key(0, [0.0, 3.0, 12.0]),

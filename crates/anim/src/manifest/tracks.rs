@@ -67,7 +67,7 @@ impl Source<'_> {
         }
     }
 
-    fn name_of<T>(
+    pub(super) fn name_of<T>(
         &self,
         v: &Option<Spanned<String>>,
         what: &str,
@@ -159,15 +159,17 @@ impl Source<'_> {
         }
         let mut out: Vec<TrackKey> = Vec::with_capacity(keys.get_ref().len());
         for key in keys.get_ref() {
+            let span = key.span();
             let key = key.get_ref();
-            let frame = self.key_frame(&key.frame, frames)?;
+            let (frame, when) =
+                self.key_when(key.frame.as_ref(), key.time.as_ref(), span, frames)?;
             if let Some(previous) = out.last() {
                 if frame <= previous.frame {
                     let message = format!(
                         "key frame {frame} is not after the previous key's frame {}; keys must be in increasing frame order",
                         previous.frame
                     );
-                    return Err(self.error(key.frame.span(), message));
+                    return Err(self.error(when, message));
                 }
             }
             let (value, kind) = self.value(&key.value)?;
@@ -183,7 +185,7 @@ impl Source<'_> {
                 value,
                 kind,
                 ease: own.unwrap_or(ease),
-                loc: self.loc(key.frame.span()),
+                loc: self.loc(when),
             });
         }
         Ok(out)

@@ -209,11 +209,13 @@ mod tests {
                 frame: 0,
                 position: DVec3::ZERO,
                 look_at: None,
+                ease: Default::default(),
             },
             Key {
                 frame: 4,
                 position: DVec3::X,
                 look_at: None,
+                ease: Default::default(),
             },
         ];
         let path = CameraPath::Spline(Spline::new(keys, false, false, None).unwrap());

@@ -32,6 +32,7 @@
 //! segment parameter as the position, so they too are exact wherever the camera is at a
 //! key.
 
+use super::ease::Ease;
 use glam::DVec3;
 use whitted::limits::MAX_COORD;
 
@@ -49,6 +50,9 @@ pub struct Key {
     pub position: DVec3,
     /// The point looked at from that frame, when every key has one.
     pub look_at: Option<DVec3>,
+    /// How the segment from this key to the next is paced (`Ease`, as a track key's):
+    /// the segment's parameter is ease(u) for the key timing's u.
+    pub ease: Ease,
 }
 
 /// A camera spline through keys. Build it with [`Spline::new`], which validates the keys
@@ -109,6 +113,13 @@ pub enum SplineError {
     /// The path-wide look_at is not finite or past `MAX_COORD`.
     #[error("look_at: coordinates must be finite and at most {MAX_COORD:e} in magnitude")]
     BadLookAt,
+    /// A key eases its segment on a path timed by arc length, which ignores the keys'
+    /// frames.
+    #[error("camera.keys[{index}]: `ease` paces the segment between two keys' frames; with constant_speed = true the keys' frames do not time the path (drop one)")]
+    EaseWithConstantSpeed {
+        /// The key, 0-based.
+        index: usize,
+    },
 }
 
 /// Whether every coordinate is finite and within [`MAX_COORD`].
@@ -137,6 +148,9 @@ impl Spline {
             }
             if key.look_at.is_some() != with_look_at {
                 return Err(SplineError::MixedLookAt { index });
+            }
+            if constant_speed && key.ease != Ease::None {
+                return Err(SplineError::EaseWithConstantSpeed { index });
             }
             if index > 0 && key.frame <= keys[index - 1].frame {
                 let previous = keys[index - 1].frame;
@@ -238,7 +252,8 @@ impl Spline {
                 return self.by_length((t - first) / period);
             }
             if t >= last {
-                return (n - 1, (t - last) / (first + period - last));
+                let u = (t - last) / (first + period - last);
+                return (n - 1, self.keys[n - 1].ease.apply(u));
             }
             return self.by_keys(t);
         }
@@ -260,7 +275,8 @@ impl Spline {
         let segment = after.clamp(1, self.keys.len() - 1) - 1;
         let start = f64::from(self.keys[segment].frame);
         let end = f64::from(self.keys[segment + 1].frame);
-        (segment, ((t - start) / (end - start)).clamp(0.0, 1.0))
+        let u = ((t - start) / (end - start)).clamp(0.0, 1.0);
+        (segment, self.keys[segment].ease.apply(u))
     }
 
     /// Arc-length timing: the point at `fraction` ∈ [0, 1] of the total length, by binary

@@ -13,6 +13,7 @@
 
 pub mod packet;
 
+use crate::output::colour::Colour;
 use std::io::Write;
 use std::net::{SocketAddr, TcpStream, ToSocketAddrs};
 use std::sync::Mutex;
@@ -53,6 +54,7 @@ pub struct Tev {
     addr: String,
     conn: Mutex<Option<TcpStream>>,
     warn: Box<dyn Fn(&str) + Send + Sync>,
+    colour: Colour,
 }
 
 impl Tev {
@@ -79,7 +81,15 @@ impl Tev {
             addr: addr.into(),
             conn: Mutex::new(conn),
             warn,
+            colour: Colour::Srgb,
         }
+    }
+
+    /// This connection sending floats in `colour` (by default `Srgb`: the bytes' display
+    /// values decoded to linear light, what an EXR frame holds; `packet`).
+    pub fn with_colour(mut self, colour: Colour) -> Tev {
+        self.colour = colour;
+        self
     }
 
     /// A `Tev` that warns on standard error, prefixed with the program's name.
@@ -134,7 +144,8 @@ impl Tev {
         for (k, chunk) in rgb.chunks(row * per).enumerate() {
             let h = (chunk.len() / row) as u32;
             let y = y0 + (k * per) as u32;
-            self.send(&packet::update_rgb(name, 0, y, width, h, chunk));
+            let rect = (0, y, width, h);
+            self.send(&packet::update_rgb(name, rect, chunk, self.colour));
         }
     }
 }

@@ -17,10 +17,12 @@
 //! In an UpdateImage, channel c of tile pixel k (row-major in the w×h tile) is
 //! `data[offset[c] + k·stride[c]]`: interleaved RGB is offsets 0, 1, 2 and strides 3.
 //!
-//! **Bytes to floats**: tev takes floats; a frame's byte b is sent as `b as f32 / 255.0`
-//! (no gamma: the frame's bytes are linear values already, SPEC §2), and the byte is
-//! recovered exactly as `round(255·f)`: `byte_to_float` and `float_to_byte` below, tested
-//! for all 256 values.
+//! **Bytes to floats**: tev takes floats in linear light and shows them through the sRGB
+//! curve, so it receives what an EXR frame holds (SPEC §12): a frame's byte b is sent as
+//! `Colour::store(b/255)`, by default the display value decoded with the sRGB EOTF (tev's
+//! sRGB view then shows the PNG's byte), or b/255 under `colour = "linear"`. The byte is
+//! recovered exactly as `Colour::byte(f)` (round(255·encode(f))): `byte_to_float` and
+//! `float_to_byte` below, tested for all 256 values in both encodings.
 
 /// tev's packet types (`IpcPacket::EType`).
 pub mod kind {
@@ -32,16 +34,18 @@ pub mod kind {
     pub const UPDATE_IMAGE_V3: u8 = 6;
 }
 
-/// The float tev receives for byte `b`: b/255.
-pub fn byte_to_float(b: u8) -> f32 {
-    f32::from(b) / 255.0
+use crate::output::colour::Colour;
+
+/// The float tev receives for byte `b` under `colour`: `colour.store(b/255)`.
+pub fn byte_to_float(b: u8, colour: Colour) -> f32 {
+    colour.store(f64::from(b) / 255.0) as f32
 }
 
-/// The byte a float received from `byte_to_float` came from: round(255·f), clamped
-/// (what tev's side does; only the tests need it here).
+/// The byte a float received from `byte_to_float` came from (what tev's sRGB view shows
+/// of it; only the tests need it here).
 #[cfg(test)]
-fn float_to_byte(f: f32) -> u8 {
-    (f.clamp(0.0, 1.0) * 255.0).round() as u8
+fn float_to_byte(f: f32, colour: Colour) -> u8 {
+    colour.byte(f64::from(f))
 }
 
 /// A packet under construction: the size is filled in by `finish`.
@@ -100,7 +104,12 @@ pub fn create_image(
 
 /// UpdateImage (v3): the `width`×`height` rectangle at (x, y) of image `name`, from
 /// interleaved RGB bytes (`rgb.len()` = width·height·3), as floats `byte_to_float`.
-pub fn update_rgb(name: &str, x: u32, y: u32, width: u32, height: u32, rgb: &[u8]) -> Vec<u8> {
+pub fn update_rgb(
+    name: &str,
+    (x, y, width, height): (u32, u32, u32, u32),
+    rgb: &[u8],
+    colour: Colour,
+) -> Vec<u8> {
     let mut p = Out::new(kind::UPDATE_IMAGE_V3).bool(false).str(name).i32(3);
     for c in ["R", "G", "B"] {
         p = p.str(c);
@@ -117,8 +126,9 @@ pub fn update_rgb(name: &str, x: u32, y: u32, width: u32, height: u32, rgb: &[u8
         p = p.i64(3);
     }
     p.0.reserve(rgb.len() * 4);
+    let floats: [f32; 256] = std::array::from_fn(|b| byte_to_float(b as u8, colour));
     for &b in rgb {
-        p.0.extend(byte_to_float(b).to_le_bytes());
+        p.0.extend(floats[usize::from(b)].to_le_bytes());
     }
     p.finish()
 }
@@ -134,13 +144,16 @@ mod tests {
 
     #[test]
     fn every_byte_survives_the_float() {
-        for b in 0..=255u8 {
-            assert_eq!(float_to_byte(byte_to_float(b)), b);
+        for colour in [Colour::Srgb, Colour::Linear] {
+            for b in 0..=255u8 {
+                assert_eq!(float_to_byte(byte_to_float(b, colour), colour), b);
+            }
+            assert_eq!(byte_to_float(255, colour), 1.0);
+            assert_eq!(byte_to_float(0, colour), 0.0);
         }
-        assert_eq!(byte_to_float(255), 1.0);
-        assert_eq!(byte_to_float(0), 0.0);
-        // 51/255 = 0.2 in f32.
-        assert_eq!(byte_to_float(51), 0.2f32);
+        // 51/255 = 0.2 in f32; decoded, ((0.2 + 0.055)/1.055)^2.4 = 0.0331048.
+        assert_eq!(byte_to_float(51, Colour::Linear), 0.2f32);
+        assert!((byte_to_float(51, Colour::Srgb) - 0.033_104_8).abs() < 1e-7);
     }
 
     #[test]
@@ -156,7 +169,7 @@ mod tests {
 
     #[test]
     fn update_image_layout() {
-        let p = update_rgb("i", 1, 2, 1, 1, &[0, 51, 255]);
+        let p = update_rgb("i", (1, 2, 1, 1), &[0, 51, 255], Colour::Linear);
         // 4 size + 1 type + 1 bool + 2 name + 4 n + 6 names + 16 rect + 48 offsets and
         // strides + 12 data.
         assert_eq!(p.len(), 94);

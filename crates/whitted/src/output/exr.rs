@@ -1,14 +1,20 @@
 //! `.exr`: OpenEXR through the `exr` crate, one scan-line part holding every layer, as
 //! Blender's and Arnold's single-part EXRs do (SPEC §12):
 //!
-//! - beauty `R G B`, half unless `exr_depth = "float"`, not clamped; each value is the
-//!   nearest half (or float) whose clamp-and-round is the tracer's byte, so that
-//!   `round(255·clamp(beauty))` is the PNG's byte exactly (it differs from plain rounding
-//!   only on a byte's edge, by one unit in the last place);
+//! - beauty `R G B`, half unless `exr_depth = "float"`, not clamped, in the encoding
+//!   `[output] colour` names (`colour`: by default the display values decoded to linear
+//!   light with the sRGB EOTF); each value is the nearest half (or float) whose display
+//!   value's clamp-and-round is the tracer's byte, so that the EXR converted to sRGB is
+//!   the PNG's bytes exactly (it differs from plain rounding only on a byte's edge, by one
+//!   unit in the last place);
+//! - `A`, when the frame has it: the fraction of the pixel's camera samples that hit an
+//!   object (fog and the background do not count); the colour is not premultiplied by it
+//!   (the header's `whitted:alpha` says so);
 //! - the passes' channels (`Z`, `P.X`…, `N.X`…, `albedo.R`…, `diffuse.R`…,
 //!   `crypto_object00.R`…), 32-bit float always (Cryptomatte needs it, and the light split
-//!   must sum to the beauty to 1e-5);
-//! - header: `chromaticities` (Rec.709 primaries, D65 white), `worldToCamera`,
+//!   must sum to the beauty to 1e-5); the light split and the albedo follow the beauty's
+//!   encoding (`colour::follow_beauty`);
+//! - header: `whitted:colour` (`srgb` or `linear`), `whitted:alpha`, `chromaticities` (Rec.709 primaries, D65 white), `worldToCamera`,
 //!   `worldToNDC`, `software`, the frame's provenance as string attributes under their
 //!   stamp keywords (`whitted:digest`, … UTF-8), and each Cryptomatte's
 //!   `cryptomatte/<key>/name|hash|conversion|manifest`;
@@ -16,13 +22,20 @@
 //!   attributes sorted by name (the crate keeps them in a hash map), so the same frame is
 //!   the same bytes on every run.
 
+use super::colour::{self, float_keeping_byte, half_keeping_byte, Colour};
 use super::{ExrCompression, ExrDepth, ExrOptions, OutputError};
 use crate::passes::{crypto, Layers};
-use crate::render::to_byte;
 use exr::meta::attribute::Chromaticities;
 use exr::prelude::*;
 use std::io::Write;
 use std::result::Result;
+
+/// The header attribute that says what `A` is.
+pub const ALPHA_ATTRIBUTE: &str = "whitted:alpha";
+
+/// What it says.
+pub const ALPHA_MEANING: &str = "coverage: the fraction of the pixel's camera samples that \
+    hit an object (fog and the background do not count); colour not premultiplied";
 
 /// Encodes `layers` with `meta` as string attributes. The layers are taken: their
 /// channels' values move into the image instead of being copied (a frame's passes are
@@ -37,21 +50,36 @@ pub(super) fn encode(
         width,
         height,
         beauty,
-        channels: passes,
+        channels: mut passes,
         crypto: crypto_headers,
         camera,
+        alpha,
     } = layers;
     let size = (width as usize, height as usize);
     let mut channels: SmallVec<[AnyChannel<FlatSamples>; 4]> = SmallVec::new();
+    let encoding = options.colour;
     for (axis, name) in ["R", "G", "B"].into_iter().enumerate() {
         let values = beauty.iter().map(|c| c[axis]);
         let samples = match options.depth {
-            ExrDepth::Half => FlatSamples::F16(values.map(half_keeping_byte).collect()),
-            ExrDepth::Float => FlatSamples::F32(values.map(float_keeping_byte).collect()),
+            ExrDepth::Half => {
+                FlatSamples::F16(values.map(|v| half_keeping_byte(v, encoding)).collect())
+            }
+            ExrDepth::Float => {
+                FlatSamples::F32(values.map(|v| float_keeping_byte(v, encoding)).collect())
+            }
         };
         channels.push(AnyChannel::new(name, samples));
     }
+    colour::follow_beauty(&mut passes, &beauty, encoding);
     drop(beauty);
+    let has_alpha = alpha.is_some();
+    if let Some(alpha) = alpha {
+        let samples = match options.depth {
+            ExrDepth::Half => FlatSamples::F16(alpha.into_iter().map(f16::from_f32).collect()),
+            ExrDepth::Float => FlatSamples::F32(alpha),
+        };
+        channels.push(AnyChannel::new("A", samples));
+    }
     for ch in passes {
         channels.push(AnyChannel::new(text(&ch.name), FlatSamples::F32(ch.values)));
     }
@@ -70,6 +98,10 @@ pub(super) fn encode(
     };
     for (k, v) in meta {
         put(k, v);
+    }
+    put(colour::ATTRIBUTE, encoding.name());
+    if has_alpha {
+        put(ALPHA_ATTRIBUTE, ALPHA_MEANING);
     }
     for c in &crypto_headers {
         let key = format!("cryptomatte/{}", crypto::key(&c.name));
@@ -151,46 +183,6 @@ fn sort_header(bytes: &mut [u8]) -> Result<(), &'static str> {
     Ok(())
 }
 
-/// The float nearest `c` whose clamp-and-round is `c`'s byte.
-pub(crate) fn float_keeping_byte(c: f64) -> f32 {
-    let want = to_byte(c);
-    let mut v = c as f32;
-    for _ in 0..4 {
-        if to_byte(f64::from(v)) == want {
-            break;
-        }
-        v = if f64::from(v) < c {
-            v.next_up()
-        } else {
-            v.next_down()
-        };
-    }
-    v
-}
-
-/// The half nearest `c` whose clamp-and-round is `c`'s byte (halves are 8 to a byte's
-/// width of 1/255 below 1, so there always is one).
-pub(crate) fn half_keeping_byte(c: f64) -> f16 {
-    let want = to_byte(c);
-    let mut v = f16::from_f64(c);
-    for _ in 0..4 {
-        let x = v.to_f64();
-        if to_byte(x) == want || !x.is_finite() {
-            break;
-        }
-        // Halves of one sign are ordered like their bits' magnitudes.
-        let up = x < c;
-        let bits = v.to_bits();
-        let away_from_zero = up == (x >= 0.0);
-        v = match (away_from_zero, bits & 0x7fff) {
-            (true, _) => f16::from_bits(bits + 1),
-            (false, 0) => f16::from_bits(if up { 0x0001 } else { 0x8001 }),
-            (false, _) => f16::from_bits(bits - 1),
-        };
-    }
-    v
-}
-
 /// The size of the first part of the EXR file `read` gives, from its header alone (nothing
 /// of its pixels is read or allocated).
 pub(super) fn header_size(read: impl std::io::Read) -> Result<(u32, u32), String> {
@@ -201,9 +193,14 @@ pub(super) fn header_size(read: impl std::io::Read) -> Result<(u32, u32), String
     Ok((side(size.width())?, side(size.height())?))
 }
 
-/// The beauty of the EXR file `bytes` as RGB floats, rows top to bottom, with its size
-/// (`read::read_beauty` reads the file).
-pub(super) fn read_beauty(bytes: &[u8]) -> Result<(u32, u32, Vec<[f32; 3]>), String> {
+/// A beauty as an EXR file stores it: width, height, RGB rows top to bottom, encoding.
+pub(super) type Stored = (u32, u32, Vec<[f32; 3]>, Colour);
+
+/// The beauty of the EXR file `bytes` as stored (RGB, rows top to bottom), with its size
+/// and its encoding: its `whitted:colour`, or `Linear` when the header has no such
+/// attribute (frames written before it held the values as they are). `read` reads the
+/// file.
+pub(super) fn read_beauty(bytes: &[u8]) -> Result<Stored, String> {
     let image = read()
         .no_deep_data()
         .largest_resolution_level()
@@ -224,13 +221,18 @@ pub(super) fn read_beauty(bytes: &[u8]) -> Result<(u32, u32, Vec<[f32; 3]>), Str
     };
     let (r, g, b) = (find("R")?, find("G")?, find("B")?);
     let (w, h) = (layer.size.width() as u32, layer.size.height() as u32);
+    let encoding = match layer.attributes.other.get(&text(colour::ATTRIBUTE)) {
+        Some(AttributeValue::Text(t)) => Colour::from_name(&t.to_string())
+            .ok_or_else(|| format!("unknown {} {t}", colour::ATTRIBUTE))?,
+        _ => Colour::Linear,
+    };
     let pixels = r
         .into_iter()
         .zip(g)
         .zip(b)
         .map(|((r, g), b)| [r, g, b])
         .collect();
-    Ok((w, h, pixels))
+    Ok((w, h, pixels, encoding))
 }
 
 /// The string attributes of the header of the EXR file `file` reads, of `width`×`height`,
@@ -262,34 +264,4 @@ pub fn texts_if_whole(
     file.rewind().ok()?;
     super::exr_offsets::check(&mut file).ok()?;
     Some(texts)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn stored_values_keep_their_byte() {
-        // 0.5/255 + a hair rounds to 1 in f64; plain half rounding may give 0.
-        for k in 0..=2550 {
-            let c = (k as f64 + 0.5) / 2550.0 * 1.1 - 0.05;
-            for c in [
-                c,
-                (k as f64 / 10.0 + 0.5) / 255.0,
-                ((k as f64 / 10.0 + 0.5) / 255.0).next_down(),
-            ] {
-                let want = to_byte(c);
-                let h = half_keeping_byte(c);
-                assert_eq!(to_byte(h.to_f64()), want, "{c:e} → half {h}");
-                assert!(
-                    (h.to_f64() - c).abs() <= 2.0 * (c.abs() * 2f64.powi(-11) + 6e-8),
-                    "{c} {h}"
-                );
-                let f = float_keeping_byte(c);
-                assert_eq!(to_byte(f64::from(f)), want, "{c:e} → float {f}");
-                assert!((f64::from(f) - c).abs() <= 2.0 * c.abs() * 2f64.powi(-24) + 1e-40);
-            }
-        }
-        assert_eq!(half_keeping_byte(3.0).to_f64(), 3.0);
-    }
 }

@@ -5,9 +5,9 @@
 //! |---|---|---|---|
 //! | `.raw` | `raw` | 8-bit RGB, no header (the report's) | none (a record beside it) |
 //! | `.ppm` | `ppm` | binary P6, maxval 255 | `# key: text` header comments |
-//! | `.png` | `png` | 8-bit RGB, fast deflate | `tEXt` / `iTXt` chunks |
+//! | `.png` | `png` | 8-bit RGB, fast deflate, tagged sRGB | `tEXt` / `iTXt` chunks |
 //! | `.jpg`/`.jpeg` | `jpeg` | baseline JPEG, quality 90 unless set | one COM comment |
-//! | `.exr` | `exr` | half/float beauty unclamped, float passes | string attributes |
+//! | `.exr` | `exr` | half/float beauty unclamped (linear light, `colour`), float passes, alpha | string attributes |
 //!
 //! The 8-bit formats take the beauty through the clamp-and-round of §2 (`Layers::to_frame`,
 //! which `render` does directly for the default path) and drop the passes.
@@ -17,6 +17,7 @@
 //! `write_atomic` writes to a temporary file in the destination folder and renames it into
 //! place, so a file under its final name is always complete.
 
+pub mod colour;
 pub mod exr;
 mod exr_offsets;
 mod jpeg;
@@ -63,6 +64,8 @@ pub struct ExrOptions {
     pub compression: ExrCompression,
     /// The passes beside the beauty.
     pub passes: PassSet,
+    /// How the beauty's colours are stored (`[output] colour`).
+    pub colour: colour::Colour,
 }
 
 /// The beauty's sample type in an EXR frame.
@@ -282,6 +285,7 @@ pub fn encode_with(
                 channels: Vec::new(),
                 crypto: Vec::new(),
                 camera: None,
+                alpha: None,
             };
             exr::encode(layers, options, meta, out)
         }

@@ -6,7 +6,8 @@
 //! | `.raw` | the bytes themselves (width·height·3) |
 //! | `.ppm` | the bytes after the header `P6`, `# key: text` comments, `W H`, `255` |
 //! | `.png`, `.jpg` | decoded (`image`) |
-//! | `.exr` | the beauty's clamp-and-round (SPEC §2, §12) |
+//! | `.exr` | the beauty's display values (sRGB-encoded unless stored as they are, its
+//! header's `whitted:colour`), clamped and rounded (SPEC §2, §12) |
 //!
 //! The file is read whole only when it is a regular file of at most `MAX_FRAME_BYTES`.
 
@@ -63,7 +64,9 @@ pub fn read_rgb(
     height: u32,
 ) -> Result<Vec<u8>, ReadError> {
     if format.is_layered() {
-        return read_beauty(path, width, height).map(|b| beauty_bytes(&b));
+        let (beauty, colour) = read_stored(path, width, height)?;
+        let byte = |v: f32| colour.byte(f64::from(v));
+        return Ok(beauty.iter().flat_map(|c| c.map(byte)).collect());
     }
     let bytes = read_regular(path, MAX_FRAME_BYTES, "frame")?;
     let pixels = 3 * width as usize * height as usize;
@@ -126,8 +129,20 @@ fn ppm_pixels(mut bytes: Vec<u8>, width: u32, height: u32) -> Result<Vec<u8>, Re
     Ok(bytes)
 }
 
-/// The float beauty (RGB, rows top to bottom) of the EXR file `path` of `width`×`height`.
+/// The float beauty of the EXR file `path` of `width`×`height` as the display values it
+/// stands for (RGB, rows top to bottom; the tracer's values, whatever the encoding).
 pub fn read_beauty(path: &Path, width: u32, height: u32) -> Result<Vec<[f32; 3]>, ReadError> {
+    let (beauty, colour) = read_stored(path, width, height)?;
+    let shown = |v: f32| colour.shown(f64::from(v)) as f32;
+    Ok(beauty.into_iter().map(|c| c.map(shown)).collect())
+}
+
+/// The beauty of the EXR file `path` of `width`×`height` as stored, and its encoding.
+fn read_stored(
+    path: &Path,
+    width: u32,
+    height: u32,
+) -> Result<(Vec<[f32; 3]>, super::colour::Colour), ReadError> {
     let bytes = read_regular(path, MAX_FRAME_BYTES, "frame")?;
     // The header first: a picture of another size is never decoded (an 8192² reference
     // would take gigabytes).
@@ -135,9 +150,9 @@ pub fn read_beauty(path: &Path, width: u32, height: u32) -> Result<Vec<[f32; 3]>
     if (w, h) != (width, height) {
         return Err(size_error(format!("{w}×{h}"), width, height));
     }
-    let (w, h, beauty) = super::exr::read_beauty(&bytes).map_err(ReadError::Decode)?;
+    let (w, h, beauty, colour) = super::exr::read_beauty(&bytes).map_err(ReadError::Decode)?;
     match (w, h) == (width, height) {
-        true => Ok(beauty),
+        true => Ok((beauty, colour)),
         false => Err(size_error(format!("{w}×{h}"), width, height)),
     }
 }

@@ -209,6 +209,9 @@ pub struct Layers {
     pub crypto: Vec<CryptoHeader>,
     /// The camera the frame was drawn from (at the frame's own time).
     pub camera: Option<CameraMatrices>,
+    /// Coverage, when known: the fraction of each pixel's camera samples that hit an
+    /// object (fog and the background do not count); the beauty is not premultiplied.
+    pub alpha: Option<Vec<f32>>,
 }
 
 impl Layers {

@@ -1,7 +1,10 @@
 //! Recording passes: `Sample` hears one camera ray (`trace::Record`), `PixelSum` adds the
 //! samples of a pixel (over its n×n grid and every motion-blur sub-frame), `Sums` holds a
-//! frame's (only the beauty colours when no pass is asked), and `finish` turns them into
-//! its `Layers`.
+//! frame's (only the beauty colours and hit counts, `BeautySum`, heard by `Hit`, when no
+//! pass is asked), and `finish` turns them into its `Layers`.
+//!
+//! Alpha is coverage: the fraction of a pixel's camera samples whose ray hit an object
+//! (a miss counts for nothing, fog or not).
 //!
 //! The light split: the tracer's colour at a hit is ambient + Σ lights (diffuse +
 //! specular, each times the light's shadow transmission) + reflection + transmission, and
@@ -59,6 +62,26 @@ impl Record for Sample {
     }
 }
 
+/// The recorder of the beauty-only path: whether the camera ray hit an object.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Hit(pub bool);
+
+impl Record for Hit {
+    const ACTIVE: bool = true;
+    fn object(&mut self, _index: usize, _t: f64) {
+        self.0 = true;
+    }
+}
+
+/// The sums of one pixel's samples when no pass is asked: colour and hits.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct BeautySum {
+    /// Σ unclamped beauty.
+    pub colour: Color,
+    /// The samples that hit an object.
+    pub hits: u32,
+}
+
 /// The sums of one pixel's samples.
 #[derive(Clone, Debug, Default)]
 pub struct PixelSum {
@@ -76,6 +99,8 @@ pub struct PixelSum {
     pub light: [Color; 6],
     /// (object index, samples) for each object seen, when a Cryptomatte is asked for.
     pub objects: Vec<(usize, u32)>,
+    /// The samples that hit an object.
+    pub hits: u32,
 }
 
 impl PixelSum {
@@ -91,6 +116,7 @@ impl PixelSum {
         self.light[5] += Color::splat(s.fog);
         match s.hit {
             Some((index, t)) => {
+                self.hits += 1;
                 self.depth += t * dir.dot(forward);
                 self.p += s.p;
                 self.n += s.n;
@@ -108,12 +134,12 @@ impl PixelSum {
 }
 
 /// The running sums of a frame of layers, one a pixel (rows top to bottom): the beauty
-/// colours alone when no pass is asked (a frame without passes records nothing and holds
-/// 24 bytes a pixel), else every pass's `PixelSum`.
+/// colours and hit counts alone when no pass is asked (32 bytes a pixel), else every
+/// pass's `PixelSum`.
 #[derive(Clone, Debug)]
 pub enum Sums {
-    /// Σ unclamped beauty only.
-    Beauty(Vec<Color>),
+    /// Σ unclamped beauty and hits only.
+    Beauty(Vec<BeautySum>),
     /// Everything the passes need.
     Passes(Vec<PixelSum>),
 }
@@ -122,7 +148,7 @@ impl Sums {
     /// Zeroed sums for `pixels` pixels of a frame carrying `passes`.
     pub fn new(pixels: usize, passes: PassSet) -> Sums {
         if passes.is_empty() {
-            Sums::Beauty(vec![Color::ZERO; pixels])
+            Sums::Beauty(vec![BeautySum::default(); pixels])
         } else {
             Sums::Passes(vec![PixelSum::default(); pixels])
         }
@@ -146,10 +172,11 @@ pub fn finish(
             return Layers {
                 width,
                 height,
-                beauty: beauty.iter().map(|c| *c / k).collect(),
+                beauty: beauty.iter().map(|s| s.colour / k).collect(),
                 channels: Vec::new(),
                 crypto: Vec::new(),
                 camera,
+                alpha: Some(beauty.iter().map(|s| coverage(s.hits, k)).collect()),
             };
         }
         Sums::Passes(sums) => sums,
@@ -206,7 +233,13 @@ pub fn finish(
         channels,
         crypto: crypto_headers,
         camera,
+        alpha: Some(sums.iter().map(|s| coverage(s.hits, k)).collect()),
     }
+}
+
+/// `hits` of `k` samples as a fraction.
+fn coverage(hits: u32, k: f64) -> f32 {
+    (f64::from(hits) / k) as f32
 }
 
 #[cfg(test)]
@@ -231,9 +264,11 @@ mod tests {
         // Depth along the view axis: t·(dir·forward) = 2·0.8.
         assert!((sum.depth - 1.6).abs() < 1e-15);
         assert_eq!(sum.objects, [(0, 1)]);
-        // A second sample that misses: depth becomes +inf; the object is still counted once.
+        // A second sample that misses: depth becomes +inf; the object is still counted
+        // once, and one of the two samples covers the pixel.
         sum.add(Color::ONE, &Sample::default(), dir, DVec3::Z, true);
         assert_eq!(sum.depth, f64::INFINITY);
         assert_eq!(sum.objects, [(0, 1)]);
+        assert_eq!((sum.hits, coverage(sum.hits, 2.0)), (1, 0.5));
     }
 }

@@ -82,6 +82,7 @@ mod tests {
             channels,
             crypto: vec![],
             camera: None,
+            alpha: None,
         }
     }
 

@@ -7,14 +7,15 @@ use super::{par_rows, sub_pixel};
 use crate::accel::{Hint, TileView};
 use crate::camera::{Camera, VIEW_DISTANCE};
 use crate::optics::Ray;
-use crate::passes::record::{finish, Sample, Sums};
+use crate::passes::record::{finish, Hit, Sample, Sums};
 use crate::passes::{CameraMatrices, Layers, Pass, PassSet};
 use crate::trace::{RayCount, Tracer};
 
 /// Adds every pixel's `samples`² samples into `sums` (width·height, rows top to bottom,
 /// made by `Sums::new` for `passes`): one sub-frame of a frame of layers. Without passes
-/// only the beauty is summed, through the tracer's no-op recorder (the same colours the
-/// recording path computes, added in the same order); `passes` also says whether
+/// only the beauty and the hits (alpha) are summed, through a recorder that hears the hit
+/// alone (the same colours the recording path computes, added in the same order);
+/// `passes` also says whether
 /// Cryptomatte coverage is kept; the rest is cheap enough to record always.
 pub fn render_layers_add(
     tracer: &Tracer,
@@ -33,7 +34,9 @@ pub fn render_layers_add(
     match sums {
         Sums::Beauty(sums) => par_rows(sums, width, height, |j, row, count| {
             row_samples(camera, view, width, n, j, count, |i, hint, ray, count| {
-                row[i] += tracer.primary_in(hint, ray, count);
+                let mut hit = Hit::default();
+                row[i].colour += tracer.primary_rec(hint, ray, count, &mut hit);
+                row[i].hits += u32::from(hit.0);
             });
         }),
         Sums::Passes(sums) => par_rows(sums, width, height, |j, row, count| {
@@ -191,6 +194,7 @@ mod tests {
             assert_eq!(bits(&plain), bits(&layered), "{n}² samples");
             assert!(plain.channels.is_empty() && plain.crypto.is_empty());
             assert_eq!(plain.camera, layered.camera);
+            assert_eq!(plain.alpha, layered.alpha, "{n}² samples");
             assert_eq!(rays, layered_rays);
         }
     }

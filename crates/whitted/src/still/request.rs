@@ -14,6 +14,7 @@ use super::Still;
 use crate::camera::{Lens, NonSquare};
 use crate::display::Display;
 use crate::exit::Outcome;
+use crate::output::colour::Colour;
 use crate::output::{
     check_target, write_atomic, write_atomic_layers, ExrDepth, ImageFormat, OutputError,
 };
@@ -47,6 +48,8 @@ pub struct Request {
     pub pass: Option<Pass>,
     /// The EXR's float depth.
     pub exr_depth: Option<ExrDepth>,
+    /// How the EXR stores colours (`srgb`: display values decoded to linear light).
+    pub colour: Option<Colour>,
     /// A live viewer the picture streams to while it is drawn.
     pub display: Option<Display>,
     /// The SPD's testing procedure (`--spd`): 512 × 512 from 513 × 513 corner rays.
@@ -132,8 +135,10 @@ fn out_format(request: &Request, out: &Path) -> Result<ImageFormat, OutputError>
             }
             o.passes = request.passes.unwrap_or_default();
             o.depth = request.exr_depth.unwrap_or_default();
+            o.colour = request.colour.unwrap_or_default();
             Ok(ImageFormat::Exr(o))
         }
+        _ if request.colour.is_some() => Err(refuse("--colour needs an .exr image")),
         _ if request.passes.is_some() => Err(refuse("--passes needs an .exr image")),
         _ if request.exr_depth.is_some() => Err(refuse("--exr-depth needs an .exr image")),
         other => Ok(other),

@@ -9,6 +9,7 @@ fn key(frame: u32, p: [f64; 3]) -> Key {
         frame,
         position: DVec3::from_array(p),
         look_at: None,
+        ease: Default::default(),
     }
 }
 
@@ -309,4 +310,32 @@ fn bad_keys_are_refused() {
             Err(SplineError::BadCoordinate { index: 1 })
         );
     }
+}
+
+#[test]
+fn a_key_eases_the_segment_it_starts() {
+    // Keys at frames 0 and 10: eased "in", frame 5 is u = 0.5 → e = 0.25, where the
+    // even path is at frame 2.5; "out" gives 1 − 0.5² = 0.75, the even path's 7.5.
+    let even = Spline::new(
+        vec![key(0, [0.0; 3]), key(10, [4.0, 0.0, 0.0])],
+        false,
+        false,
+        None,
+    )
+    .unwrap();
+    for (ease, at) in [(Ease::In, 2.5), (Ease::Out, 7.5), (Ease::InOut, 5.0)] {
+        let mut first = key(0, [0.0; 3]);
+        first.ease = ease;
+        let eased = Spline::new(vec![first, key(10, [4.0, 0.0, 0.0])], false, false, None).unwrap();
+        let (p, _) = eased.at(5.0, 11, DVec3::ZERO);
+        let (q, _) = even.at(at, 11, DVec3::ZERO);
+        assert!(p.distance(q) < 1e-12, "{ease:?}: {p} vs {q}");
+    }
+    let mut first = key(0, [0.0; 3]);
+    first.ease = Ease::In;
+    let refused = Spline::new(vec![first, key(10, [4.0, 0.0, 0.0])], false, true, None);
+    assert_eq!(
+        refused.unwrap_err(),
+        SplineError::EaseWithConstantSpeed { index: 0 }
+    );
 }
