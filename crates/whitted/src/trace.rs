@@ -104,16 +104,10 @@ impl<'a> Tracer<'a> {
     /// colours, other coefficients and lights may differ. The caller guarantees it. (The
     /// light buffer, which depends on the lights too, is built here from `scene`.)
     pub fn with_accel(scene: &'a Scene, accel: Arc<Accel>) -> Tracer<'a> {
-        // The light buffer's proofs assume the report's epsilon (`lightbuf::outside2`).
-        let lights = if scene.t_min == crate::optics::T_MIN {
-            LightBuffer::new(&scene.objects, &scene.lights)
-        } else {
-            LightBuffer::default()
-        };
         Tracer {
             scene,
             accel,
-            lights,
+            lights: LightBuffer::for_scene(scene),
             rules: Rules::default(),
         }
     }
@@ -312,14 +306,14 @@ impl<'a> Tracer<'a> {
         }
         if m.kt > 0.0 && weight * m.kt >= min_weight {
             let eta = if entering { 1.0 / m.ior } else { m.ior };
+            // Counted as a refraction ray whether it leaves or is totally reflected.
+            count.refract += 1;
             let through = match refract(v, n, eta) {
                 Some(dir) => {
-                    count.refract += 1;
                     let r = ray.spawn(p, dir.normalize());
                     m.kt * c * self.trace(&r, depth + 1, weight * m.kt, count)
                 }
                 None => {
-                    count.refract += 1;
                     let r = ray.spawn(p, reflect(v, n).normalize());
                     m.kt * self.trace(&r, depth + 1, weight * m.kt, count)
                 }

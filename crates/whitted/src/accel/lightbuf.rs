@@ -89,6 +89,17 @@ impl ShadowGrid {
 }
 
 impl LightBuffer {
+    /// The shadow grids of `scene`'s lights over its objects, or none (every shadow ray
+    /// scans) when its rays start past another epsilon than the report's: the grids'
+    /// proofs (`outside2`) assume `T_MIN`.
+    pub fn for_scene(scene: &crate::scene::Scene) -> LightBuffer {
+        if scene.t_min == crate::optics::T_MIN {
+            LightBuffer::new(&scene.objects, &scene.lights)
+        } else {
+            LightBuffer::default()
+        }
+    }
+
     /// The shadow grids of `lights` over `objects`.
     pub fn new(objects: &[Object], lights: &[Light]) -> LightBuffer {
         LightBuffer {
