@@ -20,6 +20,7 @@
 
 mod decode;
 mod error;
+pub mod ext;
 mod lexer;
 pub mod nff;
 mod parser;
@@ -65,6 +66,9 @@ pub struct Scene {
     /// The scene's own framing: the report's for a Scene.txt; an NFF view's angle
     /// (between the outer pixel centres) and up.
     pub lens: Lens,
+    /// The extension records after the last light (SPEC §16): empty for a report file
+    /// and an NFF.
+    pub ext: ext::Extension,
 }
 
 impl Scene {

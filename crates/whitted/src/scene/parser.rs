@@ -372,5 +372,6 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
         background: Color::ZERO,
         t_min: crate::optics::T_MIN,
         lens: crate::camera::Lens::default(),
+        ext: Default::default(),
     })
 }

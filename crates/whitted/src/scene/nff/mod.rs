@@ -193,6 +193,7 @@ pub fn parse(src: &str, file: &str) -> std::result::Result<Scene, SceneError> {
             up: v.up.normalize(),
             centres: true,
         },
+        ext: Default::default(),
     })
 }
 

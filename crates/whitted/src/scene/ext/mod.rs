@@ -1,0 +1,248 @@
+//! The extension records of Scene.txt (SPEC §16) as the reader hands them over: what the
+//! file says, checked against §16's bounds, before anything is built from it. Shapes,
+//! CSG and meshes are built from `ExtObject`s, lights from `ExtLight`s, the lens from
+//! `Focus`; animation tracks change a value here and build again, as the reader would
+//! from the changed file (`check` holds the bounds both apply).
+//!
+//! After the last light of the report's section, a file may hold records, each a
+//! lowercase keyword and its fields in a fixed order, then modifiers:
+//!
+//! ```text
+//! box  -1 0 -1  1 2 1   1 0.8 0.2 0.2   0.7 0 0 1 0 0      # Min Max TEXTURE MATERIAL
+//!   name crate  rotate 0 45 0  translate 2 0 0             # modifiers, each at most once
+//! cylinder 0 0 0  0 2 0  0.5  1 1 1 1  1 0 0 1 0 0  open   # A B Radius …, no caps
+//! difference                                               # CSG: two or more solids
+//!   sphere 0 1 0 1  1 1 0 0  0.7 0 0 1 0 0
+//!   box -2 1 -2 2 3 2  1 0 0 1  0.7 0 0 1 0 0
+//! end  name bowl
+//! mesh "models/teapot.obj"  1 0.9 0.9 0.9  0.8 0 0 1 0 0  scale 0.5 0.5 0.5
+//! spot 0 5 0  0 0 0  1 1 1  1  20 30 1   name key  fade 10 2
+//! area 0 6 0  2 0 0  0 0 2  4 4  1 1 1  1
+//! focus 0.2 8 3                                            # Aperture Distance Samples
+//! ```
+
+pub mod check;
+
+use crate::fileloc::FileLoc;
+use crate::object::Material;
+use crate::texture::{Color, Texture};
+use glam::DVec3;
+use std::path::PathBuf;
+
+/// Every extension record of a file, in file order within each list.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Extension {
+    /// Shape records and CSG blocks (objects), in file order.
+    pub objects: Vec<ExtItem>,
+    /// Light records, in file order.
+    pub lights: Vec<ExtLight>,
+    /// The `focus` record, if the file has one (at most one).
+    pub focus: Option<Focus>,
+}
+
+impl Extension {
+    /// True when the file had no extension record: it renders as the report's.
+    pub fn is_empty(&self) -> bool {
+        self.objects.is_empty() && self.lights.is_empty() && self.focus.is_none()
+    }
+}
+
+/// One object of the extension: a shape record or a CSG block.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExtItem {
+    /// A shape record with its texture and material.
+    Shape(ExtObject),
+    /// `union`/`intersection`/`difference` … `end`.
+    Csg(Csg),
+}
+
+/// The modifiers an object or a light takes (each at most once; §16).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Modifiers {
+    /// `name N`: unique in the file.
+    pub name: Option<String>,
+    /// `open`: a cylinder or cone without its caps.
+    pub open: bool,
+    /// `scale x y z` (no zero component).
+    pub scale: Option<DVec3>,
+    /// `rotate x y z`, degrees about x, then y, then z.
+    pub rotate: Option<DVec3>,
+    /// `translate x y z`.
+    pub translate: Option<DVec3>,
+    /// `fade Distance Power` (lights other than directional).
+    pub fade: Option<(f64, f64)>,
+}
+
+impl Modifiers {
+    /// True when the object's frame is moved (scale, rotate or translate given).
+    pub fn has_transform(&self) -> bool {
+        self.scale.is_some() || self.rotate.is_some() || self.translate.is_some()
+    }
+}
+
+/// A shape record's geometry, as the file gives it (§16's table).
+#[derive(Clone, Debug, PartialEq)]
+pub enum ExtShape {
+    /// `sphere C(3) Radius`.
+    Sphere { center: DVec3, radius: f64 },
+    /// `plane P(3) N(3)`; N non-zero as written.
+    Plane { point: DVec3, normal: DVec3 },
+    /// `box Min(3) Max(3)`, Min < Max on each axis.
+    Box { min: DVec3, max: DVec3 },
+    /// `cylinder A(3) B(3) Radius`, capped unless `open`.
+    Cylinder { a: DVec3, b: DVec3, radius: f64 },
+    /// `cone A(3) Ra B(3) Rb`, capped unless `open`.
+    Cone {
+        a: DVec3,
+        ra: f64,
+        b: DVec3,
+        rb: f64,
+    },
+    /// `disc C(3) N(3) Radius Hole`, 0 ≤ Hole < Radius.
+    Disc {
+        center: DVec3,
+        normal: DVec3,
+        radius: f64,
+        hole: f64,
+    },
+    /// `torus C(3) Axis(3) R r`, 0 < r < R.
+    Torus {
+        center: DVec3,
+        axis: DVec3,
+        major: f64,
+        minor: f64,
+    },
+    /// `triangle P1(3) P2(3) P3(3)`, not degenerate.
+    Triangle { corners: [DVec3; 3] },
+    /// `mesh "file"`: `path` resolved against the scene's folder, `written` as quoted.
+    Mesh { path: PathBuf, written: String },
+}
+
+impl ExtShape {
+    /// The record's keyword (`box`, `torus`, …): its kind for numbering and tracks.
+    pub fn keyword(&self) -> &'static str {
+        match self {
+            ExtShape::Sphere { .. } => "sphere",
+            ExtShape::Plane { .. } => "plane",
+            ExtShape::Box { .. } => "box",
+            ExtShape::Cylinder { .. } => "cylinder",
+            ExtShape::Cone { .. } => "cone",
+            ExtShape::Disc { .. } => "disc",
+            ExtShape::Torus { .. } => "torus",
+            ExtShape::Triangle { .. } => "triangle",
+            ExtShape::Mesh { .. } => "mesh",
+        }
+    }
+
+    /// True for the shapes CSG takes (a solid: sphere, plane, box, capped cylinder and
+    /// cone, torus); `open` is the modifier that would make a cylinder or cone a shell.
+    pub fn is_solid(&self, open: bool) -> bool {
+        match self {
+            ExtShape::Sphere { .. }
+            | ExtShape::Plane { .. }
+            | ExtShape::Box { .. }
+            | ExtShape::Torus { .. } => true,
+            ExtShape::Cylinder { .. } | ExtShape::Cone { .. } => !open,
+            ExtShape::Disc { .. } | ExtShape::Triangle { .. } | ExtShape::Mesh { .. } => false,
+        }
+    }
+}
+
+/// One shape record: geometry, TEXTURE, MATERIAL, modifiers, and where it starts.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExtObject {
+    pub shape: ExtShape,
+    pub texture: Texture,
+    pub material: Material,
+    pub mods: Modifiers,
+    /// The keyword's place in the file (for errors found after reading, e.g. a mesh's).
+    pub loc: FileLoc,
+}
+
+/// A CSG operation (POV-Ray's rules, §16).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CsgOp {
+    Union,
+    Intersection,
+    Difference,
+}
+
+impl CsgOp {
+    /// The block's keyword.
+    pub fn keyword(self) -> &'static str {
+        match self {
+            CsgOp::Union => "union",
+            CsgOp::Intersection => "intersection",
+            CsgOp::Difference => "difference",
+        }
+    }
+}
+
+/// A CSG block: two or more solids or blocks, then `end` and the whole's modifiers.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Csg {
+    pub op: CsgOp,
+    /// The children in file order (each a solid shape or a nested block).
+    pub children: Vec<ExtItem>,
+    /// Modifiers after `end` (name, scale, rotate, translate).
+    pub mods: Modifiers,
+    pub loc: FileLoc,
+}
+
+/// A light record's kind and fields (§16's table).
+#[derive(Clone, Debug, PartialEq)]
+pub enum LightKind {
+    /// `directional D(3)`: travelling along D.
+    Directional { direction: DVec3 },
+    /// `spot P(3) Target(3) … Radius Falloff Tightness` (angles in degrees).
+    Spot {
+        position: DVec3,
+        target: DVec3,
+        radius: f64,
+        falloff: f64,
+        tightness: f64,
+    },
+    /// `point P(3)`: the report's point light as a record.
+    Point { position: DVec3 },
+    /// `area P(3) A1(3) A2(3) N1 N2`: an N1 × N2 grid over the rectangle.
+    Area {
+        position: DVec3,
+        a1: DVec3,
+        a2: DVec3,
+        n1: u32,
+        n2: u32,
+    },
+}
+
+impl LightKind {
+    /// The record's keyword; `point` lights are numbered `light N` after the report's.
+    pub fn keyword(&self) -> &'static str {
+        match self {
+            LightKind::Directional { .. } => "directional",
+            LightKind::Spot { .. } => "spot",
+            LightKind::Point { .. } => "point",
+            LightKind::Area { .. } => "area",
+        }
+    }
+}
+
+/// One light record: kind, colour (R G B, 0..1), intensity, modifiers (name, fade).
+#[derive(Clone, Debug, PartialEq)]
+pub struct ExtLight {
+    pub kind: LightKind,
+    pub color: Color,
+    pub intensity: f64,
+    pub mods: Modifiers,
+    pub loc: FileLoc,
+}
+
+/// `focus Aperture Distance Samples`: the thin lens (§16).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Focus {
+    /// The lens diameter, > 0.
+    pub aperture: f64,
+    /// The distance of the plane in focus along the view axis, > 0.
+    pub distance: f64,
+    /// Lens samples per axis (Samples × Samples per camera sample), ≥ 1.
+    pub samples: u32,
+}
