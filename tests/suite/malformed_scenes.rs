@@ -390,8 +390,8 @@ fn cases() -> Vec<Case> {
                 "40 30", "0 2 10", "0 1 0", "0 20", "1 1 1 1", SPHERE, PLANE, CYLINDER, LIGHT,
                 "  @oops",
             ],
-            "after the last record",
-            "expected the end of the file after the last light",
+            "after the last light",
+            "unknown keyword 'oops'",
         ),
         // Issue 16 item 4: a record that runs into the next section is put on the count
         // that announced it, saying what the count announced.

@@ -1,6 +1,8 @@
 //! Splits Scene.txt into tokens: runs of characters between spaces, tabs and newlines.
 //! `#` starts a comment that runs to the end of the line (an extension; the report's files
-//! have none). Each token keeps its 1-based line and column for error messages.
+//! have none). A token that starts with `"` is a quoted string (SPEC §16: a file path) and
+//! runs to its closing quote, spaces and `#` included. Each token keeps its 1-based line
+//! and column for error messages.
 
 /// One token and where it starts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -37,6 +39,27 @@ impl<'a> Lexer<'a> {
         (self.line, self.column)
     }
 
+    /// A quoted string (SPEC §16): from the opening `"` to the closing one, `\"` and
+    /// `\\` escaped, spaces and `#` included; an unclosed string stops before the end of
+    /// its line, and the reader (`unquote`) says so.
+    fn quoted(&mut self) {
+        self.bump('"');
+        let mut escaped = false;
+        while let Some(c) = self.src[self.pos..].chars().next() {
+            if c == '\n' || c == '\r' {
+                break;
+            }
+            self.bump(c);
+            if escaped {
+                escaped = false;
+            } else if c == '\\' {
+                escaped = true;
+            } else if c == '"' {
+                break;
+            }
+        }
+    }
+
     fn bump(&mut self, c: char) {
         self.pos += c.len_utf8();
         if c == '\n' {
@@ -66,11 +89,15 @@ impl<'a> Iterator for Lexer<'a> {
         }
         let start = self.pos;
         let (line, column) = (self.line, self.column);
-        while let Some(c) = self.src[self.pos..].chars().next() {
-            if c.is_whitespace() || c == '#' {
-                break;
+        if self.src[self.pos..].starts_with('"') {
+            self.quoted();
+        } else {
+            while let Some(c) = self.src[self.pos..].chars().next() {
+                if c.is_whitespace() || c == '#' {
+                    break;
+                }
+                self.bump(c);
             }
-            self.bump(c);
         }
         (self.pos > start).then(|| Token {
             text: &self.src[start..self.pos],
@@ -115,6 +142,26 @@ mod tests {
             .map(|t| (t.text, t.line, t.column))
             .collect();
         assert_eq!(toks, vec![("640", 1, 1), ("480", 1, 5)]);
+    }
+
+    #[test]
+    fn quoted_strings_are_one_token_with_spaces_escapes_and_hashes() {
+        let src = "mesh \"my models/a#1.obj\" 1\nx \"say \\\"hi\\\" \\\\\" 2\n\"open 3";
+        let toks: Vec<_> = Lexer::new(src)
+            .map(|t| (t.text, t.line, t.column))
+            .collect();
+        assert_eq!(
+            toks,
+            vec![
+                ("mesh", 1, 1),
+                ("\"my models/a#1.obj\"", 1, 6),
+                ("1", 1, 26),
+                ("x", 2, 1),
+                ("\"say \\\"hi\\\" \\\\\"", 2, 3),
+                ("2", 2, 19),
+                ("\"open 3", 3, 1),
+            ]
+        );
     }
 
     #[test]

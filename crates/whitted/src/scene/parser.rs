@@ -2,9 +2,10 @@
 //! Every error points at the token that broke a rule and names its place in the
 //! structure; nothing is rendered from a scene that failed. When a record fails on a line
 //! that holds a record of another kind, the error is put on the count to blame
-//! (`counts`).
+//! (`counts`). After the last light come the extension records of SPEC §16 (`ext`).
 
 mod counts;
+mod ext;
 mod place;
 
 use super::error::{FileLoc, SceneError};
@@ -263,6 +264,7 @@ impl<'a> Parser<'a> {
             record,
             index,
             part: None,
+            within: None,
         };
     }
 }
@@ -275,6 +277,7 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
             record: "resolution",
             index: None,
             part: None,
+            within: None,
         },
     };
     let side = format!("an integer from 1 to {MAX_SIDE}");
@@ -347,7 +350,15 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
         }
     }
 
-    if let Some(tok) = p.lexer.next() {
+    let mut extension = Default::default();
+    if p.lexer
+        .clone()
+        .next()
+        .filter(ext::starts_extension)
+        .is_some()
+    {
+        extension = ext::read(&mut p, [ns, np, nc, nl])?;
+    } else if let Some(tok) = p.lexer.next() {
         p.enter("after the last record", None);
         let msg = format!(
             "expected the end of the file after the last light, found '{}' (do the counts match the records?)",
@@ -372,6 +383,6 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
         background: Color::ZERO,
         t_min: crate::optics::T_MIN,
         lens: crate::camera::Lens::default(),
-        ext: Default::default(),
+        ext: extension,
     })
 }

@@ -9,7 +9,9 @@ use glam::DVec3;
 /// A value out of §16's bounds: the field to blame (as the tables name it) and why.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Violation {
+    /// The field as §16's tables name it (`Max`, `r`, `Falloff`).
     pub field: &'static str,
+    /// Why, in the words of an error message.
     pub message: String,
 }
 

@@ -84,38 +84,80 @@ impl Modifiers {
 #[derive(Clone, Debug, PartialEq)]
 pub enum ExtShape {
     /// `sphere C(3) Radius`.
-    Sphere { center: DVec3, radius: f64 },
+    Sphere {
+        /// The centre C.
+        center: DVec3,
+        /// The radius, > 0.
+        radius: f64,
+    },
     /// `plane P(3) N(3)`; N non-zero as written.
-    Plane { point: DVec3, normal: DVec3 },
+    Plane {
+        /// A point P on the plane.
+        point: DVec3,
+        /// The normal N (non-zero); inside CSG the solid is the half-space behind it.
+        normal: DVec3,
+    },
     /// `box Min(3) Max(3)`, Min < Max on each axis.
-    Box { min: DVec3, max: DVec3 },
+    Box {
+        /// The corner Min.
+        min: DVec3,
+        /// The corner Max, above Min on each axis.
+        max: DVec3,
+    },
     /// `cylinder A(3) B(3) Radius`, capped unless `open`.
-    Cylinder { a: DVec3, b: DVec3, radius: f64 },
+    Cylinder {
+        /// The centre A of one end.
+        a: DVec3,
+        /// The centre B of the other end (B ≠ A).
+        b: DVec3,
+        /// The radius, > 0.
+        radius: f64,
+    },
     /// `cone A(3) Ra B(3) Rb`, capped unless `open`.
     Cone {
+        /// The centre A of one end.
         a: DVec3,
+        /// The radius Ra at A, ≥ 0.
         ra: f64,
+        /// The centre B of the other end (B ≠ A).
         b: DVec3,
+        /// The radius Rb at B, ≥ 0 (not both 0).
         rb: f64,
     },
     /// `disc C(3) N(3) Radius Hole`, 0 ≤ Hole < Radius.
     Disc {
+        /// The centre C.
         center: DVec3,
+        /// The normal N (non-zero).
         normal: DVec3,
+        /// The outer radius, > 0.
         radius: f64,
+        /// The hole's radius, 0 ≤ Hole < Radius.
         hole: f64,
     },
     /// `torus C(3) Axis(3) R r`, 0 < r < R.
     Torus {
+        /// The centre C.
         center: DVec3,
+        /// The axis (non-zero) the ring turns about.
         axis: DVec3,
+        /// The ring's radius R (track field `major`).
         major: f64,
+        /// The tube's radius r, 0 < r < R (track field `minor`).
         minor: f64,
     },
     /// `triangle P1(3) P2(3) P3(3)`, not degenerate.
-    Triangle { corners: [DVec3; 3] },
+    Triangle {
+        /// P1, P2, P3.
+        corners: [DVec3; 3],
+    },
     /// `mesh "file"`: `path` resolved against the scene's folder, `written` as quoted.
-    Mesh { path: PathBuf, written: String },
+    Mesh {
+        /// The file, resolved against the scene file's folder.
+        path: PathBuf,
+        /// The file name as the record quotes it.
+        written: String,
+    },
 }
 
 impl ExtShape {
@@ -151,9 +193,13 @@ impl ExtShape {
 /// One shape record: geometry, TEXTURE, MATERIAL, modifiers, and where it starts.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ExtObject {
+    /// The geometry.
     pub shape: ExtShape,
+    /// TEXTURE, as for the report's objects.
     pub texture: Texture,
+    /// MATERIAL, as for the report's objects.
     pub material: Material,
+    /// The modifiers after the record.
     pub mods: Modifiers,
     /// The keyword's place in the file (for errors found after reading, e.g. a mesh's).
     pub loc: FileLoc,
@@ -162,8 +208,11 @@ pub struct ExtObject {
 /// A CSG operation (POV-Ray's rules, §16).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum CsgOp {
+    /// Every child's surface.
     Union,
+    /// The surface points of each child inside every other child.
     Intersection,
+    /// The first child minus the others.
     Difference,
 }
 
@@ -181,11 +230,13 @@ impl CsgOp {
 /// A CSG block: two or more solids or blocks, then `end` and the whole's modifiers.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Csg {
+    /// The operation.
     pub op: CsgOp,
     /// The children in file order (each a solid shape or a nested block).
     pub children: Vec<ExtItem>,
     /// Modifiers after `end` (name, scale, rotate, translate).
     pub mods: Modifiers,
+    /// The block keyword's place in the file.
     pub loc: FileLoc,
 }
 
@@ -193,23 +244,39 @@ pub struct Csg {
 #[derive(Clone, Debug, PartialEq)]
 pub enum LightKind {
     /// `directional D(3)`: travelling along D.
-    Directional { direction: DVec3 },
+    Directional {
+        /// D (non-zero): the direction the light travels in.
+        direction: DVec3,
+    },
     /// `spot P(3) Target(3) … Radius Falloff Tightness` (angles in degrees).
     Spot {
+        /// P, where the light is.
         position: DVec3,
+        /// The point the axis aims at.
         target: DVec3,
+        /// The full-intensity cone's half-angle in degrees, 0 < Radius < Falloff.
         radius: f64,
+        /// The half-angle where the light ends, below 90 degrees.
         falloff: f64,
+        /// The exponent on the cosine to the axis, ≥ 0.
         tightness: f64,
     },
     /// `point P(3)`: the report's point light as a record.
-    Point { position: DVec3 },
+    Point {
+        /// P, where the light is.
+        position: DVec3,
+    },
     /// `area P(3) A1(3) A2(3) N1 N2`: an N1 × N2 grid over the rectangle.
     Area {
+        /// P, the rectangle's centre.
         position: DVec3,
+        /// The edge A1.
         a1: DVec3,
+        /// The edge A2.
         a2: DVec3,
+        /// Points along A1, ≥ 1.
         n1: u32,
+        /// Points along A2, ≥ 1.
         n2: u32,
     },
 }
@@ -229,10 +296,15 @@ impl LightKind {
 /// One light record: kind, colour (R G B, 0..1), intensity, modifiers (name, fade).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ExtLight {
+    /// The kind and its geometry.
     pub kind: LightKind,
+    /// R G B, each 0..1.
     pub color: Color,
+    /// The intensity, a factor on the colour.
     pub intensity: f64,
+    /// `name` and `fade`.
     pub mods: Modifiers,
+    /// The keyword's place in the file.
     pub loc: FileLoc,
 }
 
