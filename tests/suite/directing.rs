@@ -20,6 +20,17 @@ fn spline(frames: u32, end: u32, first: &str, extra: &str) -> String {
 }
 
 /// Frame `frame` of `manifest` (written into `dir` as `name.toml`), as pixels.
+/// A folder holding `scene.txt`, the scene the splines' manifests name.
+fn project() -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("scene.txt"),
+        scene_with_eye([0.0, 3.0, 8.0]),
+    )
+    .unwrap();
+    dir
+}
+
 fn frame(dir: &Path, name: &str, manifest: &str, frame: u32) -> Vec<u8> {
     let path = dir.join(format!("{name}.toml"));
     std::fs::write(&path, manifest).unwrap();
@@ -35,12 +46,7 @@ fn frame(dir: &Path, name: &str, manifest: &str, frame: u32) -> Vec<u8> {
 
 #[test]
 fn a_camera_key_eases_its_segment() {
-    let dir = tempfile::tempdir().unwrap();
-    std::fs::write(
-        dir.path().join("scene.txt"),
-        scene_with_eye([0.0, 3.0, 8.0]),
-    )
-    .unwrap();
+    let dir = project();
     let d = dir.path();
     // Eased in: u = 5/10 → e = 0.25 = 5/20 of the even path over 0 → 20.
     let eased = frame(d, "in", &spline(11, 10, ", ease = \"in\"", ""), 5);
@@ -61,12 +67,7 @@ fn a_camera_key_eases_its_segment() {
 
 #[test]
 fn ease_with_constant_speed_is_refused_at_its_key() {
-    let dir = tempfile::tempdir().unwrap();
-    std::fs::write(
-        dir.path().join("scene.txt"),
-        scene_with_eye([0.0, 3.0, 8.0]),
-    )
-    .unwrap();
+    let dir = project();
     let m = dir.path().join("m.toml");
     let text = spline(11, 10, ", ease = \"in\"", "constant_speed = true\n");
     std::fs::write(&m, &text).unwrap();
@@ -92,12 +93,7 @@ fn ease_with_constant_speed_is_refused_at_its_key() {
 
 #[test]
 fn keys_in_seconds_are_the_frames_fps_makes_of_them() {
-    let dir = tempfile::tempdir().unwrap();
-    std::fs::write(
-        dir.path().join("scene.txt"),
-        scene_with_eye([0.0, 3.0, 8.0]),
-    )
-    .unwrap();
+    let dir = project();
     let d = dir.path();
     // A spline key at "2s" at 5 fps is frame 10; at 10 fps "1s" is frame 10 too.
     let frames = spline(11, 10, "", "");
@@ -126,12 +122,7 @@ fn keys_in_seconds_are_the_frames_fps_makes_of_them() {
 
 #[test]
 fn bad_times_are_refused_where_they_are() {
-    let dir = tempfile::tempdir().unwrap();
-    std::fs::write(
-        dir.path().join("scene.txt"),
-        scene_with_eye([0.0, 3.0, 8.0]),
-    )
-    .unwrap();
+    let dir = project();
     let m = dir.path().join("m.toml");
     let base = spline(11, 10, "", "").replace("frames = 11", "frames = 11\nfps = 10");
     for (edit, want) in [

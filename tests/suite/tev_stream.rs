@@ -245,20 +245,25 @@ fn animate_sends_every_frame() {
     );
 }
 
+/// What tev is sent while `animate` renders `frames` of an EXR manifest into `out`.
+fn exr_frames_to_tev(manifest: &Path, out: &Path, frames: &str) -> Seen {
+    let (port, got) = server();
+    let run = animate()
+        .arg(manifest)
+        .args(["--frames", frames, "-q", "-o"])
+        .arg(out)
+        .args(["--display", &format!("tev=127.0.0.1:{port}")])
+        .output()
+        .unwrap();
+    stdout_ok(run);
+    decode(&got.join().unwrap())
+}
+
 #[test]
 fn animate_sends_every_frame_of_an_exr_manifest() {
     // EXR frames are drawn as layers: tev is shown their pictures, one a frame.
     let (dir, manifest) = project(&circle_manifest("").replace("\"png\"", "\"exr\""));
-    let (port, got) = server();
-    let out = animate()
-        .arg(&manifest)
-        .args(["--frames", "0-2", "-q", "-o"])
-        .arg(dir.path().join("exr"))
-        .args(["--display", &format!("tev=127.0.0.1:{port}")])
-        .output()
-        .unwrap();
-    stdout_ok(out);
-    let seen = decode(&got.join().unwrap());
+    let seen = exr_frames_to_tev(&manifest, &dir.path().join("exr"), "0-2");
     let mut sent = seen.whole.clone();
     assert_eq!(sent.len(), 3, "one whole picture a frame");
     sent.sort();
@@ -279,16 +284,7 @@ fn tev_receives_what_the_exr_frame_holds_in_either_colour() {
     for colour in ["", "colour = \"linear\"\n"] {
         let extra = colour;
         let (dir, manifest) = project(&circle_manifest(extra).replace("\"png\"", "\"exr\""));
-        let (port, got) = server();
-        let out = animate()
-            .arg(&manifest)
-            .args(["--frames", "0", "-q", "-o"])
-            .arg(dir.path().join("exr"))
-            .args(["--display", &format!("tev=127.0.0.1:{port}")])
-            .output()
-            .unwrap();
-        stdout_ok(out);
-        let seen = decode(&got.join().unwrap());
+        let seen = exr_frames_to_tev(&manifest, &dir.path().join("exr"), "0");
         let img = seen.images.values().next().expect("an image");
         let file = exr_channels(&dir.path().join("exr/frame_0000.exr"));
         let mut compared = 0;

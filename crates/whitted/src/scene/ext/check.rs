@@ -179,14 +179,13 @@ pub fn light(l: &ExtLight) -> Result<(), Violation> {
             }
         }
         LightKind::Point { .. } => {}
-        LightKind::Area { a1, a2, n1, n2, .. } => {
+        LightKind::Area { n1, n2, .. } => {
             if *n1 == 0 || *n2 == 0 {
                 return fail(
                     "N2",
                     format!("the area grid must be at least 1 × 1, found {n1} × {n2}"),
                 );
             }
-            let _ = (a1, a2);
         }
     }
     if !(0.0..=crate::limits::MAX_INTENSITY).contains(&l.intensity) {

@@ -25,6 +25,11 @@ pub(super) fn all() -> impl Iterator<Item = &'static str> {
         .chain(OTHERS)
 }
 
+/// `word` as it is written in `list`, with the list's lifetime (for marks and places).
+pub(super) fn find<const N: usize>(list: [&'static str; N], word: &str) -> Option<&'static str> {
+    list.into_iter().find(|k| *k == word)
+}
+
 /// True for a keyword of the grammar.
 pub(super) fn is_keyword(word: &str) -> bool {
     all().any(|k| k == word)

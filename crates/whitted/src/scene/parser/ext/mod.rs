@@ -84,14 +84,14 @@ impl<'a> Ext<'_, 'a> {
     /// One top-level record starting at `tok`.
     fn record(&mut self, tok: Token<'a>) -> Result<()> {
         let word = tok.text;
-        if keywords::SHAPES.contains(&word) {
-            let object = self.shape(tok, None)?;
+        if let Some(keyword) = keywords::find(keywords::SHAPES, word) {
+            let object = self.shape(tok, keyword, None)?;
             self.out.objects.push(ExtItem::Shape(object));
         } else if let Some(op) = csg_op(word) {
             let csg = self.csg(tok, op, None)?;
             self.out.objects.push(ExtItem::Csg(csg));
-        } else if keywords::LIGHTS.contains(&word) {
-            let light = self.light(tok)?;
+        } else if let Some(keyword) = keywords::find(keywords::LIGHTS, word) {
+            let light = self.light(tok, keyword)?;
             self.out.lights.push(light);
         } else if word == "focus" {
             self.focus(tok)?;
@@ -162,11 +162,7 @@ impl<'a> Ext<'_, 'a> {
         op: CsgOp,
         within: Option<u64>,
     ) -> Result<super::super::ext::Csg> {
-        let n = if within.is_none() {
-            Some(self.number("csg"))
-        } else {
-            None
-        };
+        let n = within.is_none().then(|| self.number("csg"));
         let me = within.or(n);
         let mut children = Vec::new();
         loop {
@@ -183,8 +179,8 @@ impl<'a> Ext<'_, 'a> {
             if child.text == "end" {
                 break;
             }
-            if keywords::SHAPES.contains(&child.text) {
-                let object = self.shape(child, me)?;
+            if let Some(keyword) = keywords::find(keywords::SHAPES, child.text) {
+                let object = self.shape(child, keyword, me)?;
                 if !object.shape.is_solid(object.mods.open) {
                     let what = if object.mods.open { "an open " } else { "a " };
                     let msg = format!(

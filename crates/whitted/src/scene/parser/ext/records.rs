@@ -13,12 +13,14 @@ pub const MAX_AREA_SIDE: u64 = 64;
 pub const MAX_LENS_SAMPLES: u64 = 32;
 
 impl<'a> Ext<'_, 'a> {
-    /// A shape record at `tok` (top level, or inside CSG block `within`).
-    pub(super) fn shape(&mut self, tok: Token<'a>, within: Option<u64>) -> Result<ExtObject> {
-        let keyword = keywords::SHAPES
-            .into_iter()
-            .find(|k| *k == tok.text)
-            .expect("called on a shape keyword");
+    /// A shape record whose `keyword` is at `tok` (top level, or inside CSG block
+    /// `within`).
+    pub(super) fn shape(
+        &mut self,
+        tok: Token<'a>,
+        keyword: &'static str,
+        within: Option<u64>,
+    ) -> Result<ExtObject> {
         let index = within.is_none().then(|| self.number(keyword));
         self.enter(keyword, index, within);
         let shape = match keyword {
@@ -106,12 +108,8 @@ impl<'a> Ext<'_, 'a> {
         })
     }
 
-    /// A light record at `tok`.
-    pub(super) fn light(&mut self, tok: Token<'a>) -> Result<ExtLight> {
-        let keyword = keywords::LIGHTS
-            .into_iter()
-            .find(|k| *k == tok.text)
-            .expect("called on a light keyword");
+    /// A light record whose `keyword` is at `tok`.
+    pub(super) fn light(&mut self, tok: Token<'a>, keyword: &'static str) -> Result<ExtLight> {
         let counted = if keyword == "point" { "light" } else { keyword };
         let index = self.number(counted);
         self.enter(counted, Some(index), None);
@@ -208,11 +206,10 @@ impl<'a> Ext<'_, 'a> {
         let mut seen: Vec<&str> = Vec::new();
         let record = self.p.place.record;
         while let Some(tok) = self.p.lexer.clone().next() {
-            if !keywords::MODIFIERS.contains(&tok.text) {
+            let Some(word) = keywords::find(keywords::MODIFIERS, tok.text) else {
                 break;
-            }
+            };
             self.p.lexer.next();
-            let word = tok.text;
             if !allowed.contains(&word) {
                 let msg = match word {
                     "fade" if record == "directional" => {
@@ -228,13 +225,7 @@ impl<'a> Ext<'_, 'a> {
                 return Err(self.p.error(&tok, msg, word));
             }
             seen.push(word);
-            self.marks.push((
-                keywords::MODIFIERS
-                    .into_iter()
-                    .find(|m| *m == word)
-                    .unwrap_or("name"),
-                tok,
-            ));
+            self.marks.push((word, tok));
             match word {
                 "name" if in_csg => {
                     let msg =
