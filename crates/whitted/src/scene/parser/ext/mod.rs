@@ -228,7 +228,7 @@ impl<'a> Ext<'_, 'a> {
             msg += &format!(" (did you mean '{k}'?)");
         } else if tok.text.parse::<f64>().is_ok() {
             msg = format!(
-                "expected an extension record after the last light, found '{}' (do the counts match the records?)",
+                "expected a record keyword, found the number '{}' (a surplus field of the record before?)",
                 quote(tok.text)
             );
         } else {

@@ -147,6 +147,12 @@ fn an_unknown_keyword_is_located_with_the_nearest_one() {
         msg.contains("unknown keyword 'bxo'") && msg.contains("did you mean 'box'?"),
         "{msg}"
     );
+    let (msg, line, column) = error(&format!("box 0 0 0 1 1 1 {T} 7\n"));
+    assert_eq!((line, column), (8, 40), "{msg}");
+    assert!(
+        msg.contains("found the number '7' (a surplus field"),
+        "{msg}"
+    );
     let (msg, ..) = error("frobnicate\n");
     assert!(msg.contains("extension records start with"), "{msg}");
 }
