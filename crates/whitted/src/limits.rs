@@ -53,6 +53,12 @@ pub fn size_ok(width: u64, height: u64) -> bool {
         && width * height <= MAX_PIXELS
 }
 
+/// The largest area-light grid side (N1, N2): 64 × 64 = 4,096 shadow rays per hit.
+pub const MAX_AREA_SIDE: u64 = 64;
+
+/// The largest `focus` Samples: 32 × 32 = 1,024 lens rays per camera sample.
+pub const MAX_LENS_SAMPLES: u64 = 32;
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -5,12 +5,8 @@ use super::super::super::ext::{check, ExtLight, ExtObject, ExtShape, Focus, Ligh
 use super::super::Result;
 use super::{keywords, Ext};
 use crate::input::quote;
+use crate::limits::{MAX_AREA_SIDE, MAX_LENS_SAMPLES};
 use crate::scene::lexer::Token;
-
-/// The largest area-light grid side (N1, N2): 64 × 64 = 4,096 shadow rays per hit.
-pub const MAX_AREA_SIDE: u64 = 64;
-/// The largest `focus` Samples: 32 × 32 = 1,024 lens rays per camera sample.
-pub const MAX_LENS_SAMPLES: u64 = 32;
 
 impl<'a> Ext<'_, 'a> {
     /// A shape record whose `keyword` is at `tok` (top level, or inside CSG block
