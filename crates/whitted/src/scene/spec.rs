@@ -8,6 +8,9 @@ use crate::shapes::{Cone, Plane, Quadric, Shape, SmoothTriangle, Sphere, Triangl
 use glam::DVec3;
 
 /// The values one shape record of Scene.txt gives.
+// `Ext` carries its built shape so that specs stay `Copy` (tracks copy them per frame);
+// boxing it would end that.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ShapeSpec {
     /// A sphere record.
