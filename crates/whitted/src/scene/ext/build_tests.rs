@@ -149,3 +149,60 @@ fn unbuilt_records_are_located_errors() {
     assert_eq!(err.loc().map(|l| l.line), Some(9));
     assert!(err.to_string().contains("mesh"), "{err}");
 }
+
+#[test]
+fn the_tree_finds_what_a_linear_scan_finds() {
+    // A row of tori, boxes and cones, turned and moved: every ray's nearest hit from the
+    // BVH is the linear scan's (smallest t, then the first object).
+    let mut items = Vec::new();
+    for i in 0..12 {
+        let x = f64::from(i) * 1.5 - 9.0;
+        let mods = Modifiers {
+            rotate: Some(DVec3::new(f64::from(i) * 17.0, f64::from(i) * 29.0, 5.0)),
+            translate: Some(DVec3::new(x, 0.0, -6.0)),
+            ..Modifiers::default()
+        };
+        let shape = match i % 3 {
+            0 => ExtShape::Torus {
+                center: DVec3::ZERO,
+                axis: DVec3::Y,
+                major: 0.6,
+                minor: 0.2,
+            },
+            1 => ExtShape::Box {
+                min: DVec3::splat(-0.4),
+                max: DVec3::splat(0.4),
+            },
+            _ => ExtShape::Cone {
+                a: DVec3::ZERO,
+                ra: 0.5,
+                b: DVec3::Y,
+                rb: 0.1,
+            },
+        };
+        items.push(record(shape, mods));
+    }
+    let ext = Extension {
+        objects: items,
+        ..Extension::default()
+    };
+    let objs: Vec<Object> = objects(&ext).unwrap().into_iter().map(|(o, _)| o).collect();
+    let accel = crate::accel::Accel::new(&objs);
+    let mut hits = 0;
+    for k in 0..400 {
+        let a = f64::from(k) * 0.0157;
+        let dir = DVec3::new(a.sin() * 0.9, (a * 3.1).cos() * 0.03, -1.0).normalize();
+        let ray = Ray::new(DVec3::new(0.0, 0.0, 2.0), dir);
+        let mut best: Option<(f64, usize)> = None;
+        for (i, o) in objs.iter().enumerate() {
+            if let Some(t) = o.shape.hit(&ray, f64::INFINITY) {
+                if best.is_none_or(|(b, _)| t < b) {
+                    best = Some((t, i));
+                }
+            }
+        }
+        hits += usize::from(best.is_some());
+        assert_eq!(accel.nearest(&ray), best, "ray {k}");
+    }
+    assert!(hits > 50, "only {hits} rays hit");
+}
