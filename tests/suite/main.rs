@@ -37,6 +37,7 @@ mod exit_status;
 mod exr_frames;
 mod exr_manifest;
 mod exr_oracles;
+mod ext_shape_properties;
 mod farm_shard;
 mod farm_slurm;
 mod frame_cli;

@@ -153,8 +153,8 @@ fn is_tame(scene: &Scene, limit: f64, tiny: f64) -> bool {
             Shape::Quadric(q) => {
                 v(q.origin) && q.coef.iter().all(|&c| s(c)) && -q.coef[9] >= tiny * tiny
             }
-            // An NFF's shapes: Scene.txt never makes them.
-            Shape::Triangle(_) | Shape::Smooth(_) | Shape::Cone(_) => false,
+            // An NFF's shapes and the extension's: not what this check bounds.
+            Shape::Triangle(_) | Shape::Smooth(_) | Shape::Cone(_) | Shape::Placed(_) => false,
         };
         let tex = match o.texture {
             Texture::Uniform(c) => v(c),

@@ -80,6 +80,18 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
                 v(apex.0, &mut f);
                 f(apex.1);
             }
+            ShapeSpec::Ext {
+                item,
+                shape,
+                anchor,
+                ..
+            } => {
+                // The drawn shape's every value (Debug prints each f64 exactly).
+                f(8.0);
+                f(f64::from(item));
+                v(anchor, &mut f);
+                format!("{shape:?}").bytes().for_each(|b| f(f64::from(b)));
+            }
         }
         let (_, kind, colors) = obj.texture.record();
         f(f64::from(kind));

@@ -38,7 +38,11 @@ fn grazing(objects: &[Object], from: DVec3, rng: &mut Rng) -> Vec<DVec3> {
         let (c, r) = match o.shape {
             Shape::Sphere(s) => (s.center, s.radius),
             Shape::Quadric(q) => (q.origin + rng.vec(3.0).project_onto(DVec3::Y), 0.35),
-            Shape::Plane(_) | Shape::Triangle(_) | Shape::Smooth(_) | Shape::Cone(_) => continue,
+            Shape::Plane(_)
+            | Shape::Triangle(_)
+            | Shape::Smooth(_)
+            | Shape::Cone(_)
+            | Shape::Placed(_) => continue,
         };
         let to = c - from;
         let side = to

@@ -102,7 +102,9 @@ impl Scene {
     }
 
     /// The objects' names, in order: `KIND N`, N counted from 1 per kind in file order
-    /// (`sphere 3`: the file's third sphere), the names tracks target
+    /// (`sphere 3`: the file's third sphere; an extension record continues its kind's
+    /// count after the report's), or the record's `name` when it has one (the count still
+    /// advances past it), the names tracks target
     /// (`anim::timeline::target::objects_of` is the inverse), picking answers and
     /// Cryptomatte hashes.
     pub fn object_names(&self) -> impl Iterator<Item = String> + '_ {
@@ -119,8 +121,22 @@ impl Scene {
                     1
                 }
             };
-            format!("{kind} {n}")
+            match self.ext_name(spec) {
+                Some(name) => name.to_string(),
+                None => format!("{kind} {n}"),
+            }
         })
+    }
+
+    /// The `name` an extension record gives its object, if any.
+    fn ext_name(&self, spec: &ShapeSpec) -> Option<&str> {
+        let ShapeSpec::Ext { item, .. } = spec else {
+            return None;
+        };
+        match self.ext.objects.get(*item as usize)? {
+            ext::ExtItem::Shape(o) => o.mods.name.as_deref(),
+            ext::ExtItem::Csg(c) => c.mods.name.as_deref(),
+        }
     }
 
     /// The name of object `index` (see `object_names`); `None` past the last object.

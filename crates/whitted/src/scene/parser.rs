@@ -371,6 +371,10 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
         };
         return Err(counts.explain(src, file, record, p.error(&tok, msg, "")));
     }
+    for (object, spec) in crate::scene::ext::build::objects(&extension)? {
+        objects.push(object);
+        specs.push(spec);
+    }
     Ok(Scene {
         width: width as u32,
         height: height as u32,

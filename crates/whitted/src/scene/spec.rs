@@ -8,6 +8,9 @@ use crate::shapes::{Cone, Plane, Quadric, Shape, SmoothTriangle, Sphere, Triangl
 use glam::DVec3;
 
 /// The values one shape record of Scene.txt gives.
+// `Ext` carries its built shape so that specs stay `Copy` (tracks copy them per frame);
+// boxing it would end that.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ShapeSpec {
     /// A sphere record.
@@ -52,6 +55,17 @@ pub enum ShapeSpec {
         /// The apex circle's centre and radius.
         apex: (DVec3, f64),
     },
+    /// A shape record of the extension (SPEC §16), built by `ext::build`.
+    Ext {
+        /// Its index in `Scene::ext.objects` (where its fields and `name` are).
+        item: u32,
+        /// Its keyword (`box`, `torus`, …): its kind for numbering.
+        kind: &'static str,
+        /// The drawn shape.
+        shape: Shape,
+        /// The point a camera looks at for it.
+        anchor: DVec3,
+    },
 }
 
 impl ShapeSpec {
@@ -74,6 +88,7 @@ impl ShapeSpec {
             ShapeSpec::Cone { base, apex } => Shape::Cone(
                 Cone::new(base.0, base.1, apex.0, apex.1).expect("the NFF reader checks cones"),
             ),
+            ShapeSpec::Ext { shape, .. } => shape,
         }
     }
 
@@ -86,6 +101,7 @@ impl ShapeSpec {
             ShapeSpec::Triangle { .. } => "triangle",
             ShapeSpec::Patch { .. } => "patch",
             ShapeSpec::Cone { .. } => "cone",
+            ShapeSpec::Ext { kind, .. } => kind,
         }
     }
 
@@ -101,6 +117,7 @@ impl ShapeSpec {
                 corners: [a, b, c], ..
             } => (a + b + c) / 3.0,
             ShapeSpec::Cone { base, apex } => 0.5 * (base.0 + apex.0),
+            ShapeSpec::Ext { anchor, .. } => anchor,
         }
     }
 }

@@ -49,6 +49,21 @@ impl Cone {
         })
     }
 
+    /// The unit axis, from the base towards the apex.
+    pub fn axis(&self) -> DVec3 {
+        self.axis
+    }
+
+    /// The distance between the end centres.
+    pub fn height(&self) -> f64 {
+        self.height
+    }
+
+    /// The radius's change per unit of height, (r_A − r_B)/h.
+    pub fn slope(&self) -> f64 {
+        self.slope
+    }
+
     /// Where the ray's line crosses the open surface, ascending, any sign.
     #[inline]
     pub fn roots(&self, ray: &Ray) -> Roots {

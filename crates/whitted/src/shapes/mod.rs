@@ -1,6 +1,7 @@
-//! Geometry: the shapes a Scene.txt can hold (sphere, plane, quadric cylinder) and those
-//! an NFF adds (triangle, smooth triangle, open cone), and how a ray meets them (report
-//! IV.1).
+//! Geometry: the shapes a Scene.txt can hold (sphere, plane, quadric cylinder), those an
+//! NFF adds (triangle, smooth triangle, open cone), those the extension records add (box,
+//! capped cylinder and cone, disc, torus, each in its own frame: `Placed`), and how a
+//! ray meets them (report IV.1).
 //!
 //! Every shape answers one question, `roots`: the parameters t (up to two, ascending, any
 //! sign) where the ray's line crosses its surface. From that the tracer gets the nearest
@@ -11,45 +12,93 @@
 //!
 //! Shapes are a closed enum, not trait objects, so the hot loop has no virtual calls.
 
+mod aabox;
+mod capped;
 mod cone;
+mod disc;
+mod frame;
+mod placed;
 mod plane;
+mod poly;
 mod quadric;
 mod smooth;
 mod sphere;
+mod torus;
 mod triangle;
 
+pub use aabox::AaBox;
+pub use capped::Capped;
 pub use cone::Cone;
+pub use disc::Disc;
+pub use frame::Frame;
+pub use placed::{Local, Placed};
 pub use plane::Plane;
 pub use quadric::Quadric;
 pub use smooth::SmoothTriangle;
 pub use sphere::Sphere;
+pub use torus::Torus;
 pub use triangle::Triangle;
 
 use crate::optics::Ray;
 use glam::DVec3;
 
-/// Where a line crosses a surface: up to two parameters, ascending.
+/// Where a line crosses a surface: up to four parameters (a torus's), ascending.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Roots {
-    t: [f64; 2],
+    t: [f64; 4],
     n: usize,
 }
 
 impl Roots {
     /// No root.
-    pub const NONE: Roots = Roots { t: [0.0; 2], n: 0 };
+    pub const NONE: Roots = Roots { t: [0.0; 4], n: 0 };
 
     /// A single (double) root `t`.
+    #[inline]
     pub fn one(t: f64) -> Roots {
-        Roots { t: [t, t], n: 1 }
+        Roots {
+            t: [t, t, 0.0, 0.0],
+            n: 1,
+        }
     }
 
     /// Two roots, stored in ascending order.
+    #[inline]
     pub fn two(a: f64, b: f64) -> Roots {
         Roots {
-            t: [a.min(b), a.max(b)],
+            t: [a.min(b), a.max(b), 0.0, 0.0],
             n: 2,
         }
+    }
+
+    /// Up to four roots in any order (more are dropped), stored ascending; NaNs dropped.
+    pub fn from_slice(ts: &[f64]) -> Roots {
+        let mut r = Roots::NONE;
+        for &t in ts.iter().filter(|t| !t.is_nan()).take(4) {
+            r.t[r.n] = t;
+            r.n += 1;
+        }
+        r.t[..r.n].sort_by(f64::total_cmp);
+        r
+    }
+
+    /// The number of roots.
+    pub fn len(&self) -> usize {
+        self.n
+    }
+
+    /// True when the line misses the surface.
+    pub fn is_empty(&self) -> bool {
+        self.n == 0
+    }
+
+    /// Every root divided by `k` > 0 (a root of a line whose direction was scaled by k).
+    #[inline]
+    pub fn scaled(mut self, k: f64) -> Roots {
+        for t in &mut self.t[..self.n] {
+            *t /= k;
+        }
+        self
     }
 
     /// The roots as a slice, ascending.
@@ -90,6 +139,9 @@ pub enum Shape {
     Smooth(SmoothTriangle),
     /// An open cone or cylinder of finite length (NFF's `c`).
     Cone(Cone),
+    /// A shape of the extension records in its own frame (box, capped cylinder and cone,
+    /// disc, torus, transformed sphere).
+    Placed(Placed),
 }
 
 impl Shape {
@@ -103,6 +155,7 @@ impl Shape {
             Shape::Triangle(t) => t.roots(ray),
             Shape::Smooth(t) => t.roots(ray),
             Shape::Cone(c) => c.roots(ray),
+            Shape::Placed(p) => p.roots(ray),
         }
     }
 
@@ -116,6 +169,7 @@ impl Shape {
             Shape::Triangle(t) => t.hit(ray, t_max),
             Shape::Smooth(t) => t.hit(ray, t_max),
             Shape::Cone(c) => c.hit(ray, t_max),
+            Shape::Placed(p) => p.hit(ray, t_max),
         }
     }
 
@@ -138,6 +192,7 @@ impl Shape {
             Shape::Triangle(t) => Some(t.bounds()),
             Shape::Smooth(t) => Some(t.flat.bounds()),
             Shape::Cone(c) => Some(c.bounds()),
+            Shape::Placed(p) => Some(p.bounds()),
         }
     }
 
@@ -157,6 +212,7 @@ impl Shape {
             Shape::Triangle(t) => t.normal(),
             Shape::Smooth(t) => t.normal(p),
             Shape::Cone(c) => c.normal(p),
+            Shape::Placed(pl) => pl.normal(p),
         }
     }
 }

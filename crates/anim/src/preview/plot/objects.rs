@@ -73,7 +73,7 @@ pub(super) fn scene_shapes(
     for o in &scene.objects {
         match o.shape {
             // An NFF's finite shapes: not drawn on the plan.
-            Shape::Triangle(_) | Shape::Smooth(_) | Shape::Cone(_) => {}
+            Shape::Triangle(_) | Shape::Smooth(_) | Shape::Cone(_) | Shape::Placed(_) => {}
             Shape::Plane(p) => {
                 // Edge-on when the normal is across the line of sight: a line.
                 let n = p.normal();

@@ -21,6 +21,7 @@
 //! focus 0.2 8 3                                            # Aperture Distance Samples
 //! ```
 
+pub mod build;
 pub mod check;
 
 use crate::fileloc::FileLoc;
