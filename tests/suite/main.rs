@@ -44,6 +44,7 @@ mod frame_cli;
 mod frame_specs;
 mod golden_frames;
 mod interrupt;
+mod lights_povray;
 mod malformed_scenes;
 mod messages;
 mod newcomer;

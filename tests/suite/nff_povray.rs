@@ -42,7 +42,7 @@ fn compare(name: &str) -> Option<f64> {
 }
 
 /// The share of pixels whose channels differ by more than `levels` somewhere.
-fn share_apart(a: &Path, b: &Path, levels: u8) -> f64 {
+pub(crate) fn share_apart(a: &Path, b: &Path, levels: u8) -> f64 {
     let (a, b) = (pixels(a), pixels(b));
     assert_eq!(a.len(), b.len(), "the two pictures differ in size");
     let apart = a

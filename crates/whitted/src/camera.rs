@@ -23,7 +23,9 @@ use crate::optics::Ray;
 use glam::DVec3;
 
 mod aspect;
+pub mod thin_lens;
 pub use aspect::NonSquare;
+pub use thin_lens::ThinLens;
 
 /// Distance from the eye to the view plane (`DistVue`).
 pub const VIEW_DISTANCE: f64 = 1.0;

@@ -66,6 +66,7 @@ pub mod exit;
 pub mod fileloc;
 pub mod fog;
 pub mod input;
+pub mod lights;
 pub mod limits;
 pub mod noise;
 pub mod object;

@@ -4,8 +4,7 @@
 
 use crate::bump::Bump;
 use crate::shapes::Shape;
-use crate::texture::{Color, Texture};
-use glam::DVec3;
+use crate::texture::Texture;
 
 /// The optical coefficients of an object (report III.1, "MATERIAU").
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -50,13 +49,5 @@ pub struct Object {
     pub material: Material,
 }
 
-/// An omnidirectional point light.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Light {
-    /// Where the light is.
-    pub position: DVec3,
-    /// Its colour, each component in 0..1.
-    pub color: Color,
-    /// Its intensity, a factor on the colour (0..1000).
-    pub intensity: f64,
-}
+/// The report's point light (it lives with the other lights, in `lights::point`).
+pub use crate::lights::Light;

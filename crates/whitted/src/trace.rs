@@ -24,6 +24,7 @@ pub mod rules;
 pub use rules::Rules;
 
 use crate::accel::{Accel, Hint, LightBuffer};
+use crate::lights::{self, SceneLight};
 use crate::object::Object;
 use crate::optics::{reflect, refract, Ray};
 pub use crate::record::{NoRecord, Record};
@@ -85,6 +86,8 @@ pub struct Tracer<'a> {
     pub(crate) scene: &'a Scene,
     accel: Arc<Accel>,
     lights: LightBuffer,
+    /// The extension's lights (`lights::build` of the scene's records).
+    ext_lights: Vec<SceneLight>,
     pub(crate) rules: Rules,
 }
 
@@ -108,6 +111,7 @@ impl<'a> Tracer<'a> {
             scene,
             accel,
             lights: LightBuffer::for_scene(scene),
+            ext_lights: lights::build(&scene.ext),
             rules: Rules::default(),
         }
     }
@@ -282,6 +286,11 @@ impl<'a> Tracer<'a> {
         } else {
             shading::direct(self, lights, p, n, v, c, m, &mut count.shadow)
         };
+        if !self.ext_lights.is_empty() {
+            let ext = &self.ext_lights[..];
+            let shadow = &mut count.shadow;
+            out = shading::add_lights(self, ext, out, p, n, v, c, m, shadow, rec);
+        }
         if depth >= self.rules.max_depth {
             return out;
         }

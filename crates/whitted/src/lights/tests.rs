@@ -1,0 +1,138 @@
+//! Unit tests of `lights::build` and of the extension's lights through the tracer: each
+//! value by hand on a floor lit from above.
+
+use super::*;
+use crate::scene::ext::{ExtLight, Modifiers};
+use crate::trace::{RayCount, Tracer};
+use crate::Scene;
+
+fn record(kind: LightKind, fade: Option<(f64, f64)>) -> ExtLight {
+    ExtLight {
+        kind,
+        color: Color::new(1.0, 0.5, 0.25),
+        intensity: 0.5,
+        mods: Modifiers {
+            fade,
+            ..Modifiers::default()
+        },
+        loc: Default::default(),
+    }
+}
+
+/// A white floor (Kd = 1: no specular) seen from the side, no report light, and
+/// `lights` as the extension's: the colour of the centre pixel's hit at the origin.
+fn floor_colour(lights: Vec<ExtLight>, blocker: bool) -> (Color, RayCount) {
+    let (n, ball) = if blocker {
+        (1, "0.6 0 3 0  1 1 1 1  1 0 0 1 0 0\n")
+    } else {
+        (0, "")
+    };
+    let src =
+        format!("1 1  0 1 10  0 0 0  0 0  {n} 1 0 0\n{ball}0 0 0  0 1 0  1 1 1 1  1 0 0 1 0 0\n");
+    let mut scene = Scene::parse(&src, "t.txt").unwrap();
+    scene.ext.lights = lights;
+    let tracer = Tracer::new(&scene);
+    let mut count = RayCount::default();
+    let c = tracer.primary(&scene.camera().ray(0.5, 0.5), &mut count);
+    (c, count)
+}
+
+#[test]
+fn build_keeps_order_kinds_and_fade() {
+    let ext = Extension {
+        lights: vec![
+            record(
+                LightKind::Directional {
+                    direction: DVec3::new(0.0, -3.0, 0.0),
+                },
+                None,
+            ),
+            record(LightKind::Point { position: DVec3::Y }, Some((2.0, 1.0))),
+        ],
+        ..Extension::default()
+    };
+    let built = build(&ext);
+    assert_eq!(built.len(), 2);
+    assert!(matches!(built[0].kind, Kind::Directional(d) if d.to_light == DVec3::Y));
+    assert_eq!(
+        built[1].fade,
+        Some(Fade {
+            distance: 2.0,
+            power: 1.0
+        })
+    );
+    // Point at distance 4 with fade 2, 1: 0.5 · 2/(1 + 2) = 1/3.
+    let inc = built[1].incident(DVec3::new(0.0, -3.0, 0.0)).unwrap();
+    assert!((inc.intensity - 1.0 / 3.0).abs() < 1e-15);
+    assert_eq!(built[1].color(), Color::new(1.0, 0.5, 0.25));
+}
+
+#[test]
+fn directional_light_on_a_floor_by_hand() {
+    // Light travelling along (1, −1, 0): N·L = cos 45°; white floor, Kd = 1:
+    // 0.2 + 0.5·cos45°·Lc.
+    let d = record(
+        LightKind::Directional {
+            direction: DVec3::new(1.0, -1.0, 0.0),
+        },
+        None,
+    );
+    let (c, count) = floor_colour(vec![d], false);
+    let k = 0.5 * std::f64::consts::FRAC_1_SQRT_2;
+    let want = Color::splat(0.2) + k * Color::new(1.0, 0.5, 0.25);
+    assert!((c - want).length() < 1e-12, "{c}");
+    assert_eq!(count.shadow, 1);
+}
+
+#[test]
+fn a_directional_shadow_is_unbounded() {
+    // A ball straight above the floor point blocks the light from above, however far.
+    let d = record(
+        LightKind::Directional {
+            direction: DVec3::new(0.0, -1.0, 0.0),
+        },
+        None,
+    );
+    let (c, _) = floor_colour(vec![d], true);
+    assert_eq!(c, Color::splat(0.2));
+}
+
+#[test]
+fn faded_spot_on_a_floor_by_hand() {
+    // Spot 4 above, aimed down: c = 1, full; fade 2, 2 at d = 4: 2/(1 + 4) = 0.4.
+    let s = record(
+        LightKind::Spot {
+            position: DVec3::new(0.0, 4.0, 0.0),
+            target: DVec3::ZERO,
+            radius: 10.0,
+            falloff: 20.0,
+            tightness: 3.0,
+        },
+        Some((2.0, 2.0)),
+    );
+    let (c, _) = floor_colour(vec![s], false);
+    let want = Color::splat(0.2) + 0.5 * 0.4 * Color::new(1.0, 0.5, 0.25);
+    assert!((c - want).length() < 1e-12, "{c}");
+}
+
+#[test]
+fn area_light_half_hidden_by_hand() {
+    // A 4 × 1 grid 6 wide at y = 6: points x = −3, −1, 1, 3. The ball of radius 0.6 at
+    // y = 3 hides x = −1 and 1 (the rays pass 3/√37 ≈ 0.49 from its centre) but not ±3
+    // (1.34 from it):
+    // half the light, 4 shadow rays; shading takes the centre, straight above.
+    let a = record(
+        LightKind::Area {
+            position: DVec3::new(0.0, 6.0, 0.0),
+            a1: DVec3::new(6.0, 0.0, 0.0),
+            a2: DVec3::new(0.0, 0.0, 1.0),
+            n1: 4,
+            n2: 1,
+        },
+        None,
+    );
+    let (c, count) = floor_colour(vec![a], true);
+    let want = Color::splat(0.2) + 0.5 * 0.5 * Color::new(1.0, 0.5, 0.25);
+    assert!((c - want).length() < 1e-12, "{c}");
+    assert_eq!(count.shadow, 4);
+}
