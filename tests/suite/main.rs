@@ -51,6 +51,7 @@ mod nff_povray;
 mod openjd_job;
 mod pgo_build;
 mod pixel_aspect;
+mod production_costs;
 mod progress;
 mod raytrace_cli;
 mod readonly_folder;

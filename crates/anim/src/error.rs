@@ -179,6 +179,14 @@ pub enum AnimError {
         /// Which frames are stale, missing or past the end.
         why: String,
     },
+    /// The plot of `animate stats` could not be drawn or written (the run failed).
+    #[error("cannot write the plot {}: {why}", shown(.path))]
+    Plot {
+        /// The plot's file.
+        path: PathBuf,
+        /// Why.
+        why: String,
+    },
     /// Standard output is closed, so streamed frames would go nowhere (bad input).
     #[error("standard output is closed: the frames would go nowhere")]
     StdoutClosed,
@@ -215,7 +223,8 @@ impl AnimError {
             AnimError::Write { .. }
             | AnimError::Stream(_)
             | AnimError::Stdout(_)
-            | AnimError::Ffmpeg(_) => Outcome::Failed,
+            | AnimError::Ffmpeg(_)
+            | AnimError::Plot { .. } => Outcome::Failed,
             AnimError::Interrupted(sig) => Outcome::Interrupted(*sig),
         }
     }

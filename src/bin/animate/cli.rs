@@ -1,6 +1,6 @@
 //! The command line of `animate` (clap): what each subcommand and option is, one file per
 //! group of subcommands (`render`: the render itself; `checks`: check and bless; `folder`:
-//! status, clean, encode, preview and view; `farm`: job and estimate), each turning its
+//! status, stats, clean, encode, preview and view; `farm`: job and estimate), each turning its
 //! options into the library's request. The work is the library's; `main.rs` calls it.
 
 use clap::{Args, Parser, Subcommand};
@@ -18,7 +18,7 @@ mod render;
 
 pub use checks::{BlessArgs, CheckArgs};
 pub use farm::{EstimateArgs, JobArgs};
-pub use folder::{CleanArgs, EncodeArgs, PreviewArgs, StatusArgs, ViewArgs};
+pub use folder::{CleanArgs, EncodeArgs, PreviewArgs, StatsArgs, StatusArgs, ViewArgs};
 pub use render::{EncodingArgs, RenderArgs};
 
 /// The most shards, for clap's ranges.
@@ -65,6 +65,10 @@ pub enum Command {
     /// Say which frames of the folder are up to date, stale or missing, from the frames'
     /// recorded provenance; renders nothing. Exit 0 all up to date, 1 not, 2 bad input.
     Status(StatusArgs),
+    /// What the frames cost, from the records each run writes beside them: totals (wall
+    /// and CPU seconds, peak memory, rays by kind), the slowest frames, and the frames more
+    /// than 2x off the pre-pass's prediction; `--plot` draws seconds per frame.
+    Stats(StatsArgs),
     /// Write a render-farm job template: an Open Job Description template (AWS Deadline
     /// Cloud's format) with a chunked render step and a video step after it.
     Job(JobArgs),

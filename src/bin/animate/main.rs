@@ -1,5 +1,5 @@
 //! `animate MANIFEST.toml`: renders the frames of an animation manifest into a folder,
-//! or streams them to standard output or ffmpeg; `status`, `preview`, `check`, `bless` and
+//! or streams them to standard output or ffmpeg; `status`, `stats`, `preview`, `check`, `bless` and
 //! `view` are subcommands. This file turns the command line (`cli`) into library calls
 //! (`whitted_anim::commands`, `render` for the render itself) and their outcome into an
 //! exit status (`whitted::exit`); `report` shows progress and results.
@@ -26,7 +26,7 @@ fn pool(threads: Option<u32>) -> anyhow::Result<rayon::ThreadPool> {
 fn encode(args: EncodeArgs) -> anyhow::Result<Outcome> {
     let project = whitted_anim::Project::load(&args.manifest)?;
     let stop = whitted_anim::process::watch_signals("animate");
-    let bar = report::Bar::new(project.manifest.frames as usize, args.quiet);
+    let bar = report::bar::Bar::new(project.manifest.frames as usize, args.quiet);
     let start = Instant::now();
     let encoded = commands::folder::encode(&project, &args.request(), &bar, &stop);
     bar.finish();
@@ -101,7 +101,7 @@ fn job(args: JobArgs) -> anyhow::Result<Outcome> {
 }
 
 fn preview(args: PreviewArgs) -> anyhow::Result<Outcome> {
-    let bar = report::Bar::new(0, args.quiet);
+    let bar = report::bar::Bar::new(0, args.quiet);
     let start = Instant::now();
     let s = pool(args.threads)?.install(|| preview::run(&args.options(), &|d, t| bar.set(d, t)));
     bar.finish();
@@ -123,6 +123,10 @@ fn run(cli: Cli) -> anyhow::Result<Outcome> {
         Some(Command::Status(a)) => {
             let (project, pool) = (a.common.load()?, pool(a.common.threads)?);
             pool.install(|| commands::status::status(&project, &a.request(), &mut stdout()))?
+        }
+        Some(Command::Stats(a)) => {
+            let (project, pool) = (a.common.load()?, pool(a.common.threads)?);
+            pool.install(|| commands::stats::stats(&project, &a.request(), &mut stdout()))?
         }
         Some(Command::Preview(args)) => preview(args)?,
         Some(Command::Job(args)) => job(args)?,

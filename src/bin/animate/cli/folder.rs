@@ -1,10 +1,11 @@
-//! The subcommands about a frame folder and its pictures: `status`, `clean`, `encode`,
+//! The subcommands about a frame folder and its pictures: `status`, `stats`, `clean`, `encode`,
 //! `preview` and `view`.
 
 use super::Common;
 use clap::Args;
 use std::path::PathBuf;
 use whitted_anim::commands::folder::{CleanRequest, EncodeRequest};
+use whitted_anim::commands::stats::StatsRequest;
 use whitted_anim::commands::status::StatusRequest;
 use whitted_anim::preview::{self, PreviewOptions};
 
@@ -72,6 +73,33 @@ pub struct StatusArgs {
     /// CRCs, RAW pixel hashes, sizes and end markers) cannot, such as in a JPEG's data.
     #[arg(long)]
     pub verify: bool,
+}
+
+#[derive(Args, Debug)]
+pub struct StatsArgs {
+    #[command(flatten)]
+    pub common: Common,
+    /// The frame folder, instead of the manifest's `[output] dir`.
+    #[arg(short, long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Print the report as JSON on standard output.
+    #[arg(long)]
+    pub json: bool,
+    /// Also draw seconds per frame against the prediction into this PNG.
+    #[arg(long, value_name = "FILE.png")]
+    pub plot: Option<PathBuf>,
+}
+
+impl StatsArgs {
+    /// The library's request.
+    pub fn request(&self) -> StatsRequest {
+        StatsRequest {
+            frames: self.common.frames.clone(),
+            dir: self.out.clone(),
+            json: self.json,
+            plot: self.plot.clone(),
+        }
+    }
 }
 
 #[derive(Args, Debug)]
