@@ -52,6 +52,7 @@ mod openjd_job;
 mod pgo_build;
 mod pixel_aspect;
 mod production_costs;
+mod production_drafts;
 mod progress;
 mod raytrace_cli;
 mod readonly_folder;

@@ -179,6 +179,9 @@ pub enum AnimError {
         /// Which frames are stale, missing or past the end.
         why: String,
     },
+    /// A draft's overrides cannot apply to this manifest (bad input).
+    #[error("{0}")]
+    Draft(String),
     /// The plot of `animate stats` could not be drawn or written (the run failed).
     #[error("cannot write the plot {}: {why}", shown(.path))]
     Plot {
@@ -219,6 +222,7 @@ impl AnimError {
             | AnimError::Export(_)
             | AnimError::VideoExists(_)
             | AnimError::NotReady { .. }
+            | AnimError::Draft(_)
             | AnimError::StdoutClosed => Outcome::BadInput,
             AnimError::Write { .. }
             | AnimError::Stream(_)

@@ -5,6 +5,8 @@
 
 use clap::{Args, Parser, Subcommand};
 use std::path::{Path, PathBuf};
+use whitted::render::Adaptive;
+use whitted_anim::project::draft::Draft;
 use whitted_anim::{AnimError, Project};
 
 #[path = "cli/checks.rs"]
@@ -113,4 +115,52 @@ impl Common {
     pub fn load(&self) -> Result<Project, AnimError> {
         Project::load(self.manifest.as_deref().unwrap_or(Path::new("")))
     }
+
+    /// The manifest's project with a draft's overrides.
+    pub fn load_draft(&self, draft: &DraftArgs) -> Result<Project, AnimError> {
+        let path = self.manifest.as_deref().unwrap_or(Path::new(""));
+        Project::load_draft(path, &draft.draft())
+    }
+}
+
+/// A draft's overrides of the manifest, for one run (render, status, stats, encode, check,
+/// bless): recorded in the frames, and written to the draft's own folder
+/// (`DIR-draft-WxH`, `-sN`, `-aa`) unless told where.
+#[derive(Args, Debug, Clone, Default)]
+pub struct DraftArgs {
+    /// Draft: frames of this size instead of the manifest's (WIDTHxHEIGHT, e.g. 160x120).
+    #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with = "scale")]
+    pub size: Option<(u32, u32)>,
+    /// Draft: frames at 1/K of the manifest's size (as `preview --scale K`).
+    #[arg(long, value_name = "K", value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub scale: Option<u32>,
+    /// Draft: an N×N grid of samples per pixel instead of the manifest's anti-aliasing.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=16),
+          conflicts_with = "aa")]
+    pub samples: Option<u32>,
+    /// Draft: adaptive anti-aliasing instead of the manifest's (as `raytrace --aa`).
+    #[arg(long, value_name = "adaptive[:T[:D[:MEASURE]]]",
+          value_parser = |s: &str| s.parse::<Adaptive>().map_err(|e| e.to_string()))]
+    pub aa: Option<Adaptive>,
+}
+
+impl DraftArgs {
+    /// The library's draft.
+    pub fn draft(&self) -> Draft {
+        Draft {
+            size: self.size,
+            scale: self.scale,
+            samples: self.samples,
+            aa: self.aa,
+        }
+    }
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("expected WIDTHxHEIGHT within 16384 a side and 2^26 pixels, found {s:?}");
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    let (w, h): (u32, u32) = (w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
+    whitted::limits::size_ok(w.into(), h.into())
+        .then_some((w, h))
+        .ok_or_else(bad)
 }

@@ -30,7 +30,7 @@ pub fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     if args.stdout.is_some() && whitted_anim::process::stdout_closed() {
         return Err(AnimError::StdoutClosed.into());
     }
-    let project = c.load()?;
+    let project = c.load_draft(&args.draft)?;
     let (m, mut anim) = (&project.manifest, Animation::new(&project)?);
     if let Some(display) = &args.display {
         anim = anim.displayed(display, "animate");

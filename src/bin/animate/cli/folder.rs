@@ -1,7 +1,7 @@
 //! The subcommands about a frame folder and its pictures: `status`, `stats`, `clean`, `encode`,
 //! `preview` and `view`.
 
-use super::Common;
+use super::{Common, DraftArgs};
 use clap::Args;
 use std::path::PathBuf;
 use whitted_anim::commands::folder::{CleanRequest, EncodeRequest};
@@ -63,6 +63,8 @@ impl PreviewArgs {
 pub struct StatusArgs {
     #[command(flatten)]
     pub common: Common,
+    #[command(flatten)]
+    pub draft: DraftArgs,
     /// The frame folder, instead of the manifest's `[output] dir`.
     #[arg(short, long, value_name = "DIR")]
     pub out: Option<PathBuf>,
@@ -79,6 +81,8 @@ pub struct StatusArgs {
 pub struct StatsArgs {
     #[command(flatten)]
     pub common: Common,
+    #[command(flatten)]
+    pub draft: DraftArgs,
     /// The frame folder, instead of the manifest's `[output] dir`.
     #[arg(short, long, value_name = "DIR")]
     pub out: Option<PathBuf>,
@@ -106,6 +110,8 @@ impl StatsArgs {
 pub struct EncodeArgs {
     /// The animation manifest (TOML) whose frames are encoded, at its fps.
     pub manifest: PathBuf,
+    #[command(flatten)]
+    pub draft: DraftArgs,
     /// The frame folder, instead of the manifest's `[output] dir`.
     #[arg(long, value_name = "DIR")]
     pub dir: Option<PathBuf>,
