@@ -53,6 +53,7 @@ mod pgo_build;
 mod pixel_aspect;
 mod production_costs;
 mod production_drafts;
+mod production_encodes;
 mod progress;
 mod raytrace_cli;
 mod readonly_folder;

@@ -123,6 +123,11 @@ pub struct EncodeArgs {
     /// Replace an existing video file.
     #[arg(long)]
     pub force: bool,
+    /// Encode a folder whose frames are sound but mixed (drafts among finals, frames of
+    /// another renderer version or other settings); missing or broken frames are still
+    /// refused.
+    #[arg(long)]
+    pub allow_mixed: bool,
     /// No progress bar and no summary.
     #[arg(short, long)]
     pub quiet: bool,
@@ -175,6 +180,7 @@ impl EncodeArgs {
             video: self.out.clone(),
             encoding: self.encoding.encoding(),
             force: self.force,
+            allow_mixed: self.allow_mixed,
         }
     }
 }

@@ -109,6 +109,7 @@ impl RenderArgs {
             verify: self.verify,
             force: self.force,
             encoding: self.encoding.encoding(),
+            allow_mixed: false,
         })
     }
 
