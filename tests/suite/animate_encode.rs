@@ -185,7 +185,7 @@ fn encode_checks_the_folder_then_makes_the_video_with_the_options() {
         .output()
         .unwrap();
     let err = String::from_utf8_lossy(&out.stderr);
-    assert!(err.contains("frames stale 4"), "{err}");
+    assert!(err.contains("frames broken 4 (damaged: "), "{err}");
     // The same options on --video.
     let other = dir.path().join("crf.mkv");
     animate()

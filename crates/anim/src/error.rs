@@ -179,6 +179,17 @@ pub enum AnimError {
         /// Which frames are stale, missing or past the end.
         why: String,
     },
+    /// A draft's overrides cannot apply to this manifest (bad input).
+    #[error("{0}")]
+    Draft(String),
+    /// The plot of `animate stats` could not be drawn or written (the run failed).
+    #[error("cannot write the plot {}: {why}", shown(.path))]
+    Plot {
+        /// The plot's file.
+        path: PathBuf,
+        /// Why.
+        why: String,
+    },
     /// Standard output is closed, so streamed frames would go nowhere (bad input).
     #[error("standard output is closed: the frames would go nowhere")]
     StdoutClosed,
@@ -211,11 +222,13 @@ impl AnimError {
             | AnimError::Export(_)
             | AnimError::VideoExists(_)
             | AnimError::NotReady { .. }
+            | AnimError::Draft(_)
             | AnimError::StdoutClosed => Outcome::BadInput,
             AnimError::Write { .. }
             | AnimError::Stream(_)
             | AnimError::Stdout(_)
-            | AnimError::Ffmpeg(_) => Outcome::Failed,
+            | AnimError::Ffmpeg(_)
+            | AnimError::Plot { .. } => Outcome::Failed,
             AnimError::Interrupted(sig) => Outcome::Interrupted(*sig),
         }
     }

@@ -176,6 +176,9 @@ pub struct Manifest {
     pub render: RenderSpec,
     /// `[check]`, when the manifest has one.
     pub check: Option<CheckSpec>,
+    /// What a draft's command-line overrides changed (`project::draft`), `None` for the
+    /// manifest as written: recorded in each frame, so a draft is told from a final.
+    pub draft: Option<String>,
 }
 
 impl Manifest {

@@ -376,5 +376,6 @@ impl<'p> Animation<'p> {
 
 mod cost;
 mod display;
+pub mod draft;
 #[cfg(test)]
 mod tests;

@@ -1,10 +1,12 @@
 //! The command line of `animate` (clap): what each subcommand and option is, one file per
 //! group of subcommands (`render`: the render itself; `checks`: check and bless; `folder`:
-//! status, clean, encode, preview and view; `farm`: job and estimate), each turning its
+//! status, stats, clean, encode, preview and view; `farm`: job and estimate), each turning its
 //! options into the library's request. The work is the library's; `main.rs` calls it.
 
 use clap::{Args, Parser, Subcommand};
 use std::path::{Path, PathBuf};
+use whitted::render::Adaptive;
+use whitted_anim::project::draft::Draft;
 use whitted_anim::{AnimError, Project};
 
 #[path = "cli/checks.rs"]
@@ -18,7 +20,7 @@ mod render;
 
 pub use checks::{BlessArgs, CheckArgs};
 pub use farm::{EstimateArgs, JobArgs};
-pub use folder::{CleanArgs, EncodeArgs, PreviewArgs, StatusArgs, ViewArgs};
+pub use folder::{CleanArgs, EncodeArgs, PreviewArgs, StatsArgs, StatusArgs, ViewArgs};
 pub use render::{EncodingArgs, RenderArgs};
 
 /// The most shards, for clap's ranges.
@@ -65,6 +67,10 @@ pub enum Command {
     /// Say which frames of the folder are up to date, stale or missing, from the frames'
     /// recorded provenance; renders nothing. Exit 0 all up to date, 1 not, 2 bad input.
     Status(StatusArgs),
+    /// What the frames cost, from the records each run writes beside them: totals (wall
+    /// and CPU seconds, peak memory, rays by kind), the slowest frames, and the frames more
+    /// than 2x off the pre-pass's prediction; `--plot` draws seconds per frame.
+    Stats(StatsArgs),
     /// Write a render-farm job template: an Open Job Description template (AWS Deadline
     /// Cloud's format) with a chunked render step and a video step after it.
     Job(JobArgs),
@@ -109,4 +115,52 @@ impl Common {
     pub fn load(&self) -> Result<Project, AnimError> {
         Project::load(self.manifest.as_deref().unwrap_or(Path::new("")))
     }
+
+    /// The manifest's project with a draft's overrides.
+    pub fn load_draft(&self, draft: &DraftArgs) -> Result<Project, AnimError> {
+        let path = self.manifest.as_deref().unwrap_or(Path::new(""));
+        Project::load_draft(path, &draft.draft())
+    }
+}
+
+/// A draft's overrides of the manifest, for one run (render, status, stats, encode, check,
+/// bless): recorded in the frames, and written to the draft's own folder
+/// (`DIR-draft-WxH`, `-sN`, `-aa`) unless told where.
+#[derive(Args, Debug, Clone, Default)]
+pub struct DraftArgs {
+    /// Draft: frames of this size instead of the manifest's (WIDTHxHEIGHT, e.g. 160x120).
+    #[arg(long, value_name = "WxH", value_parser = parse_size, conflicts_with = "scale")]
+    pub size: Option<(u32, u32)>,
+    /// Draft: frames at 1/K of the manifest's size (as `preview --scale K`).
+    #[arg(long, value_name = "K", value_parser = clap::value_parser!(u32).range(1..=1024))]
+    pub scale: Option<u32>,
+    /// Draft: an N×N grid of samples per pixel instead of the manifest's anti-aliasing.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=16),
+          conflicts_with = "aa")]
+    pub samples: Option<u32>,
+    /// Draft: adaptive anti-aliasing instead of the manifest's (as `raytrace --aa`).
+    #[arg(long, value_name = "adaptive[:T[:D[:MEASURE]]]",
+          value_parser = |s: &str| s.parse::<Adaptive>().map_err(|e| e.to_string()))]
+    pub aa: Option<Adaptive>,
+}
+
+impl DraftArgs {
+    /// The library's draft.
+    pub fn draft(&self) -> Draft {
+        Draft {
+            size: self.size,
+            scale: self.scale,
+            samples: self.samples,
+            aa: self.aa,
+        }
+    }
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("expected WIDTHxHEIGHT within 16384 a side and 2^26 pixels, found {s:?}");
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    let (w, h): (u32, u32) = (w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
+    whitted::limits::size_ok(w.into(), h.into())
+        .then_some((w, h))
+        .ok_or_else(bad)
 }

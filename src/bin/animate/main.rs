@@ -1,5 +1,5 @@
 //! `animate MANIFEST.toml`: renders the frames of an animation manifest into a folder,
-//! or streams them to standard output or ffmpeg; `status`, `preview`, `check`, `bless` and
+//! or streams them to standard output or ffmpeg; `status`, `stats`, `preview`, `check`, `bless` and
 //! `view` are subcommands. This file turns the command line (`cli`) into library calls
 //! (`whitted_anim::commands`, `render` for the render itself) and their outcome into an
 //! exit status (`whitted::exit`); `report` shows progress and results.
@@ -24,9 +24,9 @@ fn pool(threads: Option<u32>) -> anyhow::Result<rayon::ThreadPool> {
 }
 
 fn encode(args: EncodeArgs) -> anyhow::Result<Outcome> {
-    let project = whitted_anim::Project::load(&args.manifest)?;
+    let project = whitted_anim::Project::load_draft(&args.manifest, &args.draft.draft())?;
     let stop = whitted_anim::process::watch_signals("animate");
-    let bar = report::Bar::new(project.manifest.frames as usize, args.quiet);
+    let bar = report::bar::Bar::new(project.manifest.frames as usize, args.quiet);
     let start = Instant::now();
     let encoded = commands::folder::encode(&project, &args.request(), &bar, &stop);
     bar.finish();
@@ -53,7 +53,7 @@ fn view(args: ViewArgs) -> anyhow::Result<Outcome> {
 }
 
 fn bless(args: BlessArgs) -> anyhow::Result<Outcome> {
-    let (c, project) = (&args.common, args.common.load()?);
+    let (c, project) = (&args.common, args.common.load_draft(&args.draft)?);
     let anim = Animation::new(&project)?;
     let (list, refs) = (c.frames.as_deref(), args.references.as_deref());
     let (frames, refs) =
@@ -71,7 +71,7 @@ fn bless(args: BlessArgs) -> anyhow::Result<Outcome> {
 }
 
 fn check(args: CheckArgs) -> anyhow::Result<Outcome> {
-    let project = args.bless.common.load()?;
+    let project = args.bless.common.load_draft(&args.bless.draft)?;
     let overrides = args.overrides();
     let options =
         check::CheckOptions::new(&project.manifest, &overrides).map_err(report::with_flags)?;
@@ -101,7 +101,7 @@ fn job(args: JobArgs) -> anyhow::Result<Outcome> {
 }
 
 fn preview(args: PreviewArgs) -> anyhow::Result<Outcome> {
-    let bar = report::Bar::new(0, args.quiet);
+    let bar = report::bar::Bar::new(0, args.quiet);
     let start = Instant::now();
     let s = pool(args.threads)?.install(|| preview::run(&args.options(), &|d, t| bar.set(d, t)));
     bar.finish();
@@ -121,8 +121,12 @@ fn run(cli: Cli) -> anyhow::Result<Outcome> {
         Some(Command::Bless(args)) => bless(args)?,
         Some(Command::Check(args)) => check(args)?,
         Some(Command::Status(a)) => {
-            let (project, pool) = (a.common.load()?, pool(a.common.threads)?);
+            let (project, pool) = (a.common.load_draft(&a.draft)?, pool(a.common.threads)?);
             pool.install(|| commands::status::status(&project, &a.request(), &mut stdout()))?
+        }
+        Some(Command::Stats(a)) => {
+            let (project, pool) = (a.common.load_draft(&a.draft)?, pool(a.common.threads)?);
+            pool.install(|| commands::stats::stats(&project, &a.request(), &mut stdout()))?
         }
         Some(Command::Preview(args)) => preview(args)?,
         Some(Command::Job(args)) => job(args)?,

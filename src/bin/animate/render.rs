@@ -5,10 +5,13 @@
 
 use super::cli::RenderArgs;
 use super::{pool, report};
+use std::sync::Arc;
 use std::time::Instant;
 use whitted::exit::Outcome;
 use whitted::output::ImageFormat;
+use whitted_anim::frames::balance;
 use whitted_anim::frames::run::{self, Destination};
+use whitted_anim::progress::Weighted;
 use whitted_anim::{AnimError, Animation, Reporter};
 
 /// What an interrupted stream or video says (`--resume` does not apply to them): its two
@@ -27,7 +30,7 @@ pub fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     if args.stdout.is_some() && whitted_anim::process::stdout_closed() {
         return Err(AnimError::StdoutClosed.into());
     }
-    let project = c.load()?;
+    let project = c.load_draft(&args.draft)?;
     let (m, mut anim) = (&project.manifest, Animation::new(&project)?);
     if let Some(display) = &args.display {
         anim = anim.displayed(display, "animate");
@@ -48,7 +51,18 @@ pub fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     if !c.quiet {
         pool.install(|| report::warn_if_enormous(&anim, &frames));
     }
-    let bar = report::RowBar::new(frames.len(), anim.rows_per_frame(), c.quiet || args.events);
+    let quiet = c.quiet || args.events;
+    // The bar's ETA weighs each frame by the pre-pass's predicted cost (1/64 of the
+    // pixels at one sample), only when the bar shows.
+    let weighted = match report::bar::RowBar::shown(quiet) {
+        true => {
+            let costs = pool.install(|| balance::predicted_costs(&anim, &frames))?;
+            let rows = anim.rows_per_frame();
+            Some(Arc::new(Weighted::new(&frames, &costs, rows)))
+        }
+        false => None,
+    };
+    let bar = report::bar::RowBar::weighted(frames.len(), anim.rows_per_frame(), quiet, weighted);
     let reporter: &dyn Reporter = match args.events {
         true => &report::JsonLines,
         false => &bar,

@@ -123,7 +123,7 @@ pub fn entries(dir: &Path) -> Vec<String> {
 }
 
 /// What is left in a frame folder besides the run's folder lock (the library's
-/// `LOCK_FILE` and its `LOCK_FILE-<key>` files), sorted, hidden ones included; nothing when
+/// `LOCK_FILE` and its `LOCK_FILE-<key>` files) and the frames' cost records, sorted, hidden ones included; nothing when
 /// the folder does not exist.
 pub fn leftovers(dir: &Path) -> Vec<String> {
     use whitted_anim::frames::lock::LOCK_FILE;
@@ -131,9 +131,14 @@ pub fn leftovers(dir: &Path) -> Vec<String> {
         return Vec::new();
     }
     let own = format!("{LOCK_FILE}-");
+    // The hidden record folder counts only when it holds more than frames' cost records.
+    let records = dir.join(".whitted-record");
+    let only_costs =
+        !records.is_dir() || entries(&records).iter().all(|n| n.ends_with(".cost.json"));
     entries(dir)
         .into_iter()
         .filter(|n| n != LOCK_FILE && !n.starts_with(&own))
+        .filter(|n| !(n == ".whitted-record" && only_costs))
         .collect()
 }
 

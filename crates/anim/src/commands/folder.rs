@@ -74,6 +74,9 @@ pub struct EncodeRequest {
     pub encoding: Encoding,
     /// Replace an existing video.
     pub force: bool,
+    /// Encode frames that are sound but mixed (drafts and finals, renderer versions,
+    /// settings) instead of refusing the folder.
+    pub allow_mixed: bool,
 }
 
 /// An encoded video: what was encoded from where into where.
@@ -99,6 +102,7 @@ pub fn encode(
     let video = (request.video.clone()).unwrap_or_else(|| encode::default_video(&dir));
     let policy = Policy {
         force: request.force,
+        allow_mixed: request.allow_mixed,
         encoding: request.encoding.clone(),
         ..Policy::default()
     };

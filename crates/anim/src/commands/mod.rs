@@ -9,6 +9,7 @@
 //! process ended by SIGPIPE).
 //!
 //! - `status`: `animate status`, the folder's state as a table or JSON;
+//! - `stats`: `animate stats`, what the frames cost against their prediction;
 //! - `farm`: `animate job` (an OpenJD template) and `animate estimate`;
 //! - `folder`: `animate clean` and `animate encode`;
 //! - `check`: `animate check` and `animate bless`.
@@ -16,6 +17,7 @@
 pub mod check;
 pub mod farm;
 pub mod folder;
+pub mod stats;
 pub mod status;
 
 use crate::error::AnimError;

@@ -46,6 +46,7 @@ pub fn status(
                 .map(|(f, c)| (f.to_string(), c.into()))
                 .collect();
             doc["predicted_rays"] = per_frame.into();
+            doc["draft"] = project.manifest.draft.clone().into();
             serde_json::to_string_pretty(&doc).unwrap_or_default() + "\n"
         }
         false => report.table(&dir),

@@ -28,26 +28,48 @@ pub fn default_video(dir: &Path) -> PathBuf {
     PathBuf::from(name)
 }
 
-/// Refuses a folder that is not complete and up to date, saying what is not.
-fn ready(anim: &Animation, dir: &Path) -> Result<(), AnimError> {
+/// Refuses a folder that is not complete and up to date, saying what is not, frame by
+/// frame: missing frames, broken ones (damaged, cut short, of another size), and mixed
+/// ones (drafts among finals, another renderer, other settings), the last only unless
+/// `allow_mixed`.
+fn ready(anim: &Animation, dir: &Path, allow_mixed: bool) -> Result<(), AnimError> {
     let all: Vec<u32> = (0..anim.manifest.frames).collect();
     let report = status(anim, dir, &all, false);
     let mut why = Vec::new();
     if !report.missing.is_empty() {
         why.push(format!("missing {}", ranges(&report.missing)));
     }
-    if !report.stale.is_empty() {
-        why.push(format!("stale {}", ranges(&report.stale)));
+    let mut mixed = false;
+    for (reason, frames) in &report.stale_why {
+        let broken = reason.starts_with("damaged");
+        if broken || !allow_mixed {
+            why.push(format!("{} {} ({reason})", kind(reason), ranges(frames)));
+            mixed |= !broken;
+        }
     }
-    match why.is_empty() {
-        true => Ok(()),
-        false => Err(AnimError::NotReady {
-            dir: dir.to_path_buf(),
-            why: format!(
-                "frames {} (`animate status` says more; `animate MANIFEST --resume` completes it)",
-                why.join(", ")
-            ),
-        }),
+    if why.is_empty() {
+        return Ok(());
+    }
+    let hint = match mixed {
+        true => "`--allow-mixed` encodes mixed frames anyway; `animate MANIFEST --resume` renders them again",
+        false => "`animate MANIFEST --resume` completes it",
+    };
+    Err(AnimError::NotReady {
+        dir: dir.to_path_buf(),
+        why: format!("frames {} ({hint})", why.join("; ")),
+    })
+}
+
+/// What a stale frame's reason makes it, in the refusal's words.
+fn kind(reason: &str) -> &'static str {
+    if reason.starts_with("damaged") {
+        "broken"
+    } else if reason.contains("draft") {
+        "drafts mixed with finals"
+    } else if reason.starts_with("the renderer was") {
+        "of another renderer version"
+    } else {
+        "stale"
     }
 }
 
@@ -70,7 +92,7 @@ pub fn encode(
     stop: &AtomicUsize,
 ) -> Result<Summary, AnimError> {
     let _lock = super::lock::lock(dir, &anim.manifest.path)?;
-    ready(anim, dir)?;
+    ready(anim, dir, policy.allow_mixed)?;
     check_target(video, policy.force)?;
     let (w, h, fps) = (anim.width, anim.height, anim.manifest.fps);
     let ffmpeg = Ffmpeg::start(video, w, h, fps, &policy.encoding)?;

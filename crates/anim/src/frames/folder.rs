@@ -63,8 +63,10 @@ pub fn temporaries(anim: &Animation, dir: &Path) -> Vec<PathBuf> {
     list(dir, &|t| frame_of(anim, t).is_some(), &mut found);
     let records = dir.join(RAW_RECORDS);
     let record = |t: &str| {
-        t.strip_suffix(".txt")
-            .is_some_and(|f| frame_of(anim, f).is_some())
+        let frame = t
+            .strip_suffix(".txt")
+            .or_else(|| t.strip_suffix(super::cost::COST_SUFFIX));
+        frame.is_some_and(|f| frame_of(anim, f).is_some())
     };
     list(&records, &record, &mut found);
     found.sort();
@@ -77,6 +79,11 @@ pub(crate) fn remove(paths: &[PathBuf]) -> std::io::Result<usize> {
     for p in paths {
         std::fs::remove_file(p)?;
         n += 1;
+        // A removed frame's cost record goes with it (not counted: it is not a frame).
+        let spent = super::cost::cost_path(p);
+        if spent.is_file() {
+            std::fs::remove_file(spent)?;
+        }
         let record = raw_record_path(p);
         if p.extension().is_some_and(|e| e == "raw") && record.is_file() {
             std::fs::remove_file(record)?;

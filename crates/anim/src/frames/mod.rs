@@ -13,9 +13,11 @@
 //! - `video`: ffmpeg, checked before the first frame; `encode`: a rendered folder into a
 //!   video; `tags`: its BT.709 matrix and colour tags;
 //! - `balance`: shards of equal predicted cost from a small pre-pass; `estimate`: the
-//!   predicted cost and time of a render.
+//!   predicted cost and time of a render; `cost`: what each frame cost, recorded beside
+//!   it.
 
 pub mod balance;
+pub mod cost;
 pub mod encode;
 pub mod estimate;
 pub mod events;

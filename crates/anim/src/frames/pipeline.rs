@@ -15,6 +15,7 @@
 //! when `stop` holds a signal number, and after the first failure; the frames already
 //! finished stay finished.
 
+use super::cost::{self, Meter};
 use super::events::{Event, Reporter};
 use super::folder;
 use super::lock::lock;
@@ -65,10 +66,16 @@ fn with_path(path: &Path, e: OutputError) -> OutputError {
 
 /// Renders frame `frame` and writes it with its provenance under its final name; a RAW
 /// frame's record, written after it, carries the SHA-256 of its pixels.
-fn write_frame(anim: &Animation, dir: &Path, frame: u32) -> Result<RayCount, AnimError> {
+fn write_frame(
+    anim: &Animation,
+    dir: &Path,
+    frame: u32,
+    meter: &Meter,
+) -> Result<RayCount, AnimError> {
+    let measuring = meter.start();
     let path = anim.frame_path(dir, frame);
     let digest = provenance::digest(anim, frame);
-    let mut stamp = provenance::stamp(anim, frame, digest);
+    let mut stamp = provenance::stamp(anim, frame, digest.clone());
     let write = |source| AnimError::Write { frame, source };
     let format = anim.format();
     let rays = if format.is_layered() {
@@ -91,6 +98,13 @@ fn write_frame(anim: &Animation, dir: &Path, frame: u32) -> Result<RayCount, Ani
         }
         rays
     };
+    let spent = meter.finish(measuring, frame, digest, &rays);
+    cost::write(&path, &spent).map_err(|source| {
+        write(OutputError::Io {
+            path: cost::cost_path(&path),
+            source,
+        })
+    })?;
     Ok(rays)
 }
 
@@ -215,13 +229,14 @@ pub(crate) fn render_to_folder(
 
     let failure: Mutex<Option<AnimError>> = Mutex::new(None);
     let failed = || failure.lock().map(|f| f.is_some()).unwrap_or(true);
+    let meter = Meter::default();
     // One frame: rendered, encoded and written on its worker; the first failure is kept.
     let work = |frame: u32| -> RayCount {
         if stopped(stop).is_some() || failed() {
             return RayCount::default();
         }
         let start = Instant::now();
-        match write_frame(anim, dir, frame) {
+        match write_frame(anim, dir, frame, &meter) {
             Ok(rays) => {
                 let seconds = start.elapsed().as_secs_f64();
                 reporter.event(Event::Finished {

@@ -25,4 +25,7 @@ pub struct Policy {
     pub force: bool,
     /// How a video is encoded.
     pub encoding: Encoding,
+    /// `encode`: take frames that are sound but not up to date (drafts among finals,
+    /// another renderer or other settings) instead of refusing the folder.
+    pub allow_mixed: bool,
 }

@@ -22,6 +22,8 @@ use whitted::scene::{Scene, ShapeSpec};
 
 /// The keyword of the digest in every format.
 pub(crate) const DIGEST_KEY: &str = "whitted:digest";
+/// The keyword of a draft's label (only drafts carry it).
+pub const DRAFT_KEY: &str = "whitted:draft";
 /// The hidden folder holding RAW frames' records.
 pub(crate) const RAW_RECORDS: &str = ".whitted-record";
 
@@ -136,6 +138,11 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
 pub fn digest(anim: &Animation, frame: u32) -> String {
     let mut bytes = b"whitted frame\0".to_vec();
     bytes.extend(serde_json::to_vec(&anim.settings()).unwrap_or_default());
+    // A draft's label (none for a final, whose digests stay what they were).
+    if let Some(draft) = &anim.manifest.draft {
+        bytes.extend(b"\0draft\0");
+        bytes.extend(draft.as_bytes());
+    }
     for t in anim.timeline.times(frame) {
         let state = anim.timeline.at(t);
         scene_bytes(&state.scene, &mut bytes);
@@ -161,7 +168,7 @@ pub(crate) fn stamp(anim: &Animation, frame: u32, digest: String) -> Vec<(String
         Some(b) => format!(", motion blur {} frame(s) x {}", b.shutter, b.samples),
         None => String::new(),
     };
-    vec![
+    let mut pairs = vec![
         (DIGEST_KEY.into(), digest),
         (
             "Software".into(),
@@ -194,7 +201,11 @@ pub(crate) fn stamp(anim: &Animation, frame: u32, digest: String) -> Vec<(String
                 ),
             },
         ),
-    ]
+    ];
+    if let Some(draft) = &anim.manifest.draft {
+        pairs.push((DRAFT_KEY.into(), draft.clone()));
+    }
+    pairs
 }
 
 /// A path's file name: the stamp names files, not the folders they were reached through,

@@ -7,7 +7,7 @@
 //! `frames` was lowered) are listed apart (`folder::beyond`).
 
 use super::folder::beyond;
-use super::provenance::{digest, inspect, stamp, Inspection, Record};
+use super::provenance::{digest, inspect, stamp, Inspection, Record, DRAFT_KEY};
 use crate::project::Animation;
 use rayon::prelude::*;
 use serde::Serialize;
@@ -48,6 +48,14 @@ fn changed(anim: &Animation, frame: u32, record: &Record) -> String {
     }
     let recorded = |key: &str| record.pairs.iter().find(|(k, _)| k == key).map(|p| &p.1);
     let now = stamp(anim, frame, String::new());
+    match (recorded(DRAFT_KEY), &anim.manifest.draft) {
+        (Some(old), None) => return format!("it is a draft ({old}), now the final"),
+        (None, Some(new)) => return format!("it is a final, now a draft ({new})"),
+        (Some(old), Some(new)) if old != new => {
+            return format!("it is a draft ({old}), now a draft ({new})")
+        }
+        _ => {}
+    }
     for (key, value) in now.iter().skip(1) {
         let what = match key.as_str() {
             "whitted:manifest" => "the manifest was",

@@ -155,6 +155,7 @@ impl Source<'_> {
             render,
             output,
             check,
+            draft: None,
         })
     }
 }

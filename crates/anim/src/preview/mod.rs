@@ -14,7 +14,7 @@
 //! file is written under a hidden temporary name and renamed when complete.
 
 mod clip;
-mod font;
+pub(crate) mod font;
 mod gif;
 mod legend;
 mod plot;

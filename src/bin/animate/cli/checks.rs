@@ -1,7 +1,7 @@
 //! `animate check` and `animate bless`: the references, the limits, and where the results
 //! go (a table or JSON on standard output, JUnit, an HTML page).
 
-use super::Common;
+use super::{Common, DraftArgs};
 use clap::Args;
 use std::path::PathBuf;
 use whitted_anim::check::export::{Exporter, Html, Json, Junit, Sink, Table};
@@ -19,6 +19,8 @@ pub struct BlessArgs {
     /// --html over files that animate did not write.
     #[arg(long)]
     pub force: bool,
+    #[command(flatten)]
+    pub draft: DraftArgs,
 }
 
 #[derive(Args, Debug)]

@@ -1,10 +1,11 @@
-//! The subcommands about a frame folder and its pictures: `status`, `clean`, `encode`,
+//! The subcommands about a frame folder and its pictures: `status`, `stats`, `clean`, `encode`,
 //! `preview` and `view`.
 
-use super::Common;
+use super::{Common, DraftArgs};
 use clap::Args;
 use std::path::PathBuf;
 use whitted_anim::commands::folder::{CleanRequest, EncodeRequest};
+use whitted_anim::commands::stats::StatsRequest;
 use whitted_anim::commands::status::StatusRequest;
 use whitted_anim::preview::{self, PreviewOptions};
 
@@ -62,6 +63,8 @@ impl PreviewArgs {
 pub struct StatusArgs {
     #[command(flatten)]
     pub common: Common,
+    #[command(flatten)]
+    pub draft: DraftArgs,
     /// The frame folder, instead of the manifest's `[output] dir`.
     #[arg(short, long, value_name = "DIR")]
     pub out: Option<PathBuf>,
@@ -75,9 +78,40 @@ pub struct StatusArgs {
 }
 
 #[derive(Args, Debug)]
+pub struct StatsArgs {
+    #[command(flatten)]
+    pub common: Common,
+    #[command(flatten)]
+    pub draft: DraftArgs,
+    /// The frame folder, instead of the manifest's `[output] dir`.
+    #[arg(short, long, value_name = "DIR")]
+    pub out: Option<PathBuf>,
+    /// Print the report as JSON on standard output.
+    #[arg(long)]
+    pub json: bool,
+    /// Also draw seconds per frame against the prediction into this PNG.
+    #[arg(long, value_name = "FILE.png")]
+    pub plot: Option<PathBuf>,
+}
+
+impl StatsArgs {
+    /// The library's request.
+    pub fn request(&self) -> StatsRequest {
+        StatsRequest {
+            frames: self.common.frames.clone(),
+            dir: self.out.clone(),
+            json: self.json,
+            plot: self.plot.clone(),
+        }
+    }
+}
+
+#[derive(Args, Debug)]
 pub struct EncodeArgs {
     /// The animation manifest (TOML) whose frames are encoded, at its fps.
     pub manifest: PathBuf,
+    #[command(flatten)]
+    pub draft: DraftArgs,
     /// The frame folder, instead of the manifest's `[output] dir`.
     #[arg(long, value_name = "DIR")]
     pub dir: Option<PathBuf>,
@@ -89,6 +123,11 @@ pub struct EncodeArgs {
     /// Replace an existing video file.
     #[arg(long)]
     pub force: bool,
+    /// Encode a folder whose frames are sound but mixed (drafts among finals, frames of
+    /// another renderer version or other settings); missing or broken frames are still
+    /// refused.
+    #[arg(long)]
+    pub allow_mixed: bool,
     /// No progress bar and no summary.
     #[arg(short, long)]
     pub quiet: bool,
@@ -141,6 +180,7 @@ impl EncodeArgs {
             video: self.out.clone(),
             encoding: self.encoding.encoding(),
             force: self.force,
+            allow_mixed: self.allow_mixed,
         }
     }
 }

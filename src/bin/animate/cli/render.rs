@@ -2,7 +2,7 @@
 //! the frames go (a folder, standard output, a video), ffmpeg's encoding, progress.
 
 use super::super::report::Usage;
-use super::{Common, MAX_SHARDS};
+use super::{Common, DraftArgs, MAX_SHARDS};
 use clap::Args;
 use std::io::IsTerminal;
 use std::path::PathBuf;
@@ -55,6 +55,8 @@ pub struct RenderArgs {
     pub video: Option<PathBuf>,
     #[command(flatten)]
     pub encoding: EncodingArgs,
+    #[command(flatten)]
+    pub draft: DraftArgs,
     /// Report progress as JSON lines on standard error (for schedulers and scripts)
     /// instead of a progress bar.
     #[arg(long)]
@@ -107,6 +109,7 @@ impl RenderArgs {
             verify: self.verify,
             force: self.force,
             encoding: self.encoding.encoding(),
+            allow_mixed: false,
         })
     }
 
