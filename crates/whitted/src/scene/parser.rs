@@ -270,6 +270,17 @@ impl<'a> Parser<'a> {
 }
 
 pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
+    let mut scene = read(src, file)?;
+    for (object, spec) in crate::scene::ext::build::objects(&scene.ext)? {
+        scene.objects.push(object);
+        scene.specs.push(spec);
+    }
+    Ok(scene)
+}
+
+/// The records as read, the extension's left in `scene.ext` without its objects drawn
+/// (what the reader's own tests look at).
+pub(super) fn read(src: &str, file: &str) -> Result<Scene> {
     let mut p = Parser {
         lexer: Lexer::new(src),
         file,
@@ -370,10 +381,6 @@ pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
             first: Some(tok),
         };
         return Err(counts.explain(src, file, record, p.error(&tok, msg, "")));
-    }
-    for (object, spec) in crate::scene::ext::build::objects(&extension)? {
-        objects.push(object);
-        specs.push(spec);
     }
     Ok(Scene {
         width: width as u32,

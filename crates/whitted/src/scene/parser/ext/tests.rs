@@ -11,7 +11,7 @@ fn file(rest: &str) -> String {
 }
 
 fn parse(rest: &str) -> Scene {
-    Scene::parse(&file(rest), "dir/s.txt").unwrap_or_else(|e| panic!("{e}"))
+    crate::scene::parser::read(&file(rest), "dir/s.txt").unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// The error's text and its line:column.
