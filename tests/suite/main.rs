@@ -38,6 +38,7 @@ mod exr_frames;
 mod exr_manifest;
 mod exr_oracles;
 mod ext_shape_properties;
+mod ext_tracks;
 mod farm_shard;
 mod farm_slurm;
 mod frame_cli;

@@ -27,6 +27,7 @@ pub const SCENES: &[&str] = &[
     "bounce.txt",
     "glass-cluster.txt",
     "orbit.txt",
+    "showcase.txt",
 ];
 
 /// The shipped manifests, in `animations/`.
@@ -36,6 +37,7 @@ pub const ANIMATIONS: &[&str] = &[
     "fog.toml",
     "orbit-passes.toml",
     "orbit.toml",
+    "showcase.toml",
     "turn-to-glass.toml",
 ];
 

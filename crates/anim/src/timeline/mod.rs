@@ -9,6 +9,7 @@
 //! will produce, at every time a frame of the sequence will sample, against the bounds of
 //! SPEC §1; a refusal names the manifest's line and column, the track and the frame.
 
+mod bounds;
 mod camera;
 mod ease;
 mod spline;
@@ -91,7 +92,7 @@ enum Gaze {
     /// A fixed point (a still camera's `look_at = [x, y, z]`).
     Point(DVec3),
     /// An object or light, followed: its kind and index.
-    Follow(String, usize),
+    Follow(target::Subject),
 }
 
 /// The scene and camera of every time of a sequence.
@@ -148,7 +149,7 @@ impl Timeline {
             None => Gaze::Path,
             Some(LookAt::Point(p)) => Gaze::Point(*p),
             Some(LookAt::Object { name, loc }) => match target::parse_subject(name, &base) {
-                Ok((kind, index)) => Gaze::Follow(kind, index),
+                Ok(subject) => Gaze::Follow(subject),
                 Err(m) => {
                     refuse(invalid(loc, format!("look_at: {m}")));
                     Gaze::Path
@@ -187,6 +188,7 @@ impl Timeline {
             gaze,
         };
         timeline.check_values()?;
+        timeline.check_records()?;
         Ok(timeline)
     }
 
@@ -223,7 +225,7 @@ impl Timeline {
         let look_at = match &self.gaze {
             Gaze::Path => path_look,
             Gaze::Point(p) => *p,
-            Gaze::Follow(kind, index) => target::subject_point(kind, *index, &scene),
+            Gaze::Follow(subject) => target::subject_point(*subject, &scene),
         };
         Snapshot {
             scene,
@@ -245,36 +247,6 @@ impl Timeline {
                 (t.spec.target.clone(), points)
             })
             .collect()
-    }
-
-    /// Every value of every track, at every time a frame samples, within SPEC §1's bounds.
-    fn check_values(&self) -> Result<(), ManifestError> {
-        for (n, track) in self.tracks.iter().enumerate() {
-            for frame in 0..self.frames {
-                for t in self.times(frame) {
-                    let value = track.spec.motion.value_at(t, self.frames);
-                    if let Err(why) = track.target.check(value) {
-                        let shown = match track.target.kind() {
-                            Kind::Number => format!("{}", value.x),
-                            Kind::Vector => format!("[{}, {}, {}]", value.x, value.y, value.z),
-                        };
-                        let at = if t == f64::from(frame) {
-                            format!("frame {frame}")
-                        } else {
-                            format!("frame {frame} (motion-blur time {t})")
-                        };
-                        let message = format!(
-                            "track {} (`{}`): at {at} its value {shown} is out of bounds: {why}",
-                            n + 1,
-                            track.spec.target
-                        );
-                        let loc = track.spec.motion.loc_at(t, &track.spec.loc);
-                        return Err(invalid(loc, message));
-                    }
-                }
-            }
-        }
-        Ok(())
     }
 }
 

@@ -10,14 +10,18 @@
 //!                               #   kd kr kt ior bump
 //! target = "light 1 position"   # light N position|color|intensity
 //! target = "fog distance"       # no N
+//! target = "box 2 max"          # the extension's records and names: `ext`, `subject`
 //! ```
 
 use crate::typo::did_you_mean;
+pub use ext::{ExtField, Record};
 use glam::DVec3;
+pub use subject::{parse_subject, Subject};
 use whitted::bump::Bump;
 use whitted::fog::Fog;
 use whitted::limits::MAX_INTENSITY;
-use whitted::scene::{direction, Scene};
+use whitted::scene::ext::ExtItem;
+use whitted::scene::{direction, Scene, ShapeSpec};
 use whitted::texture::Texture;
 
 /// A number or an `[x, y, z]`; numbers travel as `(x, 0, 0)` through interpolation.
@@ -68,10 +72,12 @@ pub enum Field {
     Intensity,
     /// The fog's distance, > 0 (`fog distance`).
     FogDistance,
+    /// A field of an extension record (`box 1 max`, `spot 1 falloff`, `focus distance`).
+    Ext(ExtField),
 }
 
 /// A resolved target: the field and, for objects and lights, the index into
-/// `Scene::objects` or `Scene::lights`.
+/// `Scene::objects` or `Scene::lights` (for an extension light, `Scene::ext.lights`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Target {
     /// The value animated.
@@ -115,88 +121,120 @@ fn fields_of(kind: &str) -> Option<Vec<(&'static str, Field)>> {
     Some(own.iter().chain(MATERIAL_FIELDS.iter()).copied().collect())
 }
 
-/// The object indices of `kind` in `scene`, in file order.
-pub fn objects_of(scene: &Scene, kind: &str) -> Vec<usize> {
-    (0..scene.specs.len())
-        .filter(|&i| scene.specs[i].kind() == kind)
-        .collect()
+/// The point a subject (resolved by `parse_subject`) stands for in `scene`.
+pub fn subject_point(subject: Subject, scene: &Scene) -> DVec3 {
+    subject::point(subject, scene).unwrap_or(scene.look_at)
 }
 
-/// Resolves `KIND N` (no field) to a point: the object's anchor or the light's position.
-/// Used by `look_at = "sphere 2"`.
-pub fn parse_subject(text: &str, scene: &Scene) -> Result<(String, usize), String> {
-    let words: Vec<&str> = text.split_whitespace().collect();
-    let [kind, n] = words[..] else {
+/// The field named `name` among `fields`, or why not.
+fn pick<T: Copy>(what: &str, name: &str, fields: &[(&'static str, T)]) -> Result<T, String> {
+    if let Some(&(_, field)) = fields.iter().find(|(n, _)| *n == name) {
+        return Ok(field);
+    }
+    let names: Vec<&str> = fields.iter().map(|(n, _)| *n).collect();
+    if names.is_empty() {
         return Err(format!(
-            "expected `KIND N` (e.g. \"sphere 2\" or \"light 1\"), found {text:?}"
+            "{what} has no field `{name}` that a track can animate"
         ));
-    };
-    let index = index_of(kind, n, scene)?;
-    Ok((kind.to_string(), index))
-}
-
-/// The point `KIND N` stands for in `scene` (resolved by `parse_subject`).
-pub fn subject_point(kind: &str, index: usize, scene: &Scene) -> DVec3 {
-    if kind == "light" {
-        scene.lights[index].position
-    } else {
-        scene.specs[index].anchor()
     }
+    let hint = did_you_mean(name, names.iter().copied());
+    Err(format!(
+        "{what} has no field `{name}`{hint}: expected one of {}",
+        names.join(", ")
+    ))
 }
 
-fn index_of(kind: &str, n: &str, scene: &Scene) -> Result<usize, String> {
-    let candidates = match kind {
-        "light" => (0..scene.lights.len()).collect(),
-        "sphere" | "plane" | "cylinder" => objects_of(scene, kind),
-        _ => return Err(unknown_kind(kind)),
+/// The field `name` of `subject` (written `what` in messages).
+fn field_of(subject: Subject, what: &str, name: &str, scene: &Scene) -> Result<Target, String> {
+    let ext = |record, fields: Vec<(&'static str, Kind)>, index| {
+        let (name, kind) = fields
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|&(n, k)| (if n == "position" { "p" } else { n }, k))
+            .ok_or_else(|| pick(what, name, &fields).unwrap_err())?;
+        let field = Field::Ext(ExtField { record, name, kind });
+        Ok::<_, String>(Target { field, index })
     };
-    let count = candidates.len();
-    match n.parse::<usize>() {
-        Ok(k) if (1..=count).contains(&k) => Ok(candidates[k - 1]),
-        Ok(k) => Err(format!(
-            "{kind} {k} does not exist: the scene has {count} {kind}(s), numbered from 1"
-        )),
-        Err(_) => Err(format!("expected a {kind} number from 1, found `{n}`")),
+    match subject {
+        Subject::Fog => Ok(Target {
+            field: pick(what, name, &fields_of("fog").unwrap_or_default())?,
+            index: 0,
+        }),
+        Subject::Focus => ext(Record::Focus, ext::FOCUS_FIELDS.to_vec(), 0),
+        Subject::Light(i) => Ok(Target {
+            field: pick(what, name, &fields_of("light").unwrap_or_default())?,
+            index: i,
+        }),
+        Subject::ExtLight(i) => {
+            let l = &scene.ext.lights[i];
+            ext(Record::Light(i), ext::light_fields(&l.kind, &l.mods), i)
+        }
+        Subject::Object(i) => match scene.specs[i] {
+            ShapeSpec::Ext { item, .. } => {
+                let item = item as usize;
+                let record = &scene.ext.objects[item];
+                let own = ext::object_fields(record);
+                if own.iter().any(|(n, _)| *n == name) {
+                    return ext(Record::Object(item), own, i);
+                }
+                let material: &[(&str, Field)] = match record {
+                    ExtItem::Csg(_) => &[],
+                    ExtItem::Shape(_) => &MATERIAL_FIELDS,
+                };
+                let mut all: Vec<(&'static str, Field)> = own
+                    .iter()
+                    .map(|&(n, kind)| {
+                        let f = ExtField {
+                            record: Record::Object(item),
+                            name: n,
+                            kind,
+                        };
+                        (n, Field::Ext(f))
+                    })
+                    .collect();
+                all.extend(material.iter().copied());
+                Ok(Target {
+                    field: pick(what, name, &all)?,
+                    index: i,
+                })
+            }
+            ref spec => Ok(Target {
+                field: pick(what, name, &fields_of(spec.kind()).unwrap_or_default())?,
+                index: i,
+            }),
+        },
     }
-}
-
-/// The kinds a target may name (a subject, `look_at = "KIND N"`, all but the fog).
-const KINDS: [&str; 5] = ["sphere", "plane", "cylinder", "light", "fog"];
-
-fn unknown_kind(kind: &str) -> String {
-    let hint = did_you_mean(kind, KINDS.into_iter().filter(|&k| k != kind));
-    format!("unknown kind `{kind}`{hint}: expected sphere, plane, cylinder, light or fog")
 }
 
 impl Target {
-    /// Parses `KIND N FIELD` (or `fog distance`) against `scene`.
+    /// Parses `KIND N FIELD`, `NAME FIELD`, `fog distance` or `focus FIELD` against
+    /// `scene`.
     pub fn parse(text: &str, scene: &Scene) -> Result<Target, String> {
         let words: Vec<&str> = text.split_whitespace().collect();
-        let (kind, n, field) = match words[..] {
-            ["fog", field] => ("fog", None, field),
-            [kind, n, field] if kind != "fog" => (kind, Some(n), field),
-            _ => {
-                return Err(format!(
-                    "expected `KIND N FIELD` (e.g. \"sphere 1 center\") or \"fog distance\", found {text:?}"
-                ))
+        let usage = || {
+            format!(
+                "expected `KIND N FIELD` (e.g. \"sphere 1 center\"), `NAME FIELD`, \"fog distance\" or \"focus distance\", found {text:?}"
+            )
+        };
+        let (subject, what, field) = match words[..] {
+            ["fog", field] => (Subject::Fog, "fog".to_string(), field),
+            ["focus", field] => {
+                if scene.ext.focus.is_none() {
+                    return Err("the scene has no `focus` record to animate".into());
+                }
+                (Subject::Focus, "focus".to_string(), field)
             }
+            [kind, n, field] if kind != "fog" && kind != "focus" => {
+                (subject::numbered(kind, n, scene)?, kind.to_string(), field)
+            }
+            [name, field] => match subject::named(name, scene) {
+                Some(s) => (s, format!("`{name}`"), field),
+                None if subject::KINDS.contains(&name) => return Err(usage()),
+                None => return Err(subject::unknown_kind(name)),
+            },
+            _ => return Err(usage()),
         };
-        let Some(fields) = fields_of(kind) else {
-            return Err(unknown_kind(kind));
-        };
-        let Some(&(_, field)) = fields.iter().find(|(name, _)| *name == field) else {
-            let names: Vec<&str> = fields.iter().map(|(name, _)| *name).collect();
-            let hint = did_you_mean(field, names.iter().copied());
-            return Err(format!(
-                "{kind} has no field `{field}`{hint}: expected one of {}",
-                names.join(", ")
-            ));
-        };
-        let index = match n {
-            Some(n) => index_of(kind, n, scene)?,
-            None => 0,
-        };
-        let target = Target { field, index };
+        let target = field_of(subject, &what, field, scene)?;
         target.applicable(scene)?;
         Ok(target)
     }
@@ -212,6 +250,7 @@ impl Target {
             | Field::Bump
             | Field::Intensity
             | Field::FogDistance => Kind::Number,
+            Field::Ext(f) => f.kind,
             _ => Kind::Vector,
         }
     }
@@ -222,12 +261,27 @@ impl Target {
         matches!(
             self.field,
             Field::Center | Field::Radius | Field::Point | Field::Normal | Field::Axis | Field::Kt
-        )
+        ) || matches!(self.field, Field::Ext(f) if matches!(f.record, Record::Object(_)))
     }
 
     /// Whether the field is a position, so that it may follow a circle.
     pub fn is_position(&self) -> bool {
-        matches!(self.field, Field::Center | Field::Point | Field::Position)
+        const POINTS: [&str; 10] = [
+            "center",
+            "point",
+            "a",
+            "b",
+            "p",
+            "target",
+            "translate",
+            "p1",
+            "p2",
+            "p3",
+        ];
+        match self.field {
+            Field::Ext(f) => POINTS.contains(&f.name),
+            f => matches!(f, Field::Center | Field::Point | Field::Position),
+        }
     }
 
     /// Refuses fields the object's record does not carry: `color` on a procedural texture,
@@ -268,6 +322,7 @@ impl Target {
             Field::Center | Field::Point | Field::Position if !v.is_finite() => {
                 Err("coordinates must be finite".into())
             }
+            Field::Ext(_) if !v.is_finite() => Err("values must be finite".into()),
             Field::Radius if !(x.is_finite() && x > 0.0) => {
                 Err("a radius must be greater than 0".into())
             }
@@ -294,7 +349,12 @@ impl Target {
     }
 }
 
+pub(crate) mod ext;
+mod subject;
 mod value;
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod ext_tests;

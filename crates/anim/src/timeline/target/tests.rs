@@ -168,7 +168,10 @@ fn geometry_and_positions() {
     assert!(!t("light 1 position").moves_geometry());
     assert!(t("light 1 position").is_position());
     assert!(!t("plane 1 normal").is_position());
-    assert_eq!(parse_subject("light 2", &s).unwrap(), ("light".into(), 1));
-    assert_eq!(subject_point("sphere", 1, &s), DVec3::new(2.0, 0.5, 0.0));
+    assert_eq!(parse_subject("light 2", &s).unwrap(), Subject::Light(1));
+    assert_eq!(
+        subject_point(Subject::Object(1), &s),
+        DVec3::new(2.0, 0.5, 0.0)
+    );
     assert!(parse_subject("sphere", &s).is_err());
 }

@@ -1,11 +1,13 @@
 //! Reading and writing a track's value in a scene: `Target::read` gives what the base
 //! scene holds, `Target::apply` puts a value in (numbers travel as `(x, 0, 0)`), through
-//! the fog's distance and a texture's colours as the report's records lay them out.
+//! the fog's distance and a texture's colours as the report's records lay them out; an
+//! extension record's field through `ext`.
 
 use super::{Field, Target};
 use glam::DVec3;
 use whitted::bump::Bump;
 use whitted::fog::Fog;
+use whitted::scene::ext::ExtItem;
 use whitted::scene::{direction, Scene, ShapeSpec};
 use whitted::texture::Texture;
 
@@ -20,6 +22,7 @@ impl Target {
             colors(&o.texture)
         });
         match (self.field, spec) {
+            (Field::Ext(f), _) => super::ext::read(&scene.ext, &f),
             (Field::Center, Some(ShapeSpec::Sphere { center, .. })) => *center,
             (Field::Radius, Some(ShapeSpec::Sphere { radius, .. }))
             | (Field::Radius, Some(ShapeSpec::Cylinder { radius, .. })) => num(*radius),
@@ -49,6 +52,23 @@ impl Target {
     /// Puts `v` into `scene` (checked with `check` beforehand), rebuilding the shape from
     /// its record when the field is geometric.
     pub fn apply(&self, scene: &mut Scene, v: DVec3) {
+        self.put(scene, v);
+        // An extension object's record says what its object says, as the file would.
+        if let Some(ShapeSpec::Ext { item, .. }) = scene.specs.get(self.index) {
+            let on_object = !matches!(
+                self.field,
+                Field::Ext(_) | Field::Position | Field::LightColor | Field::Intensity
+            );
+            if let (true, Some(ExtItem::Shape(o))) =
+                (on_object, scene.ext.objects.get_mut(*item as usize))
+            {
+                o.texture = scene.objects[self.index].texture;
+                o.material = scene.objects[self.index].material;
+            }
+        }
+    }
+
+    fn put(&self, scene: &mut Scene, v: DVec3) {
         let x = v.x;
         let i = self.index;
         match self.field {
@@ -89,6 +109,12 @@ impl Target {
             Field::LightColor => scene.lights[i].color = v,
             Field::Intensity => scene.lights[i].intensity = x,
             Field::FogDistance => scene.fog = fog_with_distance(scene.fog, x),
+            Field::Ext(f) => {
+                super::ext::write(&mut scene.ext, &f, v);
+                if let super::Record::Object(item) = f.record {
+                    super::ext::rebuild(scene, item);
+                }
+            }
         }
     }
 }
