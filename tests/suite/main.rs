@@ -47,6 +47,8 @@ mod golden_frames;
 mod interrupt;
 mod lights_povray;
 mod malformed_scenes;
+mod mesh_files;
+mod mesh_povray;
 mod messages;
 mod newcomer;
 mod nff;

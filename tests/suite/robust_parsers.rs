@@ -154,7 +154,11 @@ fn is_tame(scene: &Scene, limit: f64, tiny: f64) -> bool {
                 v(q.origin) && q.coef.iter().all(|&c| s(c)) && -q.coef[9] >= tiny * tiny
             }
             // An NFF's shapes and the extension's: not what this check bounds.
-            Shape::Triangle(_) | Shape::Smooth(_) | Shape::Cone(_) | Shape::Placed(_) => false,
+            Shape::Triangle(_)
+            | Shape::Smooth(_)
+            | Shape::Cone(_)
+            | Shape::Placed(_)
+            | Shape::Mesh(_) => false,
         };
         let tex = match o.texture {
             Texture::Uniform(c) => v(c),

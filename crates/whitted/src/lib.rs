@@ -68,6 +68,7 @@ pub mod fog;
 pub mod input;
 pub mod lights;
 pub mod limits;
+pub mod mesh;
 pub mod noise;
 pub mod object;
 pub mod optics;

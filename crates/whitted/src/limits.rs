@@ -30,6 +30,13 @@ pub const MAX_FPS: f64 = 1000.0;
 /// The largest scene file read: 256 MiB (a million objects of each kind at about 100
 /// bytes a record fit, with room for comments).
 pub const MAX_SCENE_BYTES: u64 = 256 << 20;
+/// The largest mesh file read (`mesh "file"`): 256 MiB, a million-triangle OBJ or ASCII
+/// PLY (about 60 MB) with room to spare, a binary PLY of the triangle limit (about 80 MB).
+pub const MAX_MESH_BYTES: u64 = 256 << 20;
+/// The most triangles one mesh may have after its polygons are fanned: 2^22 (4,194,304),
+/// a million-triangle model four times over; the tree's build needs about 150 bytes a
+/// triangle at its peak, so the largest mesh stays under a gigabyte.
+pub const MAX_MESH_TRIANGLES: u64 = 1 << 22;
 /// The largest manifest file read: 16 MiB.
 pub const MAX_MANIFEST_BYTES: u64 = 16 << 20;
 /// The largest frame file read by `status`, `--resume` and `encode`: the RGB bytes of

@@ -96,11 +96,12 @@ pub fn pick(tracer: &Tracer, camera: &Camera, x: u32, y: u32) -> Option<Pick> {
     let ray = camera
         .ray(f64::from(x) + 0.5, f64::from(y) + 0.5)
         .with_t_min(tracer.scene().t_min);
-    let (t, index) = tracer.nearest_index(&ray)?;
+    let hit = tracer.nearest_hit(&ray)?;
+    let (t, index) = (hit.t, hit.index);
     let scene = tracer.scene();
     let obj = scene.objects.get(index)?;
     let p = ray.at(t);
-    let (normal, _) = shading_normal(obj, p, ray.dir);
+    let (normal, _) = shading_normal(&tracer.surface_of(obj, hit.part), p, ray.dir);
     Some(Pick {
         object: scene.object_name(index)?,
         index,

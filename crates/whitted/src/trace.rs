@@ -20,10 +20,12 @@
 //! the recorder and the hooks sit behind `R::ACTIVE`, so the beauty-only path, which
 //! passes `NoRecord`, compiles to the code it had before passes existed.
 
+mod count;
 pub mod rules;
+pub use count::RayCount;
 pub use rules::Rules;
 
-use crate::accel::{Accel, Hint, LightBuffer};
+use crate::accel::{Accel, Hint, Hit, LightBuffer, NO_PART};
 use crate::lights::{self, SceneLight};
 use crate::object::Object;
 use crate::optics::{reflect, refract, Ray};
@@ -38,44 +40,6 @@ use std::sync::Arc;
 pub const MAX_DEPTH: u32 = 5;
 /// Secondary rays weighing less than this are not traced.
 pub const MIN_WEIGHT: f64 = 1.0 / 256.0;
-
-/// Counts of rays cast, for rays-per-second figures and the SPD's table.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct RayCount {
-    /// Camera rays.
-    pub primary: u64,
-    /// Reflected and refracted rays (`reflect + refract`).
-    pub secondary: u64,
-    /// Rays towards lights.
-    pub shadow: u64,
-    /// Camera rays that hit an object.
-    pub eye_hits: u64,
-    /// Reflected rays (total internal reflection included).
-    pub reflect: u64,
-    /// Refracted rays.
-    pub refract: u64,
-}
-
-impl RayCount {
-    /// All rays: primary, secondary and shadow.
-    pub fn total(&self) -> u64 {
-        self.primary + self.secondary + self.shadow
-    }
-}
-
-impl std::ops::Add for RayCount {
-    type Output = RayCount;
-    fn add(self, o: RayCount) -> RayCount {
-        RayCount {
-            primary: self.primary + o.primary,
-            secondary: self.secondary + o.secondary,
-            shadow: self.shadow + o.shadow,
-            eye_hits: self.eye_hits + o.eye_hits,
-            reflect: self.reflect + o.reflect,
-            refract: self.refract + o.refract,
-        }
-    }
-}
 
 /// Traces rays through one scene: everything prepared once per scene (and shared by every
 /// frame of an animation) lives here — the acceleration structures of `accel`. The
@@ -140,10 +104,35 @@ impl<'a> Tracer<'a> {
         self.nearest_index(ray).map(|(t, i)| (t, &objects[i]))
     }
 
+    /// The nearest hit as `trace_hit` takes it: t, the object, and the mesh triangle.
+    #[inline]
+    fn nearest_part(&self, ray: &Ray) -> Option<(f64, &'a Object, u32)> {
+        let objects = &self.scene.objects;
+        self.accel
+            .nearest_hit(ray)
+            .map(|h| (h.t, &objects[h.index], h.part))
+    }
+
     /// `nearest`, naming the object by its index in the scene's objects.
     #[inline]
     pub fn nearest_index(&self, ray: &Ray) -> Option<(f64, usize)> {
         self.accel.nearest(ray)
+    }
+
+    /// `nearest_index` with, on a mesh, the triangle hit (`accel::Hit`).
+    #[inline]
+    pub fn nearest_hit(&self, ray: &Ray) -> Option<Hit> {
+        self.accel.nearest_hit(ray)
+    }
+
+    /// The object as shading sees it at a hit on `part`: a mesh object becomes its
+    /// triangle `part` (with the mesh's texture and material); any other is itself.
+    #[inline]
+    pub fn surface_of(&self, obj: &Object, part: u32) -> Object {
+        match self.accel.surface(&obj.shape, part) {
+            Some(shape) => Object { shape, ..*obj },
+            None => *obj,
+        }
     }
 
     /// What a shadow ray from `p` towards a light `dist` away along the unit `to_light`
@@ -185,11 +174,19 @@ impl<'a> Tracer<'a> {
         let ray = &ray.with_t_min(self.scene.t_min);
         let objects = &self.scene.objects;
         let hit = match tile.and_then(|h| h.nearest(objects, ray)) {
-            Some(found) => found,
-            None => self.accel.nearest(ray),
+            Some(found) => found.map(|(t, i)| (t, i, NO_PART)),
+            None => self.accel.nearest_hit(ray).map(|h| (h.t, h.index, h.part)),
         };
         match hit {
-            Some((t, i)) => {
+            Some((t, i, part)) => {
+                // A mesh is shaded as the triangle hit (the object itself otherwise).
+                let surface;
+                let obj = if part == NO_PART {
+                    &objects[i]
+                } else {
+                    surface = self.surface_of(&objects[i], part);
+                    &surface
+                };
                 count.eye_hits += 1;
                 // The tile's mirror lists answer for the reflection off that plane only.
                 let mirror = tile.filter(|h| h.mirror_plane() == Some(i));
@@ -198,10 +195,10 @@ impl<'a> Tracer<'a> {
                     rec.object(i, t);
                     let f = self.scene.fog.amount(t);
                     rec.fog(f);
-                    let c = self.shade_rec(ray, t, &objects[i], mirror, 0, 1.0, count, rec);
+                    let c = self.shade_rec(ray, t, obj, mirror, 0, 1.0, count, rec);
                     return self.scene.fog.apply_amount(c, f);
                 }
-                let c = self.shade(ray, t, &objects[i], mirror, 0, 1.0, count);
+                let c = self.shade(ray, t, obj, mirror, 0, 1.0, count);
                 self.scene.fog.apply(c, t)
             }
             None => {
@@ -217,8 +214,9 @@ impl<'a> Tracer<'a> {
     }
 
     /// The colour along a secondary ray at recursion `depth` with path weight `weight`.
+    #[inline]
     pub(crate) fn trace(&self, ray: &Ray, depth: u32, weight: f64, count: &mut RayCount) -> Color {
-        self.trace_hit(ray, self.nearest(ray), depth, weight, count)
+        self.trace_hit(ray, self.nearest_part(ray), depth, weight, count)
     }
 
     /// `trace`, its nearest hit already found.
@@ -226,16 +224,36 @@ impl<'a> Tracer<'a> {
     fn trace_hit(
         &self,
         ray: &Ray,
-        hit: Option<(f64, &Object)>,
+        hit: Option<(f64, &Object, u32)>,
         depth: u32,
         weight: f64,
         count: &mut RayCount,
     ) -> Color {
         count.secondary += 1;
         match hit {
-            Some((t, obj)) => self.shade(ray, t, obj, None, depth, weight, count),
+            Some((t, obj, NO_PART)) => self.shade(ray, t, obj, None, depth, weight, count),
+            Some((t, obj, part)) => self.shade_part(ray, t, obj, part, depth, weight, count),
             None => self.scene.background,
         }
+    }
+
+    /// `shade` at a hit on triangle `part` of a mesh object (out of line: the report's
+    /// scenes never come here).
+    #[allow(clippy::too_many_arguments)]
+    #[cold]
+    #[inline(never)]
+    fn shade_part(
+        &self,
+        ray: &Ray,
+        t: f64,
+        obj: &Object,
+        part: u32,
+        depth: u32,
+        weight: f64,
+        count: &mut RayCount,
+    ) -> Color {
+        let surface = self.surface_of(obj, part);
+        self.shade(ray, t, &surface, None, depth, weight, count)
     }
 
     /// The colour at the hit of `ray` on `obj` at `t`. `mirror`: the tile lists of a
@@ -304,8 +322,8 @@ impl<'a> Tracer<'a> {
             let objects = &self.scene.objects;
             let found = mirror.and_then(|h| h.mirrored(objects, &r));
             let hit = match found {
-                Some(found) => found.map(|(t, i)| (t, &objects[i])),
-                None => self.nearest(&r),
+                Some(found) => found.map(|(t, i)| (t, &objects[i], NO_PART)),
+                None => self.nearest_part(&r),
             };
             let reflected = m.kr * self.trace_hit(&r, hit, depth + 1, weight * m.kr, count);
             if R::ACTIVE {

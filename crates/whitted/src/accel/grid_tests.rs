@@ -42,7 +42,8 @@ fn grazing(objects: &[Object], from: DVec3, rng: &mut Rng) -> Vec<DVec3> {
             | Shape::Triangle(_)
             | Shape::Smooth(_)
             | Shape::Cone(_)
-            | Shape::Placed(_) => continue,
+            | Shape::Placed(_)
+            | Shape::Mesh(_) => continue,
         };
         let to = c - from;
         let side = to

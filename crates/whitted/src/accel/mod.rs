@@ -1,13 +1,16 @@
 //! Acceleration structures, built once per scene (in `Tracer::new`) and shared by every
 //! frame and thread: a BVH over the spheres, a second BVH over the other bounded shapes
-//! (an NFF's triangles and cones; empty for a Scene.txt) and plain lists of the unbounded
-//! ones (planes, cylinders), which every query tests. Shadow rays are `shadow`'s.
+//! (an NFF's triangles and cones, the extension's shapes, and every triangle of every
+//! mesh, stored as a small reference into its mesh; empty for a report scene) and plain
+//! lists of the unbounded ones (planes, cylinders), which every query tests. Shadow rays
+//! are `shadow`'s.
 //!
 //! Every query answers exactly what the linear scans over `Scene::objects` answer, bit for
 //! bit (the linear versions are kept as the reference, and the tests compare them):
 //! - `nearest`: the hit with the smallest t, and on equal t the object that comes first in
 //!   the file, as the linear scan (which only replaces its best on a strictly smaller t)
-//!   keeps it;
+//!   keeps it (on a mesh, one object, the triangle first in its file; a mesh is met only
+//!   through the tree: its `Shape::Mesh` answers no ray by itself);
 //! - `transmission`: black when an opaque object blocks the shadow ray, otherwise the
 //!   product of `Kt·C` over the crossings of transparent objects, multiplied in object
 //!   order and, within an object, in t order — the linear scan's order, so that the
@@ -24,9 +27,11 @@ pub use dirgrid::DirGrid;
 pub use lightbuf::LightBuffer;
 pub use tiles::{Hint, TileView};
 
+use crate::mesh::Mesh;
 use crate::object::Object;
 use crate::optics::{Ray, T_MIN};
 use crate::shapes::Shape;
+use std::sync::Arc;
 
 /// Up to this many transparent objects, shadow rays test them all in order after the
 /// tree, as the linear scan does; past it they collect the crossings the tree finds.
@@ -41,8 +46,13 @@ pub struct Accel {
     /// Every bounded object: nearest hits, and shadow rays (which stop at the first
     /// opaque hit, and note the transparent crossings on the way).
     tree: Bvh,
-    /// Every other bounded object (triangles, smooth triangles, cones).
+    /// Every other bounded object (triangles, smooth triangles, cones, extension shapes)
+    /// and every triangle of every mesh.
     shapes: Bvh<ShapePrim>,
+    /// The shapes `shapes`' solo primitives name (`ShapePrim::part`).
+    solo: Vec<Shape>,
+    /// The scene's meshes (`Scene::meshes`; `ShapePrim::mesh` and `MeshRef::id` index it).
+    meshes: Vec<Arc<Mesh>>,
     /// The scene's epsilon, given to the shadow rays (`Scene::t_min`).
     t_min: f64,
     /// Unbounded objects, in object order, with their indices.
@@ -51,7 +61,23 @@ pub struct Accel {
     unbounded_glass: Vec<u32>,
     /// Every object with Kt > 0, in object order.
     glass_all: Vec<u32>,
+    /// Whether one of them is a mesh.
+    glass_mesh: bool,
 }
+
+/// A nearest hit: its t, its object and, on a mesh, the triangle (`NO_PART` elsewhere).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Hit {
+    /// The ray parameter.
+    pub t: f64,
+    /// The object's index in the scene.
+    pub index: usize,
+    /// The mesh triangle hit, or `NO_PART`.
+    pub part: u32,
+}
+
+/// `Hit::part` of a hit on anything but a mesh.
+pub const NO_PART: u32 = u32::MAX;
 
 /// Kt > 0: shadow rays cross it (the linear scan's second loop).
 fn is_glass(o: &Object) -> bool {
@@ -71,24 +97,42 @@ impl Accel {
         Accel::with_t_min(objects, T_MIN)
     }
 
-    /// The accelerator of `scene`'s objects, for rays with its epsilon.
+    /// The accelerator of `scene`'s objects and meshes, for rays with its epsilon.
     pub fn for_scene(scene: &crate::scene::Scene) -> Accel {
-        Accel::with_t_min(&scene.objects, scene.t_min)
+        Accel::with_meshes(&scene.objects, &scene.meshes, scene.t_min)
     }
 
     /// `new`, casting shadow rays with the epsilon `t_min` (`Scene::t_min`).
     pub fn with_t_min(objects: &[Object], t_min: f64) -> Accel {
-        let shapes: Vec<ShapePrim> = objects
-            .iter()
-            .enumerate()
-            .filter(|(_, o)| o.shape.is_bounded() && !matches!(o.shape, Shape::Sphere(_)))
-            .map(|(i, o)| ShapePrim {
-                shape: o.shape,
+        Accel::with_meshes(objects, &[], t_min)
+    }
+
+    /// `with_t_min` over objects that may hold meshes (`Shape::Mesh` ids index
+    /// `meshes`; a mesh object whose id is past them hits nothing).
+    pub fn with_meshes(objects: &[Object], meshes: &[Arc<Mesh>], t_min: f64) -> Accel {
+        let mut solo = Vec::new();
+        let mut shapes: Vec<ShapePrim> = Vec::new();
+        for (i, o) in objects.iter().enumerate() {
+            let prim = |part: u32, mesh: u32| ShapePrim {
                 index: i as u32,
+                part,
+                mesh,
                 glass: is_glass(o),
                 opaque: is_opaque(o),
-            })
-            .collect();
+            };
+            match o.shape {
+                Shape::Sphere(_) => {}
+                Shape::Mesh(m) => {
+                    let count = meshes.get(m.id as usize).map_or(0, |m| m.triangles.len());
+                    shapes.extend((0..count as u32).map(|k| prim(k, m.id)));
+                }
+                shape if shape.is_bounded() => {
+                    shapes.push(prim(solo.len() as u32, ShapePrim::SOLO));
+                    solo.push(shape);
+                }
+                _ => {}
+            }
+        }
         let prims: Vec<Prim> = objects
             .iter()
             .enumerate()
@@ -110,9 +154,21 @@ impl Accel {
                 .map(|(i, o)| (i as u32, o.shape))
                 .collect()
         };
+        let shapes = Bvh::build(shapes, |p| {
+            let (lo, hi) = if p.mesh == ShapePrim::SOLO {
+                solo[p.part as usize]
+                    .bounds()
+                    .expect("solo shapes are bounded")
+            } else {
+                meshes[p.mesh as usize].bounds(p.part)
+            };
+            (lo, hi, 0.5 * (lo + hi))
+        });
         Accel {
-            tree: Bvh::build(prims),
-            shapes: Bvh::build(shapes),
+            tree: Bvh::build(prims, Prim::bounds),
+            shapes,
+            solo,
+            meshes: meshes.to_vec(),
             t_min,
             unbounded: unbounded(&|_| true),
             unbounded_opaque: unbounded(&is_opaque).into_iter().map(|(_, s)| s).collect(),
@@ -120,14 +176,36 @@ impl Accel {
             glass_all: (0..objects.len() as u32)
                 .filter(|&i| is_glass(&objects[i as usize]))
                 .collect(),
+            glass_mesh: objects
+                .iter()
+                .any(|o| is_glass(o) && matches!(o.shape, Shape::Mesh(_))),
         }
     }
 
-    /// The nearest hit (t, object index), as the linear scan finds it. Kept out of line:
-    /// its callers (camera and secondary rays) stay small, and the compiler's choice
-    /// otherwise changed with unrelated edits (2 % of the 10,000-sphere frame either way).
-    #[inline(never)]
+    /// The hit of a shapes' tree primitive with ray.t_min < t < t_max, if any.
+    #[inline(always)]
+    fn shape_hit(&self, prim: &ShapePrim, ray: &Ray, t_max: f64) -> Option<f64> {
+        if prim.mesh == ShapePrim::SOLO {
+            self.solo[prim.part as usize].hit(ray, t_max)
+        } else {
+            self.meshes[prim.mesh as usize].hit(prim.part, ray, t_max)
+        }
+    }
+
+    /// The nearest hit (t, object index), as the linear scan finds it (a mesh counting
+    /// as one object).
+    #[inline]
     pub fn nearest(&self, ray: &Ray) -> Option<(f64, usize)> {
+        self.nearest_hit(ray).map(|h| (h.t, h.index))
+    }
+
+    /// The nearest hit with, on a mesh, its triangle: the smallest t, then the object
+    /// that comes first in the file, then (two triangles of a mesh at one t: an edge)
+    /// the triangle that comes first in its file. Kept out of line: its callers (camera
+    /// and secondary rays) stay small, and the compiler's choice otherwise changed with
+    /// unrelated edits (2 % of the 10,000-sphere frame either way).
+    #[inline(never)]
+    pub fn nearest_hit(&self, ray: &Ray) -> Option<Hit> {
         let mut best_t = f64::INFINITY;
         let mut best_i = u32::MAX;
         for &(i, ref shape) in &self.unbounded {
@@ -148,19 +226,43 @@ impl Accel {
             }
             Some(limit)
         });
+        let mut best_part = NO_PART;
         if !self.shapes.is_empty() {
             self.shapes.traverse(ray, best_t, |prim, limit| {
-                if let Some(t) = prim.shape.hit(ray, f64::INFINITY) {
-                    if t < best_t || (t == best_t && prim.index < best_i) {
+                if let Some(t) = self.shape_hit(prim, ray, f64::INFINITY) {
+                    let part = if prim.mesh == ShapePrim::SOLO {
+                        NO_PART
+                    } else {
+                        prim.part
+                    };
+                    if t < best_t || (t == best_t && (prim.index, part) < (best_i, best_part)) {
                         best_t = t;
                         best_i = prim.index;
+                        best_part = part;
                         return Some(t);
                     }
                 }
                 Some(limit)
             });
         }
-        (best_i != u32::MAX).then_some((best_t, best_i as usize))
+        (best_i != u32::MAX).then_some(Hit {
+            t: best_t,
+            index: best_i as usize,
+            part: best_part,
+        })
+    }
+
+    /// The surface a hit on `part` of mesh object `shape` is shaded as: that triangle
+    /// (smooth where its mesh has normals); `None` when `shape` is not a mesh or `part`
+    /// is `NO_PART`.
+    pub fn surface(&self, shape: &Shape, part: u32) -> Option<Shape> {
+        match shape {
+            Shape::Mesh(m) if part != NO_PART => {
+                let mesh = self.meshes.get(m.id as usize)?;
+                ((part as usize) < mesh.triangles.len()).then(|| mesh.shape(part))
+            }
+            _ => None,
+        }
     }
 }
 
@@ -169,3 +271,6 @@ mod grid_tests;
 
 #[cfg(test)]
 mod tests;
+
+#[cfg(test)]
+mod mesh_tests;

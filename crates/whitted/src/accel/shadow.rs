@@ -2,9 +2,10 @@
 //! lets through, exactly as `shading::transmission`'s linear scan answers (see the
 //! parent module for the order of the product).
 
-use super::{Accel, CROSSINGS_MAX, GLASS_LINEAR_MAX};
+use super::{Accel, ShapePrim, CROSSINGS_MAX, GLASS_LINEAR_MAX};
 use crate::object::Object;
 use crate::optics::Ray;
+use crate::shapes::Shape;
 use crate::texture::Color;
 use glam::DVec3;
 
@@ -78,13 +79,43 @@ impl Accel {
     #[inline(always)]
     fn glass_linear(&self, objects: &[Object], ray: &Ray, dist: f64) -> Color {
         let mut through = Color::ONE;
+        if !self.glass_mesh {
+            for &i in &self.glass_all {
+                let obj = &objects[i as usize];
+                for t in obj.shape.crossings(ray, dist) {
+                    through *= obj.material.kt * obj.texture.color_at(ray.at(t));
+                }
+            }
+            return through;
+        }
+        // The same loop, a transparent mesh's crossings found through the tree.
         for &i in &self.glass_all {
             let obj = &objects[i as usize];
+            if let Shape::Mesh(m) = obj.shape {
+                for t in self.mesh_crossings(m.id, ray, dist) {
+                    through *= obj.material.kt * obj.texture.color_at(ray.at(t));
+                }
+                continue;
+            }
             for t in obj.shape.crossings(ray, dist) {
                 through *= obj.material.kt * obj.texture.color_at(ray.at(t));
             }
         }
         through
+    }
+
+    /// Every crossing of mesh `id`'s triangles with ray.t_min < t < dist, ascending.
+    #[cold]
+    fn mesh_crossings(&self, id: u32, ray: &Ray, dist: f64) -> Vec<f64> {
+        let mut ts = Vec::new();
+        self.shapes.traverse(ray, dist, |prim, limit| {
+            if prim.mesh == id {
+                ts.extend(self.shape_hit(prim, ray, dist));
+            }
+            Some(limit)
+        });
+        ts.sort_by(f64::total_cmp);
+        ts
     }
 
     /// `transmission` for many transparent objects: one walk through the tree stops at an
@@ -122,14 +153,12 @@ impl Accel {
         if !self.shapes.is_empty() {
             self.shapes.traverse(ray, dist, |prim, limit| {
                 if prim.opaque {
-                    if prim.shape.hit(ray, dist).is_some() {
+                    if self.shape_hit(prim, ray, dist).is_some() {
                         blocked = true;
                         return None;
                     }
                 } else if prim.glass && !found.overflow {
-                    for t in prim.shape.crossings(ray, dist) {
-                        found.push(prim.index, t);
-                    }
+                    self.shape_crossings(prim, ray, dist, &mut found);
                 }
                 Some(limit)
             });
@@ -141,10 +170,12 @@ impl Accel {
             return self.glass_linear(objects, ray, dist);
         }
         let crossings = &mut found.buf[..found.n];
-        // Stable insertion sort by object: each object's crossings stay in t order.
+        // Insertion sort by object, then t: a mesh's triangles are met in the tree's
+        // order; any other object's crossings come in t order already.
+        let after = |a: &(u32, f64), b: &(u32, f64)| a.0 > b.0 || (a.0 == b.0 && a.1 > b.1);
         for k in 1..crossings.len() {
             let mut j = k;
-            while j > 0 && crossings[j - 1].0 > crossings[j].0 {
+            while j > 0 && after(&crossings[j - 1], &crossings[j]) {
                 crossings.swap(j - 1, j);
                 j -= 1;
             }
@@ -157,12 +188,24 @@ impl Accel {
         through
     }
 
+    /// Notes the crossings of a transparent primitive of the shapes' tree.
+    #[inline]
+    fn shape_crossings(&self, prim: &ShapePrim, ray: &Ray, dist: f64, found: &mut Crossings) {
+        if prim.mesh == ShapePrim::SOLO {
+            for t in self.solo[prim.part as usize].crossings(ray, dist) {
+                found.push(prim.index, t);
+            }
+        } else if let Some(t) = self.shape_hit(prim, ray, dist) {
+            found.push(prim.index, t);
+        }
+    }
+
     /// Whether an opaque shape of the second tree blocks the ray before `dist`.
     #[inline(never)]
     fn shapes_blocked(&self, ray: &Ray, dist: f64) -> bool {
         let mut blocked = false;
         self.shapes.traverse(ray, dist, |prim, limit| {
-            if prim.opaque && prim.shape.hit(ray, dist).is_some() {
+            if prim.opaque && self.shape_hit(prim, ray, dist).is_some() {
                 blocked = true;
                 return None;
             }

@@ -69,6 +69,10 @@ pub struct Scene {
     /// The extension records after the last light (SPEC §16): empty for a report file
     /// and an NFF.
     pub ext: ext::Extension,
+    /// The meshes of the extension's `mesh` records, in file order (`Shape::Mesh`'s `id`
+    /// indexes this): shared, so that copies of a scene (an animation's frames) share
+    /// their triangles.
+    pub meshes: Vec<std::sync::Arc<crate::mesh::Mesh>>,
 }
 
 impl Scene {

@@ -271,10 +271,7 @@ impl<'a> Parser<'a> {
 
 pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
     let mut scene = read(src, file)?;
-    for (object, spec) in crate::scene::ext::build::objects(&scene.ext)? {
-        scene.objects.push(object);
-        scene.specs.push(spec);
-    }
+    crate::scene::ext::build::draw(&mut scene)?;
     Ok(scene)
 }
 
@@ -395,5 +392,6 @@ pub(super) fn read(src: &str, file: &str) -> Result<Scene> {
         t_min: crate::optics::T_MIN,
         lens: crate::camera::Lens::default(),
         ext: extension,
+        meshes: Vec::new(),
     })
 }

@@ -56,23 +56,30 @@ impl Triangle {
     /// triangle (edges included), if it does.
     #[inline]
     pub fn uvt(&self, ray: &Ray) -> Option<(f64, f64, f64)> {
-        let p = ray.dir.cross(self.e2);
-        let det = self.e1.dot(p);
+        Triangle::uvt_of(self.a, self.e1, self.e2, ray)
+    }
+
+    /// `uvt` of the triangle A, A + E1, A + E2 given by its corner and edges (a mesh's
+    /// triangles, stored as vertex indices, are tested through this without a `Triangle`).
+    #[inline(always)]
+    pub fn uvt_of(a: DVec3, e1: DVec3, e2: DVec3, ray: &Ray) -> Option<(f64, f64, f64)> {
+        let p = ray.dir.cross(e2);
+        let det = e1.dot(p);
         if det == 0.0 || !det.is_finite() {
             return None;
         }
         let inv = 1.0 / det;
-        let s = ray.origin - self.a;
+        let s = ray.origin - a;
         let u = s.dot(p) * inv;
         if !(0.0..=1.0).contains(&u) {
             return None;
         }
-        let q = s.cross(self.e1);
+        let q = s.cross(e1);
         let v = ray.dir.dot(q) * inv;
         if v < 0.0 || u + v > 1.0 {
             return None;
         }
-        Some((u, v, self.e2.dot(q) * inv))
+        Some((u, v, e2.dot(q) * inv))
     }
 
     /// The hit with `ray.t_min` < t < t_max, if any.

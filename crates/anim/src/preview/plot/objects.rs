@@ -72,8 +72,12 @@ pub(super) fn scene_shapes(
     let far = r.diagonal() * 4.0;
     for o in &scene.objects {
         match o.shape {
-            // An NFF's finite shapes: not drawn on the plan.
-            Shape::Triangle(_) | Shape::Smooth(_) | Shape::Cone(_) | Shape::Placed(_) => {}
+            // An NFF's finite shapes and meshes: not drawn on the plan.
+            Shape::Triangle(_)
+            | Shape::Smooth(_)
+            | Shape::Cone(_)
+            | Shape::Placed(_)
+            | Shape::Mesh(_) => {}
             Shape::Plane(p) => {
                 // Edge-on when the normal is across the line of sight: a line.
                 let n = p.normal();

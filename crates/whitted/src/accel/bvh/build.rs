@@ -1,7 +1,12 @@
 //! Building the tree: binned SAH splits along the widest axis of the primitives'
-//! centres, down to leaves of `LEAF_MAX` (or `MAX_DEPTH` levels).
+//! centres, down to leaves of `LEAF_MAX` (or `MAX_DEPTH` levels); big subtrees in
+//! parallel (`build_tree`), to the same tree on any thread count.
 
 use super::{Item, Node, BINS, BLANK, LEAF_MAX, MAX_DEPTH};
+
+/// Subtrees over more primitives than this are built in parallel (below it a task costs
+/// more than it saves).
+const PAR_MIN: usize = 8192;
 use glam::DVec3;
 
 fn surface_area(lo: DVec3, hi: DVec3) -> f64 {
@@ -18,6 +23,94 @@ pub(super) fn build_node<P>(
     index: usize,
     depth: usize,
 ) {
+    let Some(mid) = split(nodes, items, offset, index, depth) else {
+        return;
+    };
+    let left = nodes.len();
+    nodes.push(BLANK);
+    nodes.push(BLANK);
+    nodes[index].first = left as u32;
+    nodes[index].count = 0;
+    let (a, b) = items.split_at_mut(mid);
+    build_node(nodes, a, offset, left, depth + 1);
+    build_node(nodes, b, offset + mid, left + 1, depth + 1);
+}
+
+/// A subtree built apart: its nodes with the root at 0 and children's indices local to
+/// the vector, or a split whose two halves were built in parallel.
+enum Sub {
+    Nodes(Vec<Node>),
+    Split(Node, Box<(Sub, Sub)>),
+}
+
+/// The nodes of the tree over `items` (at least one), in the order `build_node` alone
+/// would not give but always the same: subtrees of more than `PAR_MIN` primitives are
+/// split in this thread and their halves built by rayon's `join`, which changes where
+/// the work runs, never what it computes. So the tree is the same on any thread count.
+pub(super) fn build_tree<P: Send>(items: &mut [Item<P>]) -> Vec<Node> {
+    let sub = build_sub(items, 0, 0);
+    let mut nodes = vec![BLANK];
+    place(&mut nodes, sub, 0);
+    nodes
+}
+
+fn build_sub<P: Send>(items: &mut [Item<P>], offset: usize, depth: usize) -> Sub {
+    let mut root = [BLANK];
+    if items.len() <= PAR_MIN {
+        let mut nodes = vec![BLANK];
+        build_node(&mut nodes, items, offset, 0, depth);
+        return Sub::Nodes(nodes);
+    }
+    let Some(mid) = split(&mut root, items, offset, 0, depth) else {
+        return Sub::Nodes(root.to_vec());
+    };
+    let (a, b) = items.split_at_mut(mid);
+    let halves = rayon::join(
+        || build_sub(a, offset, depth + 1),
+        || build_sub(b, offset + mid, depth + 1),
+    );
+    Sub::Split(root[0], Box::new(halves))
+}
+
+/// Writes `sub` with its root at `nodes[slot]` and the rest appended.
+fn place(nodes: &mut Vec<Node>, sub: Sub, slot: usize) {
+    match sub {
+        Sub::Nodes(local) => {
+            // Local index i ≥ 1 lands at base + i − 1.
+            let base = nodes.len();
+            let at = |i: u32| (base + i as usize - 1) as u32;
+            let fix = |mut n: Node| {
+                if n.count == 0 {
+                    n.first = at(n.first);
+                }
+                n
+            };
+            nodes[slot] = fix(local[0]);
+            nodes.extend(local[1..].iter().map(|&n| fix(n)));
+        }
+        Sub::Split(mut root, halves) => {
+            let left = nodes.len();
+            nodes.push(BLANK);
+            nodes.push(BLANK);
+            root.first = left as u32;
+            root.count = 0;
+            nodes[slot] = root;
+            let (a, b) = *halves;
+            place(nodes, a, left);
+            place(nodes, b, left + 1);
+        }
+    }
+}
+
+/// Fills node `index` with the bounds of `items` and, unless it stays a leaf (which it
+/// then also fills), partitions the items and says how many go left.
+fn split<P>(
+    nodes: &mut [Node],
+    items: &mut [Item<P>],
+    offset: usize,
+    index: usize,
+    depth: usize,
+) -> Option<usize> {
     let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
     let (mut clo, mut chi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
     for it in items.iter() {
@@ -28,12 +121,10 @@ pub(super) fn build_node<P>(
     }
     nodes[index].b = [lo.to_array(), hi.to_array()];
     let n = items.len();
-    let leaf = |nodes: &mut Vec<Node>| {
+    if n <= LEAF_MAX || depth >= MAX_DEPTH {
         nodes[index].first = offset as u32;
         nodes[index].count = n as u32;
-    };
-    if n <= LEAF_MAX || depth >= MAX_DEPTH {
-        return leaf(nodes);
+        return None;
     }
     let extent = chi - clo;
     let axis = if extent.x >= extent.y && extent.x >= extent.z {
@@ -86,21 +177,12 @@ pub(super) fn build_node<P>(
     } else {
         n / 2
     };
-    let mid = if mid == 0 || mid == n {
+    if mid == 0 || mid == n {
         // All centres in one bin (or all equal): split at the median.
         items.select_nth_unstable_by(n / 2, |a, b| a.centre[axis].total_cmp(&b.centre[axis]));
-        n / 2
-    } else {
-        mid
-    };
-    let left = nodes.len();
-    nodes.push(BLANK);
-    nodes.push(BLANK);
-    nodes[index].first = left as u32;
-    nodes[index].count = 0;
-    let (a, b) = items.split_at_mut(mid);
-    build_node(nodes, a, offset, left, depth + 1);
-    build_node(nodes, b, offset + mid, left + 1, depth + 1);
+        return Some(n / 2);
+    }
+    Some(mid)
 }
 
 /// Moves the items satisfying `pred` to the front; returns how many there are.

@@ -1,5 +1,6 @@
 //! A bounding volume hierarchy over bounded primitives (`Bounded`: the spheres of `Prim`,
-//! any bounded shape of `ShapePrim`), built once per scene (binned SAH, `build`),
+//! any other bounded shape or a mesh's triangle in `ShapePrim`), built once per scene
+//! (binned SAH, `build`, in parallel to the same tree on any thread count),
 //! queried without allocation (a fixed stack on the call's own stack frame; the box test
 //! is `raybox`'s).
 //!
@@ -10,14 +11,14 @@
 //! the geometric sphere test. A sphere the ray really meets is then always visited, and
 //! the caller chooses among the hits it finds with the same rule as the linear scan, so
 //! the result is the linear scan's, bit for bit. The other bounded shapes (triangles,
-//! cones) lie inside their boxes exactly, and their tests' rounding moves a hit point by
-//! a few ulps of its coordinates, far inside the same margin.
+//! cones, a mesh's triangles) lie inside their boxes exactly, and their tests' rounding
+//! moves a hit point by a few ulps of its coordinates, far inside the same margin.
 
 mod build;
 mod raybox;
 
 use crate::optics::Ray;
-use crate::shapes::{Shape, Sphere};
+use crate::shapes::Sphere;
 use glam::DVec3;
 use raybox::RayBox;
 
@@ -48,50 +49,54 @@ pub struct Prim {
     pub opaque: bool,
 }
 
-/// One bounded shape of the tree (a triangle, a smooth triangle, a cone ...) with the
-/// index of its object in the scene.
+/// One primitive of the shapes' tree: a bounded shape of an object (a triangle, a
+/// smooth triangle, a cone, an extension shape: `part` indexes the accelerator's table
+/// of them) or one triangle of a mesh object (`part` is the triangle's index in mesh
+/// `mesh`). Small, so that a million triangles fit.
 #[derive(Clone, Copy, Debug)]
 pub struct ShapePrim {
-    /// The shape (a copy, so a leaf test needs no indirection).
-    pub shape: Shape,
-    /// Its index in the scene's object list (file order), which breaks ties.
+    /// Its object's index in the scene's object list (file order), which breaks ties.
     pub index: u32,
+    /// The slot of its shape, or its triangle in the mesh.
+    pub part: u32,
+    /// `SOLO` for a shape of its own, else the slot of its mesh.
+    pub mesh: u32,
     /// Kt > 0: shadow rays cross it.
     pub glass: bool,
     /// Kt ≤ 0: shadow rays stop at it. (Neither, for a NaN Kt.)
     pub opaque: bool,
 }
 
-/// What the tree needs of a primitive: its box and centre, and whether it is glass.
+impl ShapePrim {
+    /// `mesh` of a primitive that is a shape of its own.
+    pub const SOLO: u32 = u32::MAX;
+}
+
+/// What the tree needs of a primitive besides its box: whether it is glass.
 pub trait Bounded: Copy {
-    /// The low corner, the high corner and the centre of its box.
-    fn bounds(&self) -> (DVec3, DVec3, DVec3);
     /// Kt > 0 (a flat list keeps the others first).
     fn is_glass(&self) -> bool;
 }
 
 impl Bounded for Prim {
-    #[inline]
-    fn bounds(&self) -> (DVec3, DVec3, DVec3) {
-        let s: Sphere = self.sphere;
-        let r = DVec3::splat(s.radius);
-        (s.center - r, s.center + r, s.center)
-    }
     fn is_glass(&self) -> bool {
         self.glass
     }
 }
 
 impl Bounded for ShapePrim {
-    fn bounds(&self) -> (DVec3, DVec3, DVec3) {
-        let (lo, hi) = self
-            .shape
-            .bounds()
-            .expect("only bounded shapes go into the tree");
-        (lo, hi, 0.5 * (lo + hi))
-    }
     fn is_glass(&self) -> bool {
         self.glass
+    }
+}
+
+impl Prim {
+    /// The box of its sphere, and its centre.
+    #[inline]
+    pub fn bounds(&self) -> (DVec3, DVec3, DVec3) {
+        let s: Sphere = self.sphere;
+        let r = DVec3::splat(s.radius);
+        (s.center - r, s.center + r, s.center)
     }
 }
 
@@ -141,13 +146,16 @@ impl<P> Default for Bvh<P> {
     }
 }
 
-impl<P: Bounded> Bvh<P> {
-    /// Builds the tree over `prims` (any order; each keeps its object index).
-    pub fn build(prims: Vec<P>) -> Bvh<P> {
+impl<P: Bounded + Send + Sync> Bvh<P> {
+    /// Builds the tree over `prims` (any order; each keeps its object index), each with
+    /// the low and high corners of its box and the point that sorts it (its centre), from
+    /// `bounds`, computed in parallel.
+    pub fn build(prims: Vec<P>, bounds: impl Fn(&P) -> (DVec3, DVec3, DVec3) + Sync) -> Bvh<P> {
+        use rayon::prelude::*;
         let mut items: Vec<Item<P>> = prims
-            .into_iter()
+            .into_par_iter()
             .map(|prim| {
-                let (lo, hi, centre) = prim.bounds();
+                let (lo, hi, centre) = bounds(&prim);
                 Item {
                     lo,
                     hi,
@@ -170,8 +178,7 @@ impl<P: Bounded> Bvh<P> {
             bvh.flat_opaque = bvh.prims.iter().filter(|p| !p.is_glass()).count();
             return bvh;
         }
-        bvh.nodes.push(BLANK);
-        build::build_node(&mut bvh.nodes, &mut items, 0, 0, 0);
+        bvh.nodes = build::build_tree(&mut items);
         bvh.prims = items.into_iter().map(|it| it.prim).collect();
         bvh
     }

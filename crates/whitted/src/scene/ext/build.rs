@@ -3,37 +3,70 @@
 //! sphere without modifiers stays the report's sphere (and joins the spheres' tree);
 //! planes and triangles take their frame by moving their points; every other shape is a
 //! `Placed` shape in its frame (scale, then rotate x, y, z in degrees, then translate).
+//! A `mesh` is read from its file (`crate::mesh`), its vertices moved by its frame, and
+//! becomes one object (`Shape::Mesh`, its box) whose triangles the scene keeps in
+//! `Scene::meshes`; a file that cannot be drawn is an error at the record.
 //!
-//! Not built yet: CSG blocks and meshes, refused with a located error naming them.
+//! Not built yet: CSG blocks, refused with a located error naming them.
 
 use super::{ExtItem, ExtObject, ExtShape, Extension, Modifiers};
+use crate::mesh::Mesh;
 use crate::object::Object;
-use crate::scene::{FileLoc, SceneError, ShapeSpec};
+use crate::scene::{FileLoc, Scene, SceneError, ShapeSpec};
 use crate::shapes::{
-    AaBox, Capped, Disc, Frame, Local, Placed, Plane, Shape, Sphere, Torus, Triangle,
+    AaBox, Capped, Disc, Frame, Local, MeshRef, Placed, Plane, Shape, Sphere, Torus, Triangle,
 };
 use glam::DVec3;
+use std::sync::Arc;
+
+/// What the extension's records draw: the objects with their specs, and the meshes
+/// their `Shape::Mesh` ids index.
+#[derive(Debug, Default)]
+pub struct Drawn {
+    /// The objects, in file order, each with its spec.
+    pub objects: Vec<(Object, ShapeSpec)>,
+    /// The meshes, in file order.
+    pub meshes: Vec<Arc<Mesh>>,
+}
+
+/// Draws `scene.ext`'s objects after the report's, and keeps their meshes.
+pub fn draw(scene: &mut Scene) -> Result<(), SceneError> {
+    let drawn = objects(&scene.ext)?;
+    for (object, spec) in drawn.objects {
+        scene.objects.push(object);
+        scene.specs.push(spec);
+    }
+    scene.meshes = drawn.meshes;
+    Ok(())
+}
 
 /// The objects of `ext.objects`, in file order, each with its spec (`item` is its index
 /// in `ext.objects`: what `Scene::object_names` looks its `name` up by).
-pub fn objects(ext: &Extension) -> Result<Vec<(Object, ShapeSpec)>, SceneError> {
-    let mut out = Vec::with_capacity(ext.objects.len());
+pub fn objects(ext: &Extension) -> Result<Drawn, SceneError> {
+    let mut out = Drawn::default();
     for (item, obj) in ext.objects.iter().enumerate() {
         match obj {
             ExtItem::Shape(o) => {
-                let shape = shape(o)?;
+                let (shape, anchor) = match &o.shape {
+                    ExtShape::Mesh { path, .. } => {
+                        let (handle, mesh) = mesh(o, path, out.meshes.len())?;
+                        out.meshes.push(Arc::new(mesh));
+                        (Shape::Mesh(handle), 0.5 * (handle.lo + handle.hi))
+                    }
+                    _ => (shape(o)?, anchor(&o.shape, &o.mods)),
+                };
                 let spec = ShapeSpec::Ext {
                     item: item as u32,
                     kind: o.shape.keyword(),
                     shape,
-                    anchor: anchor(&o.shape, &o.mods),
+                    anchor,
                 };
                 let object = Object {
                     shape,
                     texture: o.texture,
                     material: o.material,
                 };
-                out.push((object, spec));
+                out.objects.push((object, spec));
             }
             ExtItem::Csg(c) => {
                 return Err(refused(
@@ -45,6 +78,17 @@ pub fn objects(ext: &Extension) -> Result<Vec<(Object, ShapeSpec)>, SceneError> 
         }
     }
     Ok(out)
+}
+
+/// The mesh of a `mesh` record (the `id`-th of its scene) and its handle.
+fn mesh(o: &ExtObject, path: &std::path::Path, id: usize) -> Result<(MeshRef, Mesh), SceneError> {
+    let bad = |why: &str| refused(&o.loc, "mesh", why);
+    let f = frame(&o.mods)
+        .ok_or_else(|| bad("the scale, rotate and translate make a singular frame"))?;
+    let mesh = Mesh::load(path, &f).map_err(|e| bad(&e.to_string()))?;
+    let (lo, hi) = mesh.extent();
+    let id = id as u32;
+    Ok((MeshRef { id, lo, hi }, mesh))
 }
 
 fn refused(loc: &FileLoc, what: &str, message: &str) -> SceneError {
@@ -77,6 +121,7 @@ fn anchor(s: &ExtShape, m: &Modifiers) -> DVec3 {
         ExtShape::Box { min, max } => 0.5 * (min + max),
         ExtShape::Cylinder { a, b, .. } | ExtShape::Cone { a, b, .. } => 0.5 * (a + b),
         ExtShape::Triangle { corners: [a, b, c] } => (a + b + c) / 3.0,
+        // Its box's centre, which `objects` knows once the file is read.
         ExtShape::Mesh { .. } => DVec3::ZERO,
     };
     frame(m).map_or(p, |f| f.point_to_world(p))
@@ -137,7 +182,7 @@ pub fn shape(o: &ExtObject) -> Result<Shape, SceneError> {
                 .map(Shape::Triangle)
                 .ok_or_else(|| bad("the triangle is degenerate"))
         }
-        ExtShape::Mesh { .. } => Err(bad("meshes are not drawn yet")),
+        ExtShape::Mesh { .. } => Err(bad("a mesh is drawn from its file by `objects`")),
     }
 }
 

@@ -51,7 +51,7 @@ fn a_moved_box_is_hit_where_it_was_moved() {
         )],
         ..Extension::default()
     };
-    let built = objects(&ext).unwrap();
+    let built = objects(&ext).unwrap().objects;
     let (obj, spec) = &built[0];
     assert_eq!(spec.kind(), "box");
     assert_eq!(spec.anchor(), DVec3::new(0.0, 0.0, -10.0));
@@ -86,7 +86,7 @@ fn plain_spheres_stay_spheres_and_open_drops_caps() {
         ],
         ..Extension::default()
     };
-    let built = objects(&ext).unwrap();
+    let built = objects(&ext).unwrap().objects;
     assert!(matches!(built[0].0.shape, Shape::Sphere(_)));
     // Open: straight down the axis meets nothing.
     let ray = Ray::new(DVec3::new(0.0, 5.0, 0.0), -DVec3::Y);
@@ -125,7 +125,7 @@ fn numbering_continues_the_reports_and_names_replace_it() {
             Modifiers::default(),
         ),
     ];
-    for (o, s) in objects(&scene.ext).unwrap() {
+    for (o, s) in objects(&scene.ext).unwrap().objects {
         scene.objects.push(o);
         scene.specs.push(s);
     }
@@ -186,7 +186,12 @@ fn the_tree_finds_what_a_linear_scan_finds() {
         objects: items,
         ..Extension::default()
     };
-    let objs: Vec<Object> = objects(&ext).unwrap().into_iter().map(|(o, _)| o).collect();
+    let objs: Vec<Object> = objects(&ext)
+        .unwrap()
+        .objects
+        .into_iter()
+        .map(|(o, _)| o)
+        .collect();
     let accel = crate::accel::Accel::new(&objs);
     let mut hits = 0;
     for k in 0..400 {

@@ -194,6 +194,7 @@ pub fn parse(src: &str, file: &str) -> std::result::Result<Scene, SceneError> {
             centres: true,
         },
         ext: Default::default(),
+        meshes: Vec::new(),
     })
 }
 
