@@ -23,6 +23,7 @@ use super::Kind;
 use glam::DVec3;
 use whitted::scene::ext::{build, check, ExtItem, ExtShape, Extension, LightKind, Modifiers};
 use whitted::scene::{Scene, ShapeSpec};
+use whitted::shapes::Shape;
 
 /// The extension record a field belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -269,12 +270,24 @@ pub fn rebuild(scene: &mut Scene, item: usize) {
     let Ok(mut built) = build::objects(&one) else {
         return;
     };
-    if built.len() != 1 {
+    if built.objects.len() != 1 {
         return;
     }
-    let (object, mut spec) = built.remove(0);
-    if let ShapeSpec::Ext { item: i, .. } = &mut spec {
+    let (mut object, mut spec) = built.objects.remove(0);
+    // A mesh's triangles go where its old ones were (its handle keeps its number).
+    if let (Shape::Mesh(old), Shape::Mesh(new), Some(mesh)) = (
+        scene.objects[index].shape,
+        &mut object.shape,
+        built.meshes.pop(),
+    ) {
+        new.id = old.id;
+        if let Some(slot) = scene.meshes.get_mut(old.id as usize) {
+            *slot = mesh;
+        }
+    }
+    if let ShapeSpec::Ext { item: i, shape, .. } = &mut spec {
         *i = item as u32;
+        *shape = object.shape;
     }
     scene.objects[index].shape = object.shape;
     scene.specs[index] = spec;
