@@ -43,6 +43,8 @@ mod farm_slurm;
 mod frame_cli;
 mod frame_specs;
 mod golden_frames;
+mod image_povray;
+mod image_textures;
 mod interrupt;
 mod lights_povray;
 mod malformed_scenes;

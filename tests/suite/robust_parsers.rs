@@ -156,10 +156,11 @@ fn is_tame(scene: &Scene, limit: f64, tiny: f64) -> bool {
             // An NFF's shapes and the extension's: not what this check bounds.
             Shape::Triangle(_) | Shape::Smooth(_) | Shape::Cone(_) | Shape::Placed(_) => false,
         };
-        let tex = match o.texture {
-            Texture::Uniform(c) => v(c),
-            Texture::Checker(a, b) | Texture::Wood(a, b) | Texture::Marble(a, b) => v(a) && v(b),
-            Texture::Perlin(a, b, c) => v(a) && v(b) && v(c),
+        let tex = match &o.texture {
+            &Texture::Uniform(c) => v(c),
+            &(Texture::Checker(a, b) | Texture::Wood(a, b) | Texture::Marble(a, b)) => v(a) && v(b),
+            &Texture::Perlin(a, b, c) => v(a) && v(b) && v(c),
+            Texture::Image(i) => s(i.size),
         };
         let m = o.material;
         let bump = match m.bump {

@@ -30,7 +30,7 @@ pub fn objects(ext: &Extension) -> Result<Vec<(Object, ShapeSpec)>, SceneError> 
                 };
                 let object = Object {
                     shape,
-                    texture: o.texture,
+                    texture: o.texture.clone(),
                     material: o.material,
                 };
                 out.push((object, spec));
