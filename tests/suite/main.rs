@@ -40,6 +40,7 @@ mod exr_oracles;
 mod ext_shape_properties;
 mod farm_shard;
 mod farm_slurm;
+mod focus;
 mod frame_cli;
 mod frame_specs;
 mod golden_frames;
