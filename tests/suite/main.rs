@@ -47,6 +47,7 @@ mod golden_frames;
 mod image_povray;
 mod image_textures;
 mod interrupt;
+mod light_names;
 mod lights_povray;
 mod malformed_scenes;
 mod messages;
