@@ -69,7 +69,9 @@ fn bad_image_records_are_located_errors() {
             "scene.txt:2:53",
             "Size must be greater than 0",
         ),
-        (r#"3 tex.png planar nearest 64"#, "scene.txt:2:28", "quoted"),
+        // Unquoted: the line's count of values is a cylinder's, so the counts are
+        // blamed, quoting the error at the name.
+        (r#"3 tex.png planar nearest 64"#, "2:28", "quoted file name"),
     ];
     for (texture, at, says) in cases {
         let dir = folder(&wall(texture));

@@ -94,7 +94,7 @@ fn exr_pixels(bytes: &[u8]) -> Result<Pixels, String> {
     };
     let raw = matches!(
         layer.attributes.other.get(&Text::from(ATTRIBUTE)),
-        Some(AttributeValue::Text(t)) if t.to_string() == "linear"
+        Some(AttributeValue::Text(t)) if t.eq("linear")
     );
     let shown = |v: f32| {
         let v = f64::from(v);
