@@ -262,11 +262,11 @@ fn cases() -> Vec<Case> {
                 "0 1 0",
                 "0 20",
                 "1 0 0 1",
-                "1 0 1 0   @3 1 0 0   0.7 0.3 0 1 0 0",
+                "1 0 1 0   @4 1 0 0   0.7 0.3 0 1 0 0",
                 LIGHT,
             ],
             "sphere 1 of 1, texture, field kind",
-            "1 (one colour) or 2 (procedural)",
+            "1 (one colour), 2 (procedural) or 3 (image)",
         ),
         case(
             "unknown texture type",

@@ -160,10 +160,11 @@ fn is_tame(scene: &Scene, limit: f64, tiny: f64) -> bool {
             | Shape::Placed(_)
             | Shape::Mesh(_) => false,
         };
-        let tex = match o.texture {
-            Texture::Uniform(c) => v(c),
-            Texture::Checker(a, b) | Texture::Wood(a, b) | Texture::Marble(a, b) => v(a) && v(b),
-            Texture::Perlin(a, b, c) => v(a) && v(b) && v(c),
+        let tex = match &o.texture {
+            &Texture::Uniform(c) => v(c),
+            &(Texture::Checker(a, b) | Texture::Wood(a, b) | Texture::Marble(a, b)) => v(a) && v(b),
+            &Texture::Perlin(a, b, c) => v(a) && v(b) && v(c),
+            Texture::Image(i) => s(i.size),
         };
         let m = o.material;
         let bump = match m.bump {

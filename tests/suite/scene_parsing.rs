@@ -28,7 +28,7 @@ fn the_reports_example_sphere() {
     let src = format!("640 480\n0 2 -5\n0 2 9\n0 20\n1 0 0 1\n{REPORT_SPHERE}\n5 10 5 1 1 1 1\n");
     let scene = parse(&src);
     assert_eq!(scene.objects.len(), 1);
-    let obj = scene.objects[0];
+    let obj = &scene.objects[0];
     match obj.shape {
         Shape::Sphere(s) => {
             assert_eq!(s.radius, 1.0);

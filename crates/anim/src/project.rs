@@ -332,7 +332,9 @@ impl<'p> Animation<'p> {
         }
         let state = self.timeline.at(f64::from(frame));
         let matrices = self.camera(&state).map(|c| camera_matrices(&c));
-        let count = n * n * times.len() as u32;
+        // Each camera sample is its lens rays when the scene has a `focus` record.
+        let lens = whitted::render::rays_per_sample(&state.scene);
+        let count = n * n * times.len() as u32 * lens;
         let layers = finish(&sums, count, w, h, passes, &state.scene, matrices);
         self.tell(frame, || layers.to_frame());
         Ok((layers, rays))

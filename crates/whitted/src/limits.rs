@@ -66,6 +66,13 @@ pub const MAX_AREA_SIDE: u64 = 64;
 /// The largest `focus` Samples: 32 × 32 = 1,024 lens rays per camera sample.
 pub const MAX_LENS_SAMPLES: u64 = 32;
 
+/// The largest side of an image texture's picture.
+pub const MAX_TEXTURE_SIDE: u32 = 16384;
+/// The most pixels an image texture may have (2^24: 4096 × 4096, 201 MB as floats).
+pub const MAX_TEXTURE_PIXELS: u64 = 1 << 24;
+/// The largest image texture file read: 256 MiB.
+pub const MAX_TEXTURE_BYTES: u64 = 256 << 20;
+
 #[cfg(test)]
 mod tests {
     use super::*;

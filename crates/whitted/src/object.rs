@@ -4,7 +4,8 @@
 
 use crate::bump::Bump;
 use crate::shapes::Shape;
-use crate::texture::Texture;
+use crate::texture::{Color, Texture};
+use glam::DVec3;
 
 /// The optical coefficients of an object (report III.1, "MATERIAU").
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -39,7 +40,7 @@ pub enum Highlight {
 }
 
 /// One renderable object.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub struct Object {
     /// The surface.
     pub shape: Shape,
@@ -47,6 +48,18 @@ pub struct Object {
     pub texture: Texture,
     /// Its lighting coefficients, index and bump.
     pub material: Material,
+}
+
+impl Object {
+    /// The texture's colour at the world point `p` of the surface (an image texture reads
+    /// its map frame from the shape).
+    #[inline]
+    pub fn color_at(&self, p: DVec3) -> Color {
+        if let Texture::Image(image) = &self.texture {
+            return image.color_at(&self.shape, p);
+        }
+        self.texture.color_at(p)
+    }
 }
 
 /// The report's point light (it lives with the other lights, in `lights::point`).

@@ -38,7 +38,7 @@ pub struct Pick {
 /// A texture's kind and colours.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct TextureInfo {
-    /// `uniform`, `checker`, `perlin`, `wood` or `marble`.
+    /// `uniform`, `checker`, `perlin`, `wood`, `marble` or `image`.
     pub kind: &'static str,
     /// Its colours, C1 (C2, C3) as the file gives them.
     pub colors: Vec<[f64; 3]>,

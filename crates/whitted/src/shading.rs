@@ -37,7 +37,7 @@ pub fn transmission(objects: &[Object], p: DVec3, to_light: DVec3, dist: f64) ->
     }
     for obj in objects.iter().filter(|o| o.material.kt > 0.0) {
         for t in obj.shape.crossings(&ray, dist) {
-            through *= obj.material.kt * obj.texture.color_at(ray.at(t));
+            through *= obj.material.kt * obj.color_at(ray.at(t));
         }
     }
     through

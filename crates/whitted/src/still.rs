@@ -95,7 +95,9 @@ impl<'s> Still<'s> {
     /// drawn as the picture will be (its anti-aliasing), predicts on the current pool.
     pub fn enormous(&self) -> Option<Enormous> {
         let (w, h, n) = (self.width, self.height, self.samples());
-        let rays = estimate::camera_rays(w, h, n, 1, 1);
+        // A `focus` record traces its lens rays for every camera sample.
+        let lens = u64::from(crate::render::rays_per_sample(self.scene));
+        let rays = estimate::camera_rays(w, h, n, 1, 1).saturating_mul(lens);
         if rays <= estimate::ENORMOUS {
             return None;
         }
@@ -111,7 +113,7 @@ impl<'s> Still<'s> {
         .map(|cam| {
             let t = std::time::Instant::now();
             render_with(&self.tracer, &cam, small.0, small.1, self.aa);
-            let sample = estimate::camera_rays(small.0, small.1, n, 1, 1);
+            let sample = estimate::camera_rays(small.0, small.1, n, 1, 1).saturating_mul(lens);
             estimate::predict(rays, sample, t.elapsed().as_secs_f64())
         });
         Some(Enormous {
@@ -119,7 +121,7 @@ impl<'s> Still<'s> {
             frames: None,
             width: w,
             height: h,
-            per_pixel: u64::from(n) * u64::from(n),
+            per_pixel: u64::from(n) * u64::from(n) * lens,
             seconds,
             threads: rayon::current_num_threads(),
         })

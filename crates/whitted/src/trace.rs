@@ -291,7 +291,7 @@ impl<'a> Tracer<'a> {
         let p = ray.at(t);
         let v = ray.dir;
         let m = &obj.material;
-        let c = obj.texture.color_at(p);
+        let c = obj.color_at(p);
         let (n, entering) = shading_normal(obj, p, v);
         if R::ACTIVE {
             rec.surface(p, n, c);

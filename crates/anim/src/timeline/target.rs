@@ -288,8 +288,13 @@ impl Target {
     /// `color1..3` on a single colour, `color3` where the texture has no third colour,
     /// `bump` without bump mapping, `fog distance` without fog.
     fn applicable(&self, scene: &Scene) -> Result<(), String> {
-        let texture = || scene.objects[self.index].texture;
+        let texture = || &scene.objects[self.index].texture;
         let why = match self.field {
+            Field::Color | Field::Color1 | Field::Color2 | Field::Color3
+                if matches!(texture(), Texture::Image(_)) =>
+            {
+                "its texture is an image (3): it has no colour to animate"
+            }
             Field::Color if !matches!(texture(), Texture::Uniform(_)) => {
                 "its texture is procedural (2): animate color1, color2 or color3"
             }

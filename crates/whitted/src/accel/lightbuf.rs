@@ -150,7 +150,7 @@ impl LightBuffer {
         for i in glass {
             let obj = &objects[i];
             for t in obj.shape.crossings(&ray, dist) {
-                through *= obj.material.kt * obj.texture.color_at(ray.at(t));
+                through *= obj.material.kt * obj.color_at(ray.at(t));
             }
         }
         Some(through)

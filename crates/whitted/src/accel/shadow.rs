@@ -98,7 +98,7 @@ impl Accel {
                 continue;
             }
             for t in obj.shape.crossings(ray, dist) {
-                through *= obj.material.kt * obj.texture.color_at(ray.at(t));
+                through *= obj.material.kt * obj.color_at(ray.at(t));
             }
         }
         through
@@ -183,7 +183,7 @@ impl Accel {
         let mut through = Color::ONE;
         for &(i, t) in crossings.iter() {
             let obj = &objects[i as usize];
-            through *= obj.material.kt * obj.texture.color_at(ray.at(t));
+            through *= obj.material.kt * obj.color_at(ray.at(t));
         }
         through
     }

@@ -68,22 +68,22 @@ pub(super) fn scene(rng: &mut Rng, n: usize) -> Vec<Object> {
     objects.push(object(
         Shape::Plane(Plane::new(DVec3::new(0.0, -6.0, 0.0), DVec3::Y)),
         0.0,
-        white,
+        white.clone(),
     ));
     objects.push(object(
         Shape::Plane(Plane::new(rng.vec(3.0), rng.vec(1.0))),
         0.6,
-        white,
+        white.clone(),
     ));
     objects.push(object(
         Shape::Quadric(Quadric::cylinder(DVec3::Y, rng.vec(4.0), 0.7)),
         0.0,
-        white,
+        white.clone(),
     ));
     objects.push(object(
         Shape::Quadric(Quadric::cylinder(rng.vec(1.0), rng.vec(4.0), 0.3)),
         0.5,
-        white,
+        white.clone(),
     ));
     objects
 }
@@ -288,9 +288,9 @@ fn same_answers_as_the_linear_scans_with_triangles_and_cones() {
             _ => Cone::new(a, rng.next().abs(), b, rng.next().abs() * 0.5).map(Shape::Cone),
         };
         if let Some(shape) = shape {
-            objects.push(object(shape, kt, white));
+            objects.push(object(shape, kt, white.clone()));
             if i % 9 == 0 {
-                objects.push(object(shape, kt, white));
+                objects.push(object(shape, kt, white.clone()));
             }
             if let (0, Some(t)) = (i % 4, Triangle::new(a, c, a + rng.vec(1.5))) {
                 objects.push(object(Shape::Triangle(t), kt, white)); // shares the edge a–c

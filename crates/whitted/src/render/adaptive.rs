@@ -261,10 +261,11 @@ where
     let depth = aa.depth.min(MAX_DEPTH);
     let aa = Adaptive { depth, ..aa };
     let view = TileView::new(camera, width, height, &tracer.scene().objects);
+    let shot = super::Shot::new(tracer, camera);
     let probe = Probe {
         tracer,
         view: view.as_ref(),
-        camera,
+        shot: &shot,
         width,
         height,
         depth,

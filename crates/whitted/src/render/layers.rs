@@ -3,7 +3,7 @@
 //! over rows like `render`. The beauty here is the mean of the unclamped samples (SPEC
 //! §12); with one sample and no motion blur it is exactly the colour `render` rounds.
 
-use super::{par_rows, sub_pixel};
+use super::{par_rows, sub_pixel, Shot};
 use crate::accel::{Hint, TileView};
 use crate::camera::{Camera, VIEW_DISTANCE};
 use crate::optics::Ray;
@@ -12,7 +12,8 @@ use crate::passes::{CameraMatrices, Layers, Pass, PassSet};
 use crate::trace::{RayCount, Tracer};
 
 /// Adds every pixel's `samples`² samples into `sums` (width·height, rows top to bottom,
-/// made by `Sums::new` for `passes`): one sub-frame of a frame of layers. Without passes
+/// made by `Sums::new` for `passes`): one sub-frame of a frame of layers. With a lens
+/// each sample is its `rays_per_sample` lens rays, each added as a sample of its own. Without passes
 /// only the beauty and the hits (alpha) are summed, through a recorder that hears the hit
 /// alone (the same colours the recording path computes, added in the same order);
 /// `passes` also says whether
@@ -31,16 +32,17 @@ pub fn render_layers_add(
     let forward = camera.basis().2;
     let view = TileView::new(camera, width, height, &tracer.scene().objects);
     let view = view.as_ref();
+    let shot = &Shot::new(tracer, camera);
     match sums {
         Sums::Beauty(sums) => par_rows(sums, width, height, |j, row, count| {
-            row_samples(camera, view, width, n, j, count, |i, hint, ray, count| {
+            row_samples(shot, view, width, n, j, count, |i, hint, ray, count| {
                 let mut hit = Hit::default();
                 row[i].colour += tracer.primary_rec(hint, ray, count, &mut hit);
                 row[i].hits += u32::from(hit.0);
             });
         }),
         Sums::Passes(sums) => par_rows(sums, width, height, |j, row, count| {
-            row_samples(camera, view, width, n, j, count, |i, hint, ray, count| {
+            row_samples(shot, view, width, n, j, count, |i, hint, ray, count| {
                 let mut s = Sample::default();
                 let c = tracer.primary_rec(hint, ray, count, &mut s);
                 row[i].add(c, &s, ray.dir, forward, crypto);
@@ -49,10 +51,11 @@ pub fn render_layers_add(
     }
 }
 
-/// Every camera ray of row `j`, pixel by pixel and each pixel's n×n grid in order:
-/// `add(i, hint, ray, count)` for the samples of pixel i.
+/// Every camera ray of row `j`, pixel by pixel and each pixel's n×n grid in order (each
+/// sample's lens rays in turn, with a lens): `add(i, hint, ray, count)` for the rays of
+/// pixel i.
 fn row_samples(
-    camera: &Camera,
+    shot: &Shot,
     view: Option<&TileView>,
     width: u32,
     n: u32,
@@ -66,7 +69,7 @@ fn row_samples(
         for b in 0..n {
             for a in 0..n {
                 let (x, y) = sub_pixel(i as f64, j as f64, a, b, step);
-                add(i, hint, &camera.ray(x, y), count);
+                shot.each_ray(x, y, |ray| add(i, hint, ray, count));
             }
         }
     }
@@ -86,7 +89,7 @@ pub fn render_layers(
     let n = samples.max(1);
     let layers = finish(
         &sums,
-        n * n,
+        n * n * super::rays_per_sample(tracer.scene()),
         width,
         height,
         passes,

@@ -5,8 +5,10 @@
 //! n×n stratified grid of sub-pixel centres, each sample clamped before averaging (see
 //! docs/decisions.md); n = 1 samples the pixel centre, as the report does.
 
+pub mod lens;
 mod stream;
 
+pub use lens::{rays_per_sample, Shot};
 pub use stream::render_observed;
 
 use crate::accel::TileView;
@@ -67,10 +69,11 @@ pub fn render(
     let n = samples.max(1);
     let view = TileView::new(camera, width, height, &tracer.scene().objects);
     let view = view.as_ref();
+    let shot = Shot::new(tracer, camera);
     let count = pixels
         .par_chunks_mut(row_len)
         .enumerate()
-        .map(|(j, row)| draw_row(tracer, view, camera, j, n, row))
+        .map(|(j, row)| draw_row(tracer, view, &shot, j, n, row))
         .reduce(RayCount::default, |a, b| a + b);
     let frame = Frame {
         width,
@@ -87,7 +90,7 @@ pub fn render(
 fn draw_row(
     tracer: &Tracer,
     view: Option<&TileView>,
-    camera: &Camera,
+    shot: &Shot,
     j: usize,
     n: u32,
     row: &mut [u8],
@@ -97,7 +100,7 @@ fn draw_row(
         return count;
     }
     for (i, px) in row.chunks_exact_mut(3).enumerate() {
-        let c = pixel(tracer, view, camera, i as f64, j as f64, n, &mut count);
+        let c = pixel(tracer, view, shot, i as f64, j as f64, n, &mut count);
         px.copy_from_slice(&to_rgb(c));
     }
     control::row_done();
@@ -119,9 +122,10 @@ pub fn render_add(
     let n = samples.max(1);
     let view = TileView::new(camera, width, height, &tracer.scene().objects);
     let view = view.as_ref();
+    let shot = Shot::new(tracer, camera);
     par_rows(sum, width, height, |j, row, count| {
         for (i, acc) in row.iter_mut().enumerate() {
-            let c = pixel(tracer, view, camera, i as f64, j as f64, n, count);
+            let c = pixel(tracer, view, &shot, i as f64, j as f64, n, count);
             *acc += c.clamp(Color::ZERO, Color::ONE);
         }
     })
@@ -171,13 +175,14 @@ impl Frame {
     }
 }
 
-/// The colour of pixel (i, j) from an n×n grid of samples; `view`, the frame's tile
-/// lists of candidates for camera rays, when there are some.
+/// The colour of pixel (i, j) from an n×n grid of samples (each through the lens, when
+/// the shot has one); `view`, the frame's tile lists of candidates for camera rays, when
+/// there are some.
 #[inline]
 fn pixel(
     tracer: &Tracer,
     view: Option<&TileView>,
-    camera: &Camera,
+    shot: &Shot,
     i: f64,
     j: f64,
     n: u32,
@@ -185,14 +190,14 @@ fn pixel(
 ) -> Color {
     let view = view.map(|v| v.hint(i as u32, j as u32));
     if n == 1 {
-        return tracer.primary_in(view, &camera.ray(i + 0.5, j + 0.5), count);
+        return shot.color(tracer, view, i + 0.5, j + 0.5, count);
     }
     let step = 1.0 / n as f64;
     let mut sum = Color::ZERO;
     for b in 0..n {
         for a in 0..n {
             let (x, y) = sub_pixel(i, j, a, b, step);
-            let c = tracer.primary_in(view, &camera.ray(x, y), count);
+            let c = shot.color(tracer, view, x, y, count);
             sum += c.clamp(Color::ZERO, Color::ONE);
         }
     }

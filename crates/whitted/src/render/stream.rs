@@ -31,6 +31,7 @@ pub fn render_observed(
     let view = TileView::new(camera, width, height, &tracer.scene().objects);
     let view = view.as_ref();
     let band = band.max(1) as usize;
+    let shot = super::Shot::new(tracer, camera);
     let mut count = RayCount::default();
     if row_len == 0 {
         return (
@@ -48,7 +49,7 @@ pub fn render_observed(
             + rows
                 .par_chunks_mut(row_len)
                 .enumerate()
-                .map(|(dj, row)| draw_row(tracer, view, camera, j0 + dj, n, row))
+                .map(|(dj, row)| draw_row(tracer, view, &shot, j0 + dj, n, row))
                 .reduce(RayCount::default, |a, b| a + b);
         observe(j0 as u32, rows);
     }

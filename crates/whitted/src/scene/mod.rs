@@ -143,6 +143,39 @@ impl Scene {
         }
     }
 
+    /// The lights' names, in the order the tracer lights with them (the report's, then
+    /// the extension's records in file order): `KIND N` counted per kind, where a `point`
+    /// record is a `light` numbered after the report's (`light 3` after two report
+    /// lights), and `spot 1`, `area 1`, `directional 1` count their own records; a
+    /// record's `name` replaces it (the count still advances), as for objects.
+    pub fn light_names(&self) -> Vec<String> {
+        let mut names: Vec<String> = (1..=self.lights.len())
+            .map(|n| format!("light {n}"))
+            .collect();
+        let mut seen: Vec<(&str, usize)> = vec![("light", self.lights.len())];
+        for l in &self.ext.lights {
+            let kind = match l.kind.keyword() {
+                "point" => "light",
+                k => k,
+            };
+            let n = match seen.iter_mut().find(|(k, _)| *k == kind) {
+                Some((_, n)) => {
+                    *n += 1;
+                    *n
+                }
+                None => {
+                    seen.push((kind, 1));
+                    1
+                }
+            };
+            names.push(match &l.mods.name {
+                Some(name) => name.clone(),
+                None => format!("{kind} {n}"),
+            });
+        }
+        names
+    }
+
     /// The name of object `index` (see `object_names`); `None` past the last object.
     pub fn object_name(&self, index: usize) -> Option<String> {
         self.object_names().nth(index)

@@ -7,6 +7,7 @@
 mod counts;
 mod ext;
 mod place;
+mod texture;
 
 use super::error::{FileLoc, SceneError};
 use super::lexer::{Lexer, Token};
@@ -16,7 +17,7 @@ use crate::camera::Camera;
 use crate::fog::Fog;
 use crate::input::quote;
 use crate::object::{Light, Material, Object};
-use crate::texture::{Color, Texture};
+use crate::texture::Color;
 use counts::{Counts, Record};
 use glam::DVec3;
 use place::Place;
@@ -25,6 +26,7 @@ struct Parser<'a> {
     lexer: Lexer<'a>,
     file: &'a str,
     place: Place,
+    images: texture::Images,
 }
 
 type Result<T> = std::result::Result<T, SceneError>;
@@ -162,28 +164,6 @@ impl<'a> Parser<'a> {
         Ok(Color::new(r, g, b))
     }
 
-    fn texture(&mut self) -> Result<Texture> {
-        self.place.part = Some("texture");
-        let (kind, _) = self.integer("kind", 1, 2, "1 (one colour) or 2 (procedural)")?;
-        let tex = if kind == 1 {
-            Texture::Uniform(self.color(["R", "G", "B"])?)
-        } else {
-            let what = "1 (checker), 2 (Perlin), 3 (wood) or 4 (marble)";
-            let (ty, _) = self.integer("Type", 1, 4, what)?;
-            let c1 = self.color(["C1.r", "C1.g", "C1.b"])?;
-            let c2 = self.color(["C2.r", "C2.g", "C2.b"])?;
-            let c3 = self.color(["C3.r", "C3.g", "C3.b"])?;
-            match ty {
-                1 => Texture::Checker(c1, c2),
-                2 => Texture::Perlin(c1, c2, c3),
-                3 => Texture::Wood(c1, c2),
-                _ => Texture::Marble(c1, c2),
-            }
-        };
-        self.place.part = None;
-        Ok(tex)
-    }
-
     fn material(&mut self) -> Result<Material> {
         self.place.part = Some("material");
         let kd = self.ranged("Kd", 0.0, 1.0)?;
@@ -287,6 +267,7 @@ pub(super) fn read(src: &str, file: &str) -> Result<Scene> {
             part: None,
             within: None,
         },
+        images: texture::Images::new(file),
     };
     let side = format!("an integer from 1 to {MAX_SIDE}");
     let (width, _) = p.integer("ResX", 1, MAX_SIDE as u64, &side)?;

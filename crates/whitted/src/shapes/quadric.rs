@@ -25,6 +25,9 @@ pub struct Quadric {
     pub origin: DVec3,
     /// The ten coefficients A, B, C, D, E, F, G, H, I, J of the report.
     pub coef: [f64; 10],
+    /// A cylinder's unit axis as given (zero for a quadric given by its coefficients):
+    /// the y of its cylindrical image map's frame (`texture::map`).
+    pub axis: DVec3,
 }
 
 impl Quadric {
@@ -46,6 +49,7 @@ impl Quadric {
                 0.0,
                 -radius * radius,
             ],
+            axis: a,
         }
     }
 
@@ -290,6 +294,7 @@ mod tests {
         let q = Quadric {
             origin: DVec3::ZERO,
             coef: [1.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, -1.0, 0.0, 0.0],
+            axis: DVec3::ZERO,
         };
         let r = Ray::new(DVec3::new(1.0, 10.0, 1.0), -DVec3::Y);
         // Aq = 0, Bq = −H·(−1)... = 1, Cq = 1 + 1 − 10 = −8: t = 8, at y = 2 = 1 + 1.

@@ -37,6 +37,7 @@ pub(super) fn first_color(t: &Texture) -> DVec3 {
         | Texture::Perlin(c, _, _)
         | Texture::Wood(c, _)
         | Texture::Marble(c, _) => c,
+        Texture::Image(_) => DVec3::splat(0.5),
     }
 }
 

@@ -143,6 +143,7 @@ fn colors(t: &Texture) -> (DVec3, DVec3, DVec3) {
         Texture::Uniform(c) => (c, DVec3::ZERO, DVec3::ZERO),
         Texture::Checker(a, b) | Texture::Wood(a, b) | Texture::Marble(a, b) => (a, b, DVec3::ZERO),
         Texture::Perlin(a, b, c) => (a, b, c),
+        Texture::Image(_) => (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO),
     }
 }
 

@@ -15,7 +15,7 @@
 use super::store::Store;
 use super::{Adaptive, BAND};
 use crate::accel::TileView;
-use crate::camera::Camera;
+use crate::render::Shot;
 use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
@@ -24,7 +24,8 @@ use rayon::prelude::*;
 pub(super) struct Probe<'a> {
     pub tracer: &'a Tracer<'a>,
     pub view: Option<&'a TileView>,
-    pub camera: &'a Camera,
+    /// The camera and its lens (a lens point's colour is already clamped).
+    pub shot: &'a Shot<'a>,
     pub width: u32,
     pub height: u32,
     pub depth: u32,
@@ -39,9 +40,9 @@ impl Probe<'_> {
             (y >> self.depth).min(self.height - 1),
         );
         let hint = self.view.map(|v| v.hint(i, j));
-        let ray = self.camera.ray(f64::from(x) * step, f64::from(y) * step);
-        self.tracer
-            .primary_in(hint, &ray, count)
+        let (px, py) = (f64::from(x) * step, f64::from(y) * step);
+        self.shot
+            .color(self.tracer, hint, px, py, count)
             .clamp(Color::ZERO, Color::ONE)
     }
 }

@@ -63,7 +63,7 @@ pub fn objects(ext: &Extension) -> Result<Drawn, SceneError> {
                 };
                 let object = Object {
                     shape,
-                    texture: o.texture,
+                    texture: o.texture.clone(),
                     material: o.material,
                 };
                 out.objects.push((object, spec));

@@ -92,7 +92,7 @@ struct Built {
 
 impl Built {
     fn push(&mut self, spec: ShapeSpec, r: &Reader, start: (usize, usize)) -> Result<()> {
-        let Some((texture, material)) = self.material else {
+        let Some((texture, material)) = self.material.clone() else {
             let msg = "an object before any 'f' record: its material is unknown".to_string();
             return Err(r.error_at(start, msg));
         };

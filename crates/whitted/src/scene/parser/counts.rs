@@ -1,7 +1,8 @@
 //! When a record does not fit, whether the counts are to blame. Scene.txt writes each
 //! object or light on a line of its own, and the four kinds have different numbers of
 //! values (a sphere 14 or 21, a plane 16 or 23, a cylinder 17 or 24, a light 7, for a
-//! one-colour or a procedural texture). So when sphere 5 of 5 fails on a line of 16
+//! one-colour or a procedural texture, one more than the first for an image, whose file
+//! name is the line's quoted value). So when sphere 5 of 5 fails on a line of 16
 //! values, that line is a plane: the counts announced a sphere too many (or one is
 //! missing), and the error is put on the count, saying what it announced:
 //!
@@ -59,7 +60,11 @@ impl Counts<'_> {
             return error;
         }
         let values = on_line.len();
-        let fits = |k: usize| KINDS[k].3.contains(&values);
+        let image = on_line.iter().any(|t| t.text.starts_with('"'));
+        let fits = |k: usize| match image {
+            false => KINDS[k].3.contains(&values),
+            true => k < 3 && KINDS[k].3[0] + 1 == values,
+        };
         if record.kind < 4 && fits(record.kind) {
             return error;
         }

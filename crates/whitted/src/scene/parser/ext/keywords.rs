@@ -46,7 +46,7 @@ pub(super) fn is_name(word: &str) -> bool {
 
 /// The text of a quoted string token (`"a \"b\" c\\d"` → `a "b" c\d`), or why it is not
 /// one.
-pub(super) fn unquote(token: &str) -> Result<String, String> {
+pub(in crate::scene::parser) fn unquote(token: &str) -> Result<String, String> {
     let Some(body) = token.strip_prefix('"') else {
         return Err("expected a quoted file name (\"…\")".to_string());
     };
@@ -91,7 +91,7 @@ fn distance(a: &str, b: &str) -> usize {
 
 /// The keyword nearest to `word` among `candidates`, if it is close enough to be a
 /// likely misspelling (at most 2 edits, and fewer than the word's length).
-pub(super) fn nearest<'k>(
+pub(in crate::scene::parser) fn nearest<'k>(
     word: &str,
     candidates: impl Iterator<Item = &'k str>,
 ) -> Option<&'k str> {

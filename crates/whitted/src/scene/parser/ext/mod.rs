@@ -26,7 +26,7 @@
 //! read, and an error points at the field to blame. Records are numbered per kind after
 //! the report's of the same kind (`sphere 5`, `light 3`, `csg 1`) in error contexts.
 
-mod keywords;
+pub(super) mod keywords;
 mod records;
 #[cfg(test)]
 mod tests;

@@ -9,9 +9,22 @@
 //! - Perlin: n = clamp((noise(p)+1)/2, 0, 1) on a ramp C1 at 0, C2 at ½, C3 at 1
 //! - wood: T = 20·noise(p), n = T − ⌊T⌋, f = (1 − cos πn)/2, C = C1(1−f) + C2·f
 //! - marble: n = (1 + cos(x + noise(p)))/2, C = C1(1−n) + C2·n
+//!
+//! The third form, `3 "file" Map Interp Size` (SPEC §16), maps an image onto its object
+//! (`image`, `map`, `load`): it needs the object's shape, so `Object::color_at` is what
+//! the tracer asks.
+
+mod image;
+mod load;
+pub mod map;
+
+pub use self::image::{ImageTexture, Interp, Pixels};
+pub use load::load;
+pub use map::MapKind;
 
 use crate::noise::{floor, noise};
 use glam::DVec3;
+use std::sync::Arc;
 
 /// An RGB colour, channels nominally in 0..1.
 pub type Color = DVec3;
@@ -29,7 +42,7 @@ fn is_even(s: f64) -> bool {
 }
 
 /// The colour pattern of an object.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Texture {
     /// `1 R G B`: one colour everywhere.
     Uniform(Color),
@@ -41,11 +54,14 @@ pub enum Texture {
     Wood(Color, Color),
     /// `2 4 …`: marble veins between the two colours.
     Marble(Color, Color),
+    /// `3 "file" Map Interp Size`: an image mapped onto the object.
+    Image(Arc<ImageTexture>),
 }
 
 impl Texture {
     /// The texture as records name it: its kind (`uniform`, `checker`, `perlin`, `wood`,
-    /// `marble`), its number in that order from 1, and its colours as the file gives them.
+    /// `marble`, `image`), its number in that order from 1, and its colours as the file
+    /// gives them (none for an image).
     pub fn record(&self) -> (&'static str, u8, Vec<Color>) {
         match *self {
             Texture::Uniform(c) => ("uniform", 1, vec![c]),
@@ -53,6 +69,7 @@ impl Texture {
             Texture::Perlin(a, b, c) => ("perlin", 3, vec![a, b, c]),
             Texture::Wood(a, b) => ("wood", 4, vec![a, b]),
             Texture::Marble(a, b) => ("marble", 5, vec![a, b]),
+            Texture::Image(_) => ("image", 6, vec![]),
         }
     }
 
@@ -62,6 +79,9 @@ impl Texture {
     /// with `Accel::transmission` inlined again, inlining it into both glass loops of
     /// `shading::direct` takes 9.5 M instructions off `direct` + `color_at` on the orbit at
     /// one thread (callgrind).
+    ///
+    /// An image texture needs its object's shape: `Object::color_at` answers for it (here
+    /// it is black).
     #[inline]
     pub fn color_at(&self, p: DVec3) -> Color {
         // The two cheap kinds by conditional branches, which are predicted from their
@@ -101,6 +121,7 @@ impl Texture {
                 c1 * (1.0 - n) + c2 * n
             }
             Texture::Uniform(c) | Texture::Checker(c, _) => c, // answered by `color_at`
+            Texture::Image(_) => Color::ZERO,                  // answered by `Object::color_at`
         }
     }
 }

@@ -1,0 +1,197 @@
+//! Image textures (SPEC §16): TEXTURE `3 "file" Map Interp Size`, an image whose colour
+//! replaces C. The pixels are read once per scene (`load`) and shared, behind an `Arc`,
+//! by every object that names the file, every frame and every thread.
+//!
+//! (u, v) come from the map (`map`) and wrap (u − ⌊u⌋); row 0 is the image's top:
+//! - `nearest` takes column ⌊u·W⌋ and row ⌊(1 − v)·H⌋;
+//! - `bilinear` blends the four nearest pixel centres (centre of column i at u = (i+½)/W),
+//!   wrapping across the image's edges, as POV-Ray's `interpolate 2` does.
+
+use super::map::{self, MapKind};
+use super::Color;
+use crate::shapes::Shape;
+use glam::DVec3;
+use std::sync::Arc;
+
+/// How a colour is read between pixels.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Interp {
+    /// The pixel the point falls in.
+    Nearest,
+    /// The four nearest pixel centres, blended.
+    Bilinear,
+}
+
+impl Interp {
+    /// The keywords a TEXTURE record names them by.
+    pub const NAMES: [&'static str; 2] = ["nearest", "bilinear"];
+
+    /// The interpolation a keyword names.
+    pub fn from_name(word: &str) -> Option<Interp> {
+        match word {
+            "nearest" => Some(Interp::Nearest),
+            "bilinear" => Some(Interp::Bilinear),
+            _ => None,
+        }
+    }
+
+    /// Its keyword.
+    pub fn name(self) -> &'static str {
+        Self::NAMES[self as usize]
+    }
+}
+
+/// An image's display colours, rows top to bottom, channels 0..1.
+#[derive(Clone, PartialEq)]
+pub struct Pixels {
+    width: u32,
+    height: u32,
+    data: Vec<[f32; 3]>,
+}
+
+impl std::fmt::Debug for Pixels {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Pixels({}×{})", self.width, self.height)
+    }
+}
+
+impl Pixels {
+    /// `data` as a `width`×`height` image; `None` when the sizes disagree or one is 0.
+    pub fn new(width: u32, height: u32, data: Vec<[f32; 3]>) -> Option<Pixels> {
+        let ok = width > 0 && height > 0 && data.len() == width as usize * height as usize;
+        ok.then_some(Pixels {
+            width,
+            height,
+            data,
+        })
+    }
+
+    /// The width and height.
+    pub fn size(&self) -> (u32, u32) {
+        (self.width, self.height)
+    }
+
+    /// The pixel at column `i`, row `j` (both wrapped into the image).
+    fn at(&self, i: i64, j: i64) -> Color {
+        let i = i.rem_euclid(i64::from(self.width)) as usize;
+        let j = j.rem_euclid(i64::from(self.height)) as usize;
+        let [r, g, b] = self.data[j * self.width as usize + i];
+        DVec3::new(f64::from(r), f64::from(g), f64::from(b))
+    }
+
+    /// The colour at (u, v) (any values: they wrap).
+    pub fn sample(&self, u: f64, v: f64, interp: Interp) -> Color {
+        if !(u.is_finite() && v.is_finite()) {
+            return self.at(0, 0);
+        }
+        let u = u - u.floor();
+        let v = v - v.floor();
+        let (w, h) = (f64::from(self.width), f64::from(self.height));
+        match interp {
+            Interp::Nearest => self.at((u * w) as i64, ((1.0 - v) * h) as i64),
+            Interp::Bilinear => {
+                let x = u * w - 0.5;
+                let y = (1.0 - v) * h - 0.5;
+                let (i, j) = (x.floor(), y.floor());
+                let (tx, ty) = (x - i, y - j);
+                let (i, j) = (i as i64, j as i64);
+                let top = self.at(i, j) * (1.0 - tx) + self.at(i + 1, j) * tx;
+                let bottom = self.at(i, j + 1) * (1.0 - tx) + self.at(i + 1, j + 1) * tx;
+                top * (1.0 - ty) + bottom * ty
+            }
+        }
+    }
+}
+
+/// One image texture: its file, map, interpolation, Size and the shared pixels.
+#[derive(Clone, Debug)]
+pub struct ImageTexture {
+    /// The file name as the record quotes it.
+    pub file: String,
+    /// How the image wraps the object.
+    pub map: MapKind,
+    /// How colours are read between pixels.
+    pub interp: Interp,
+    /// The map frame's length of one image (> 0; unused by `spherical`).
+    pub size: f64,
+    /// The pixels, shared by every record naming the file.
+    pub pixels: Arc<Pixels>,
+}
+
+impl PartialEq for ImageTexture {
+    fn eq(&self, o: &Self) -> bool {
+        (self.file.as_str(), self.map, self.interp, self.size)
+            == (o.file.as_str(), o.map, o.interp, o.size)
+            && (Arc::ptr_eq(&self.pixels, &o.pixels) || self.pixels == o.pixels)
+    }
+}
+
+impl ImageTexture {
+    /// The colour at the world point `p` of `shape`.
+    pub fn color_at(&self, shape: &Shape, p: DVec3) -> Color {
+        let (u, v) = map::uv(self.map, self.size, shape, p);
+        self.pixels.sample(u, v, self.interp)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// 2×2: red, green / blue, white (rows top to bottom), in exact binary fractions.
+    fn quad() -> Pixels {
+        let data = vec![
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [1.0, 1.0, 1.0],
+        ];
+        Pixels::new(2, 2, data).unwrap()
+    }
+
+    fn c(r: f64, g: f64, b: f64) -> Color {
+        DVec3::new(r, g, b)
+    }
+
+    #[test]
+    fn nearest_rows_from_the_top_and_wrapping() {
+        let p = quad();
+        // v near 1 is the top row, v near 0 the bottom one.
+        assert_eq!(p.sample(0.25, 0.75, Interp::Nearest), c(1.0, 0.0, 0.0));
+        assert_eq!(p.sample(0.75, 0.75, Interp::Nearest), c(0.0, 1.0, 0.0));
+        assert_eq!(p.sample(0.25, 0.25, Interp::Nearest), c(0.0, 0.0, 1.0));
+        assert_eq!(p.sample(0.75, 0.25, Interp::Nearest), c(1.0, 1.0, 1.0));
+        // Wrapped: u = 1.25 is 0.25, v = −0.25 is 0.75; v = 0 is row ⌊2⌋ = 2 ≡ row 0.
+        assert_eq!(p.sample(1.25, -0.25, Interp::Nearest), c(1.0, 0.0, 0.0));
+        assert_eq!(p.sample(0.25, 0.0, Interp::Nearest), c(1.0, 0.0, 0.0));
+        assert_eq!(p.sample(f64::NAN, 0.0, Interp::Nearest), c(1.0, 0.0, 0.0));
+    }
+
+    #[test]
+    fn bilinear_at_centres_midpoints_and_across_the_edge() {
+        let p = quad();
+        // At a pixel centre the pixel itself: (u, v) = (¼, ¾) is red's centre.
+        assert_eq!(p.sample(0.25, 0.75, Interp::Bilinear), c(1.0, 0.0, 0.0));
+        // Half-way between red and green (u = ½, top row's centre): (½, ½, 0).
+        assert_eq!(p.sample(0.5, 0.75, Interp::Bilinear), c(0.5, 0.5, 0.0));
+        // The image's centre: the mean of all four, (½, ½, ½).
+        assert_eq!(p.sample(0.5, 0.5, Interp::Bilinear), c(0.5, 0.5, 0.5));
+        // u = 0 on the top row's centre: between green (column −1 ≡ 1) and red.
+        assert_eq!(p.sample(0.0, 0.75, Interp::Bilinear), c(0.5, 0.5, 0.0));
+        // A quarter of the way from red's centre towards green's: u = 0.375 gives
+        // x = 0.375·2 − 0.5 = 0.25, so 0.75 red + 0.25 green.
+        assert_eq!(p.sample(0.375, 0.75, Interp::Bilinear), c(0.75, 0.25, 0.0));
+        // And a quarter down towards blue (v = 0.625 → y = 0.25): top·0.75 + bottom·0.25,
+        // bottom = 0.75 blue + 0.25 white = (0.25, 0.25, 1).
+        let got = p.sample(0.375, 0.625, Interp::Bilinear);
+        let want = c(0.75, 0.25, 0.0) * 0.75 + c(0.25, 0.25, 1.0) * 0.25;
+        assert!((got - want).length() < 1e-15, "{got}");
+    }
+
+    #[test]
+    fn sizes_must_agree() {
+        assert!(Pixels::new(2, 2, vec![[0.0; 3]; 3]).is_none());
+        assert!(Pixels::new(0, 0, vec![]).is_none());
+        assert_eq!(quad().size(), (2, 2));
+    }
+}

@@ -1,0 +1,148 @@
+//! Reading an image texture's file (SPEC §16): PNG and JPEG through `image`, read as
+//! their bytes are (no gamma: byte/255, or /65535 for 16-bit PNGs, like every colour of
+//! the report); OpenEXR through `exr`, whose linear values are sRGB-encoded (§12) and
+//! clamped to 0..1, so that an EXR frame of ours maps exactly like its PNG (a frame
+//! written with `colour = "linear"` says so in its header and is taken as it is).
+//!
+//! The file must be a regular file of at most `MAX_TEXTURE_BYTES`, and its header's size
+//! within `MAX_TEXTURE_SIDE` and `MAX_TEXTURE_PIXELS` before anything is decoded.
+
+use super::image::Pixels;
+use crate::limits::{MAX_TEXTURE_BYTES, MAX_TEXTURE_PIXELS, MAX_TEXTURE_SIDE};
+use crate::output::colour::{encode, ATTRIBUTE};
+use std::path::Path;
+
+/// The pixels of the image file `path`, or why it gives none (one line, for a located
+/// error that names the file).
+pub fn load(path: &Path) -> Result<Pixels, String> {
+    let bytes =
+        crate::input::read_regular(path, MAX_TEXTURE_BYTES, "image").map_err(|e| e.to_string())?;
+    if bytes.starts_with(&[0x76, 0x2f, 0x31, 0x01]) {
+        exr_pixels(&bytes)
+    } else {
+        picture_pixels(&bytes)
+    }
+}
+
+/// Refuses a size past the limits.
+fn check_size(w: u64, h: u64) -> Result<(), String> {
+    let side = u64::from(MAX_TEXTURE_SIDE);
+    if w == 0 || h == 0 || w > side || h > side || w * h > MAX_TEXTURE_PIXELS {
+        return Err(format!(
+            "it is {w}×{h}, past the limits of an image texture ({MAX_TEXTURE_SIDE} a side, {MAX_TEXTURE_PIXELS} pixels)"
+        ));
+    }
+    Ok(())
+}
+
+/// A PNG or JPEG, by its bytes.
+fn picture_pixels(bytes: &[u8]) -> Result<Pixels, String> {
+    let reader = image::ImageReader::new(std::io::Cursor::new(bytes))
+        .with_guessed_format()
+        .map_err(|e| e.to_string())?;
+    if reader.format().is_none() {
+        return Err("it is not a PNG, JPEG or EXR image".to_string());
+    }
+    let decoder = reader.into_decoder().map_err(|e| e.to_string())?;
+    let (w, h) = image::ImageDecoder::dimensions(&decoder);
+    check_size(u64::from(w), u64::from(h))?;
+    let picture = image::DynamicImage::from_decoder(decoder).map_err(|e| e.to_string())?;
+    let data: Vec<[f32; 3]> = match picture.color() {
+        image::ColorType::L16
+        | image::ColorType::La16
+        | image::ColorType::Rgb16
+        | image::ColorType::Rgba16 => picture
+            .to_rgb16()
+            .pixels()
+            .map(|p| p.0.map(|c| (f64::from(c) / 65535.0) as f32))
+            .collect(),
+        _ => picture
+            .to_rgb8()
+            .pixels()
+            .map(|p| p.0.map(|c| (f64::from(c) / 255.0) as f32))
+            .collect(),
+    };
+    Pixels::new(w, h, data).ok_or_else(|| "it holds no pixels".to_string())
+}
+
+/// An OpenEXR's first part: its R, G, B channels (Y for a grey image), sRGB-encoded.
+fn exr_pixels(bytes: &[u8]) -> Result<Pixels, String> {
+    use exr::prelude::*;
+    let meta = exr::meta::MetaData::read_from_buffered(std::io::Cursor::new(bytes), false)
+        .map_err(|e| e.to_string())?;
+    let header = meta.headers.first().ok_or("it has no part")?;
+    let size = header.layer_size;
+    check_size(size.width() as u64, size.height() as u64)?;
+    let image = read()
+        .no_deep_data()
+        .largest_resolution_level()
+        .all_channels()
+        .first_valid_layer()
+        .all_attributes()
+        .from_buffered(std::io::Cursor::new(bytes))
+        .map_err(|e| e.to_string())?;
+    let layer = &image.layer_data;
+    let find = |name: &str| {
+        let list = &layer.channel_data.list;
+        let found = list.iter().find(|c| c.name.eq(name));
+        found.map(|c| c.sample_data.values_as_f32().collect::<Vec<f32>>())
+    };
+    let (r, g, b) = match (find("R"), find("G"), find("B"), find("Y")) {
+        (Some(r), Some(g), Some(b), _) => (r, g, b),
+        (_, _, _, Some(y)) => (y.clone(), y.clone(), y),
+        _ => return Err("it has neither R, G, B nor Y channels".to_string()),
+    };
+    let raw = matches!(
+        layer.attributes.other.get(&Text::from(ATTRIBUTE)),
+        Some(AttributeValue::Text(t)) if t.eq("linear")
+    );
+    let shown = |v: f32| {
+        let v = f64::from(v);
+        let v = if raw { v } else { encode(v) };
+        // NaN (or −0) maps to 0, like `to_byte`.
+        v.clamp(0.0, 1.0).max(0.0) as f32
+    };
+    let data = (r.into_iter().zip(g).zip(b))
+        .map(|((r, g), b)| [shown(r), shown(g), shown(b)])
+        .collect();
+    let (w, h) = (layer.size.width() as u32, layer.size.height() as u32);
+    Pixels::new(w, h, data).ok_or_else(|| "it holds no pixels".to_string())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn png_bytes_are_read_as_they_are() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("t.png");
+        let img = image::RgbImage::from_raw(2, 1, vec![255, 128, 0, 1, 2, 3]).unwrap();
+        img.save(&path).unwrap();
+        let px = load(&path).unwrap();
+        assert_eq!(px.size(), (2, 1));
+        let c = px.sample(0.25, 0.5, super::super::Interp::Nearest);
+        assert_eq!(
+            c,
+            glam::DVec3::new(1.0, 128.0 / 255.0, 0.0)
+                .as_vec3()
+                .as_dvec3()
+        );
+    }
+
+    #[test]
+    fn missing_and_foreign_files_say_why() {
+        let dir = tempfile::tempdir().unwrap();
+        assert!(load(&dir.path().join("none.png")).is_err());
+        let junk = dir.path().join("junk.png");
+        std::fs::write(&junk, b"not an image").unwrap();
+        assert!(load(&junk).unwrap_err().contains("not a PNG"));
+    }
+
+    #[test]
+    fn sizes_past_the_limits_are_refused() {
+        assert!(check_size(16, 16).is_ok());
+        assert!(check_size(u64::from(MAX_TEXTURE_SIDE) + 1, 1).is_err());
+        assert!(check_size(0, 4).is_err());
+    }
+}
