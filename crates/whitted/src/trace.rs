@@ -28,6 +28,7 @@ pub use rules::Rules;
 use crate::accel::{Accel, Hint, Hit, LightBuffer, NO_PART};
 use crate::lights::{self, SceneLight};
 use crate::object::Object;
+use std::borrow::Cow;
 use crate::optics::{reflect, refract, Ray};
 pub use crate::record::{NoRecord, Record};
 use crate::scene::Scene;
@@ -128,10 +129,14 @@ impl<'a> Tracer<'a> {
     /// The object as shading sees it at a hit on `part`: a mesh object becomes its
     /// triangle `part` (with the mesh's texture and material); any other is itself.
     #[inline]
-    pub fn surface_of(&self, obj: &Object, part: u32) -> Object {
+    pub fn surface_of<'o>(&self, obj: &'o Object, part: u32) -> Cow<'o, Object> {
         match self.accel.surface(&obj.shape, part) {
-            Some(shape) => Object { shape, ..*obj },
-            None => *obj,
+            Some(shape) => Cow::Owned(Object {
+                shape,
+                texture: obj.texture.clone(),
+                material: obj.material,
+            }),
+            None => Cow::Borrowed(obj),
         }
     }
 
@@ -185,7 +190,7 @@ impl<'a> Tracer<'a> {
                     &objects[i]
                 } else {
                     surface = self.surface_of(&objects[i], part);
-                    &surface
+                    &*surface
                 };
                 count.eye_hits += 1;
                 // The tile's mirror lists answer for the reflection off that plane only.

@@ -62,7 +62,7 @@ impl Target {
             if let (true, Some(ExtItem::Shape(o))) =
                 (on_object, scene.ext.objects.get_mut(*item as usize))
             {
-                o.texture = scene.objects[self.index].texture;
+                o.texture = scene.objects[self.index].texture.clone();
                 o.material = scene.objects[self.index].material;
             }
         }
