@@ -56,6 +56,7 @@ mod pixel_aspect;
 mod production_costs;
 mod production_drafts;
 mod production_encodes;
+mod production_hooks;
 mod progress;
 mod raytrace_cli;
 mod readonly_folder;

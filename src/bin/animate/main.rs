@@ -144,6 +144,14 @@ fn run(cli: Cli) -> anyhow::Result<Outcome> {
     })
 }
 
+/// Says why a command failed, with the hint that helps.
+fn say(e: &anyhow::Error) {
+    eprintln!("animate: {}", report::message(e));
+    if let Some(hint) = e.downcast_ref::<AnimError>().and_then(report::hint) {
+        eprintln!("animate: hint: {hint}");
+    }
+}
+
 fn main() -> ExitCode {
     if let Err(e) = whitted_anim::process::check_cpu() {
         eprintln!("animate: {e}");
@@ -152,10 +160,7 @@ fn main() -> ExitCode {
     match run(Cli::parse()) {
         Ok(outcome) => ExitCode::from(outcome.code()),
         Err(e) => {
-            eprintln!("animate: {}", report::message(&e));
-            if let Some(hint) = e.downcast_ref::<AnimError>().and_then(report::hint) {
-                eprintln!("animate: hint: {hint}");
-            }
+            say(&e);
             ExitCode::from(report::outcome(&e).code())
         }
     }

@@ -14,7 +14,9 @@
 //!   video; `tags`: its BT.709 matrix and colour tags;
 //! - `balance`: shards of equal predicted cost from a small pre-pass; `estimate`: the
 //!   predicted cost and time of a render; `cost`: what each frame cost, recorded beside
-//!   it.
+//!   it;
+//! - `hooks`: the user's commands after each frame and after the run; `hooked`: the
+//!   reporter that counts a run's frames and lines the frame hooks up in its order.
 
 pub mod balance;
 pub mod cost;
@@ -22,6 +24,8 @@ pub mod encode;
 pub mod estimate;
 pub mod events;
 pub mod folder;
+pub mod hooked;
+pub mod hooks;
 pub mod lock;
 pub mod owner;
 pub mod pipeline;
