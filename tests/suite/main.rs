@@ -57,6 +57,7 @@ mod production_costs;
 mod production_drafts;
 mod production_encodes;
 mod production_hooks;
+mod production_loops;
 mod progress;
 mod raytrace_cli;
 mod readonly_folder;
