@@ -58,6 +58,7 @@ mod production_drafts;
 mod production_encodes;
 mod production_hooks;
 mod production_loops;
+mod production_shared;
 mod progress;
 mod raytrace_cli;
 mod readonly_folder;

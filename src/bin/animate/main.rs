@@ -45,6 +45,7 @@ fn view(args: ViewArgs) -> anyhow::Result<Outcome> {
         bind: args.bind,
         port: args.port,
         threads: args.threads,
+        draft: args.draft.draft(),
     };
     let stop = whitted_anim::process::watch_signals_quietly();
     let ready = |url: &str| report::view_ready(&args.manifest, url, args.bind);

@@ -135,7 +135,8 @@ impl Reporter for Hooked<'_> {
     fn event(&self, event: Event) {
         self.inner.event(event);
         match event {
-            Event::Started { .. } => {}
+            Event::Started { .. } | Event::Sharing { .. } => {}
+            Event::Elsewhere { frame } => self.settle(frame, None),
             Event::Finished { frame, .. } => {
                 self.rendered.fetch_add(1, Ordering::Relaxed);
                 self.settle(frame, Some(FrameState::Rendered));
