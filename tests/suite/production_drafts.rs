@@ -130,3 +130,30 @@ fn check_and_bless_of_a_draft_use_references_of_its_own() {
     let out = animate().arg("check").arg(&manifest).output().unwrap();
     assert_eq!(out.status.code(), Some(2));
 }
+
+#[test]
+fn view_takes_the_draft_overrides() {
+    use crate::view_common::Viewer;
+    let (dir, manifest) = project(&circle_manifest(""));
+    let draft = ["--scale", "4", "--samples", "2"];
+    animate()
+        .arg(&manifest)
+        .args(["-q", "--frames", "5"])
+        .args(draft)
+        .assert()
+        .success();
+    let v = Viewer::start(&manifest, &draft);
+    let (_, state) = v.json("/api/state");
+    assert_eq!(
+        (state["width"].as_u64(), state["height"].as_u64()),
+        (Some(16), Some(12))
+    );
+    // The whole frame served is the draft frame written, and the strip reads the draft's
+    // folder: frame 5 up to date there.
+    let r = v.get("/api/frame?n=5&scale=1&format=raw&client=t");
+    assert_eq!(r.header("x-size"), Some("16x12"));
+    assert!(r.body == pixels(&dir.path().join("frames-draft-16x12-s2/frame_0005.png")));
+    let (_, strip) = v.json("/api/status");
+    assert_eq!(strip["states"][5], "up-to-date", "{strip}");
+    assert_eq!(strip["states"][4], "missing", "{strip}");
+}

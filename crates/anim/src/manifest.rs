@@ -10,6 +10,7 @@
 //! scene = "../scenes/orbit.txt"    # required, relative to the manifest's folder
 //! frames = 250                     # required, 1..=1000000
 //! fps = 25                         # 0.01 to 1000; default 25
+//! loop = false                     # true: the end leads into the start (see `timeline`)
 //!
 //! [camera]                         # optional: path = "circle" | "spline" (see `camera`)
 //! path = "circle"                  #   no path (or no [camera]): the scene's eye holds still
@@ -161,6 +162,10 @@ pub struct Manifest {
     pub frames: u32,
     /// Frames per second, > 0: the time base of the camera and the video.
     pub fps: f64,
+    /// `loop = true`: the end leads into the start with no doubled frame (frame `frames`
+    /// would be frame 0): a spline camera path is closed, tracks run back to their first
+    /// key, a circle makes whole turns.
+    pub looped: bool,
     /// The camera path; `None` keeps the scene file's eye.
     pub camera: Option<CameraPath>,
     /// An object the camera follows (`look_at = "sphere 2"`), or, without a path, a
@@ -322,6 +327,7 @@ impl<'a> From<&'a Manifest> for Sequence<'a> {
             look_at: m.look_at.as_ref(),
             tracks: &m.tracks,
             blur: m.render.motion_blur,
+            looped: m.looped,
         }
     }
 }

@@ -28,13 +28,13 @@ pub use rules::Rules;
 use crate::accel::{Accel, Hint, Hit, LightBuffer, NO_PART};
 use crate::lights::{self, SceneLight};
 use crate::object::Object;
-use std::borrow::Cow;
 use crate::optics::{reflect, refract, Ray};
 pub use crate::record::{NoRecord, Record};
 use crate::scene::Scene;
 use crate::shading::{self, Occluders};
 use crate::texture::Color;
 use glam::DVec3;
+use std::borrow::Cow;
 use std::sync::Arc;
 
 /// Bounces allowed after the primary ray.

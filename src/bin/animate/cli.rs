@@ -124,7 +124,7 @@ impl Common {
 }
 
 /// A draft's overrides of the manifest, for one run (render, status, stats, encode, check,
-/// bless): recorded in the frames, and written to the draft's own folder
+/// bless, view): recorded in the frames, and written to the draft's own folder
 /// (`DIR-draft-WxH`, `-sN`, `-aa`) unless told where.
 #[derive(Args, Debug, Clone, Default)]
 pub struct DraftArgs {

@@ -45,6 +45,7 @@ fn view(args: ViewArgs) -> anyhow::Result<Outcome> {
         bind: args.bind,
         port: args.port,
         threads: args.threads,
+        draft: args.draft.draft(),
     };
     let stop = whitted_anim::process::watch_signals_quietly();
     let ready = |url: &str| report::view_ready(&args.manifest, url, args.bind);
@@ -144,6 +145,14 @@ fn run(cli: Cli) -> anyhow::Result<Outcome> {
     })
 }
 
+/// Says why a command failed, with the hint that helps.
+fn say(e: &anyhow::Error) {
+    eprintln!("animate: {}", report::message(e));
+    if let Some(hint) = e.downcast_ref::<AnimError>().and_then(report::hint) {
+        eprintln!("animate: hint: {hint}");
+    }
+}
+
 fn main() -> ExitCode {
     if let Err(e) = whitted_anim::process::check_cpu() {
         eprintln!("animate: {e}");
@@ -152,10 +161,7 @@ fn main() -> ExitCode {
     match run(Cli::parse()) {
         Ok(outcome) => ExitCode::from(outcome.code()),
         Err(e) => {
-            eprintln!("animate: {}", report::message(&e));
-            if let Some(hint) = e.downcast_ref::<AnimError>().and_then(report::hint) {
-                eprintln!("animate: hint: {hint}");
-            }
+            say(&e);
             ExitCode::from(report::outcome(&e).code())
         }
     }

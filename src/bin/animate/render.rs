@@ -1,7 +1,7 @@
 //! The render command (`animate MANIFEST`): the library's run (`frames::run`) with what a
 //! person at a terminal sees around it: the announcement, the warning for an enormous
 //! render, the progress bar or JSON events, the summary, and the lines a stopped stream
-//! prints.
+//! prints, and the hooks (`--on-frame`, `--on-done`).
 
 use super::cli::RenderArgs;
 use super::{pool, report};
@@ -10,6 +10,8 @@ use std::time::Instant;
 use whitted::exit::Outcome;
 use whitted::output::ImageFormat;
 use whitted_anim::frames::balance;
+use whitted_anim::frames::hooked::{FramePath, Hooked, Tally};
+use whitted_anim::frames::hooks::HookRun;
 use whitted_anim::frames::run::{self, Destination};
 use whitted_anim::progress::Weighted;
 use whitted_anim::{AnimError, Animation, Reporter};
@@ -24,8 +26,47 @@ fn stream_stopped(sig: i32) -> String {
     )
 }
 
-/// Renders the frames `args` ask for.
+/// Shows a hook's run as it ends: a failure with its output, else what it printed.
+fn told(run: &HookRun) {
+    match run.failed() {
+        true => eprintln!("animate: {}", run.report()),
+        false => eprint!("{}", run.output),
+    }
+}
+
+/// Renders the frames `args` ask for, then runs `--on-done`: the run's error, if any, is
+/// said first, and the hook is told the exit status it gives. A failed hook makes a run
+/// that succeeded end with status 1.
 pub fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
+    let on_done = args.on_done.clone();
+    let mut tally = Tally::default();
+    let result = render_frames(args, &mut tally);
+    let hooks_failed = tally.hooks_failed > 0;
+    let Some(hook) = on_done else {
+        return result.map(|o| failed_if(o, hooks_failed));
+    };
+    let outcome = match result {
+        Ok(outcome) => failed_if(outcome, hooks_failed),
+        Err(e) => {
+            super::say(&e);
+            report::outcome(&e)
+        }
+    };
+    let done = hook.run_done(tally.rendered, tally.failed, outcome.code());
+    told(&done);
+    Ok(failed_if(outcome, done.failed()))
+}
+
+/// `outcome`, or a failure when it was a success and `failed`.
+fn failed_if(outcome: Outcome, failed: bool) -> Outcome {
+    match (outcome, failed) {
+        (Outcome::Success, true) => Outcome::Failed,
+        (o, _) => o,
+    }
+}
+
+/// The render itself; `tally` gets what the run did, however it ends.
+fn render_frames(args: RenderArgs, tally: &mut Tally) -> anyhow::Result<Outcome> {
     let c = &args.common;
     if args.stdout.is_some() && whitted_anim::process::stdout_closed() {
         return Err(AnimError::StdoutClosed.into());
@@ -67,13 +108,21 @@ pub fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
         true => &report::JsonLines,
         false => &bar,
     };
+    let hook = match &destination {
+        Destination::Folder(_) => args.on_frame.clone(),
+        _ => None,
+    };
+    let (dir, output, n) = (destination.folder(), m.output.clone(), m.frames);
+    let path: FramePath = Box::new(move |f| dir.join(output.file_name(f, n)));
+    let hooked = Hooked::new(reporter, &frames, hook, path, Box::new(told));
     let mut out = std::io::BufWriter::with_capacity(1 << 20, std::io::stdout());
     let start = Instant::now();
     let summary = pool.install(|| {
         let (d, p) = (&destination, &policy);
-        run::render(&anim, &frames, d, p, &mut out, reporter, &stop)
+        run::render(&anim, &frames, d, p, &mut out, &hooked, &stop)
     });
     bar.finish();
+    *tally = hooked.finish();
     let summary = match (summary, &destination) {
         (Err(AnimError::Interrupted(sig)), Destination::Stream(_) | Destination::Video(_)) => {
             eprintln!("{}", stream_stopped(sig));

@@ -33,6 +33,10 @@ impl Reporter for JsonLines {
                                     "seconds": seconds, "rays": rays.total()}),
             Event::Skipped { frame } => serde_json::json!({"event": "skipped", "frame": frame}),
             Event::Failed { frame } => serde_json::json!({"event": "failed", "frame": frame}),
+            Event::Elsewhere { frame } => {
+                serde_json::json!({"event": "elsewhere", "frame": frame})
+            }
+            Event::Sharing { pid } => serde_json::json!({"event": "sharing", "pid": pid}),
         };
         eprintln!("{line}");
     }
@@ -81,12 +85,24 @@ pub fn view_ready(manifest: &std::path::Path, url: &str, bind: std::net::IpAddr)
     whitted_anim::view::print_url(url);
 }
 
+/// What a run says when it finds another run of its manifest in its folder.
+pub fn sharing(pid: u32) {
+    eprintln!(
+        "animate: sharing the folder with pid {pid}, another run of this manifest: each frame \
+         is rendered once, by the run that claims it first"
+    );
+}
+
 /// The one-line summary: frames, wall time, frames/s, rays/s, where they went.
 pub fn summary(s: &Summary, start: Instant, place: &str) {
     let secs = start.elapsed().as_secs_f64().max(1e-9);
     let frames = |n: usize| if n == 1 { "frame" } else { "frames" };
+    let elsewhere = match s.elsewhere {
+        0 => String::new(),
+        n => format!(", {n} by another run"),
+    };
     eprintln!(
-        "animate: {} {} rendered, {} up to date in {:.2} s: {:.2} frames/s, {:.1} Mrays/s -> {place}",
+        "animate: {} {} rendered, {} up to date{elsewhere} in {:.2} s: {:.2} frames/s, {:.1} Mrays/s -> {place}",
         s.rendered,
         frames(s.rendered),
         s.skipped,

@@ -123,7 +123,7 @@ pub fn entries(dir: &Path) -> Vec<String> {
 }
 
 /// What is left in a frame folder besides the run's folder lock (the library's
-/// `LOCK_FILE` and its `LOCK_FILE-<key>` files) and the frames' cost records, sorted, hidden ones included; nothing when
+/// `LOCK_FILE` and its `LOCK_FILE-<key>` files, the frames' claims) and the frames' cost records, sorted, hidden ones included; nothing when
 /// the folder does not exist.
 pub fn leftovers(dir: &Path) -> Vec<String> {
     use whitted_anim::frames::lock::LOCK_FILE;
@@ -138,6 +138,7 @@ pub fn leftovers(dir: &Path) -> Vec<String> {
     entries(dir)
         .into_iter()
         .filter(|n| n != LOCK_FILE && !n.starts_with(&own))
+        .filter(|n| n != whitted_anim::frames::claim::CLAIMS)
         .filter(|n| !(n == ".whitted-record" && only_costs))
         .collect()
 }

@@ -1,5 +1,6 @@
 //! What the pipeline reports while it works, as events (after cargo-nextest's reporter):
-//! a run starts, each frame finishes, is skipped as up to date, or fails. The pipeline
+//! a run starts (sharing its folder with another run or not), each frame finishes, is
+//! skipped as up to date, is rendered by another run, or fails. The pipeline
 //! calls a `Reporter`; drawing a progress bar, printing a summary or JSON lines for a
 //! scheduler is the reporter's business (the binaries own those), so the library never
 //! draws anything.
@@ -30,6 +31,17 @@ pub enum Event {
     Skipped {
         /// The frame's number in the sequence (0-based).
         frame: u32,
+    },
+    /// Frame `frame` was rendered by another run sharing the folder (`claim`).
+    Elsewhere {
+        /// The frame's number in the sequence (0-based).
+        frame: u32,
+    },
+    /// The run shares its folder with another run of the same manifest, process `pid`
+    /// (sent before `Started`).
+    Sharing {
+        /// The other run's process id, as its lock file says.
+        pid: u32,
     },
     /// Frame `frame` could not be rendered or written; the run stops after it.
     Failed {

@@ -34,12 +34,19 @@ pub const LOCK_FILE: &str = ".whitted-lock";
 pub struct FolderLock {
     _file: File,
     alone: bool,
+    shared_with: Option<u32>,
 }
 
 impl FolderLock {
     /// Whether no other run of the same manifest held the folder when this one took it.
     pub fn alone(&self) -> bool {
         self.alone
+    }
+
+    /// The process id of the latest run of the same manifest that held the folder when
+    /// this one took it (each run writes its own into the lock file), if any.
+    pub fn shared_with(&self) -> Option<u32> {
+        self.shared_with
     }
 }
 
@@ -101,6 +108,13 @@ pub fn lock(dir: &Path, manifest: &Path) -> Result<FolderLock, AnimError> {
         Err(TryLockError::Error(e)) => return Err(folder(e)),
     };
     file.lock_shared().map_err(folder)?;
+    let shared_with = match alone {
+        true => None,
+        false => holder(&file)
+            .strip_prefix("pid ")
+            .and_then(|rest| rest.split(',').next())
+            .and_then(|pid| pid.trim().parse().ok()),
+    };
     let started = std::time::SystemTime::now()
         .duration_since(std::time::UNIX_EPOCH)
         .map_or(0, |d| d.as_secs());
@@ -114,7 +128,11 @@ pub fn lock(dir: &Path, manifest: &Path) -> Result<FolderLock, AnimError> {
     file.rewind().map_err(folder)?;
     file.write_all(text.as_bytes()).map_err(folder)?;
     drop(gate);
-    Ok(FolderLock { _file: file, alone })
+    Ok(FolderLock {
+        _file: file,
+        alone,
+        shared_with,
+    })
 }
 
 #[cfg(test)]
@@ -128,6 +146,8 @@ mod tests {
         assert!(first.alone());
         let shard = lock(dir.path(), Path::new("/b/one.toml")).unwrap();
         assert!(!shard.alone());
+        assert_eq!(shard.shared_with(), Some(std::process::id()));
+        assert_eq!(first.shared_with(), None);
         drop(shard);
         let e = lock(dir.path(), Path::new("/a/two.toml")).unwrap_err();
         let shown = e.to_string();

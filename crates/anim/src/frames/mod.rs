@@ -8,20 +8,26 @@
 //! - `provenance`: what made a frame, recorded in the frame file; `status`: which frames
 //!   of a folder are up to date, stale or missing;
 //! - `folder`: what else a frame folder holds (frames past the end, temporaries of
-//!   killed runs) and `animate clean`; `lock`: one run at a time per folder; `owner`:
+//!   killed runs) and `animate clean`; `lock`: one manifest at a time per folder;
+//!   `claim`: runs of that manifest sharing the folder render each frame once; `owner`:
 //!   whose a file under a frame's name is (runs, `clean` and `bless` touch only theirs);
 //! - `video`: ffmpeg, checked before the first frame; `encode`: a rendered folder into a
 //!   video; `tags`: its BT.709 matrix and colour tags;
 //! - `balance`: shards of equal predicted cost from a small pre-pass; `estimate`: the
 //!   predicted cost and time of a render; `cost`: what each frame cost, recorded beside
-//!   it.
+//!   it;
+//! - `hooks`: the user's commands after each frame and after the run; `hooked`: the
+//!   reporter that counts a run's frames and lines the frame hooks up in its order.
 
 pub mod balance;
+pub mod claim;
 pub mod cost;
 pub mod encode;
 pub mod estimate;
 pub mod events;
 pub mod folder;
+pub mod hooked;
+pub mod hooks;
 pub mod lock;
 pub mod owner;
 pub mod pipeline;

@@ -4,7 +4,10 @@
 //! - Folder: the run holds the folder's lock (`lock`) and clears the temporaries killed
 //!   runs left (`folder`); frames render in windows of four per thread; each is encoded
 //!   with its provenance (`provenance`), written to a temporary name in the folder, then
-//!   renamed, so a file under a final name is always complete. With `resume`, frames
+//!   renamed, so a file under a final name is always complete. Each frame is claimed
+//!   first (`claim`): runs of the same manifest in one folder render each frame once, a
+//!   frame another run holds is left, then waited for at the end and taken over if that
+//!   run died. With `resume`, frames
 //!   whose file records the digest the manifest now gives them are left untouched
 //!   (`status`); frames recorded by another manifest are not overwritten unless forced.
 //! - Stream (`--stdout`, `--video`): frames render in windows of twice the thread count
@@ -15,6 +18,7 @@
 //! when `stop` holds a signal number, and after the first failure; the frames already
 //! finished stay finished.
 
+use super::claim::Claims;
 use super::cost::{self, Meter};
 use super::events::{Event, Reporter};
 use super::folder;
@@ -29,7 +33,7 @@ use crate::project::Animation;
 use rayon::prelude::*;
 use std::io::Write;
 use std::path::Path;
-use std::sync::atomic::AtomicUsize;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
 use whitted::output::{
@@ -46,6 +50,8 @@ pub struct Summary {
     pub rendered: usize,
     /// Frames left as they were because they were up to date (`--resume`).
     pub skipped: usize,
+    /// Frames rendered by another run sharing the folder (`claim`).
+    pub elsewhere: usize,
     /// All rays cast by the rendered frames, by kind.
     pub rays: RayCount,
 }
@@ -219,6 +225,10 @@ pub(crate) fn render_to_folder(
     if let Some(refusal) = owner::refusal("replaced", &unrecorded) {
         return Err(refusal);
     }
+    if let Some(pid) = lock.shared_with() {
+        reporter.event(Event::Sharing { pid });
+    }
+    let claims = Claims::new(dir)?;
     reporter.event(Event::Started {
         total: frames.len(),
         skipped: done.len(),
@@ -228,17 +238,55 @@ pub(crate) fn render_to_folder(
     }
 
     let failure: Mutex<Option<AnimError>> = Mutex::new(None);
+    let fail = |e: AnimError| {
+        if let Ok(mut slot) = failure.lock() {
+            slot.get_or_insert(e);
+        }
+    };
     let failed = || failure.lock().map(|f| f.is_some()).unwrap_or(true);
     let meter = Meter::default();
-    // One frame: rendered, encoded and written on its worker; the first failure is kept.
-    let work = |frame: u32| -> RayCount {
+    let (busy, elsewhere, rendered) = (
+        Mutex::new(Vec::new()),
+        AtomicUsize::new(0),
+        AtomicUsize::new(0),
+    );
+    // One frame: claimed (now, or with `wait` once its holder lets go), then rendered,
+    // encoded and written on its worker unless another run wrote it meanwhile; the first
+    // failure is kept.
+    let work = |frame: u32, wait: bool| -> RayCount {
         if stopped(stop).is_some() || failed() {
+            return RayCount::default();
+        }
+        let path = anim.frame_path(dir, frame);
+        let claimed = match wait {
+            true => claims.claim(&path).map(Some),
+            false => claims.try_claim(&path),
+        };
+        let _claim = match claimed {
+            Ok(Some(claim)) => claim,
+            Ok(None) => {
+                busy.lock().map(|mut b| b.push(frame)).unwrap_or(());
+                return RayCount::default();
+            }
+            Err(source) => {
+                reporter.event(Event::Failed { frame });
+                fail(AnimError::Folder {
+                    dir: dir.join(super::claim::CLAIMS),
+                    source,
+                });
+                return RayCount::default();
+            }
+        };
+        if claims.done_elsewhere(anim, dir, frame) {
+            elsewhere.fetch_add(1, Ordering::Relaxed);
+            reporter.event(Event::Elsewhere { frame });
             return RayCount::default();
         }
         let start = Instant::now();
         match write_frame(anim, dir, frame, &meter) {
             Ok(rays) => {
                 let seconds = start.elapsed().as_secs_f64();
+                rendered.fetch_add(1, Ordering::Relaxed);
                 reporter.event(Event::Finished {
                     frame,
                     seconds,
@@ -249,23 +297,33 @@ pub(crate) fn render_to_folder(
             Err(AnimError::Interrupted(_)) => RayCount::default(), // stopped mid-frame
             Err(e) => {
                 reporter.event(Event::Failed { frame });
-                if let Ok(mut slot) = failure.lock() {
-                    slot.get_or_insert(e);
-                }
+                fail(e);
                 RayCount::default()
             }
         }
     };
-    let rays = todo
-        .chunks(anim.window(4))
-        .map(|chunk| {
-            let sum = |a, b| a + b;
-            chunk
-                .par_iter()
-                .map(|&f| work(f))
-                .reduce(RayCount::default, sum)
-        })
-        .fold(RayCount::default(), |a, b| a + b);
+    let pass = |frames: &[u32], wait: bool| {
+        frames
+            .chunks(anim.window(4))
+            .map(|chunk| {
+                let sum = |a, b| a + b;
+                chunk
+                    .par_iter()
+                    .map(|&f| work(f, wait))
+                    .reduce(RayCount::default, sum)
+            })
+            .fold(RayCount::default(), |a, b| a + b)
+    };
+    let mut rays = pass(&todo, false);
+    // Frames another live run held: each waited for, then written by it or taken over.
+    let mut held = busy
+        .lock()
+        .map(|mut b| std::mem::take(&mut *b))
+        .unwrap_or_default();
+    let order: std::collections::HashMap<u32, usize> =
+        todo.iter().enumerate().map(|(i, &f)| (f, i)).collect();
+    held.sort_by_key(|f| order.get(f).copied());
+    rays = rays + pass(&held, true);
 
     drop(lock);
     if let Some(e) = failure.into_inner().unwrap_or(None) {
@@ -275,8 +333,9 @@ pub(crate) fn render_to_folder(
         return Err(AnimError::Interrupted(sig));
     }
     Ok(Summary {
-        rendered: todo.len(),
+        rendered: rendered.into_inner(),
         skipped: done.len(),
+        elsewhere: elsewhere.into_inner(),
         rays,
     })
 }
@@ -327,7 +386,7 @@ pub(crate) fn render_to_stream(
     out.flush().map_err(AnimError::Stream)?;
     Ok(Summary {
         rendered: frames.len(),
-        skipped: 0,
         rays,
+        ..Summary::default()
     })
 }

@@ -26,6 +26,14 @@ pub enum Destination {
 }
 
 impl Destination {
+    /// The folder the frames go into (none for a stream or a video).
+    pub fn folder(&self) -> PathBuf {
+        match self {
+            Destination::Folder(dir) => dir.clone(),
+            _ => PathBuf::new(),
+        }
+    }
+
     /// Where the frames went, for the summary line.
     pub fn describe(&self) -> String {
         match self {

@@ -36,6 +36,8 @@ pub(super) struct RawManifest<C> {
     pub scene: Spanned<String>,
     pub frames: Spanned<i64>,
     pub fps: Option<Spanned<f64>>,
+    #[serde(rename = "loop")]
+    pub looped: Option<Spanned<bool>>,
     pub camera: Option<C>,
     pub output: Option<RawOutput>,
     pub render: Option<RawRender>,

@@ -8,7 +8,7 @@ use super::*;
 fn unknown_keys_are_located_and_the_valid_ones_named() {
     assert_eq!(
         refusal(&with("bogus = 1")),
-        "3:1: unknown key `bogus`; the top level takes `scene`, `frames`, `fps`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`"
+        "3:1: unknown key `bogus`; the top level takes `scene`, `frames`, `fps`, `loop`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`"
     );
     assert_eq!(
         refusal(&format!("scene = \"s\"\nframes = 3\n{CIRCLE}  spin = 2\n")),
@@ -37,8 +37,8 @@ fn misspelt_tables_and_keys_are_all_located_with_the_nearest_name() {
                keys = [{ frame = 0, vlaue = 1 }]\n";
     assert_eq!(
         refusal(src),
-        "3:2: unknown table `[outptu]` (did you mean `[output]`?); the top level takes `scene`, `frames`, `fps`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`\n\
-         5:2: unknown table `[camra]` (did you mean `[camera]`?); the top level takes `scene`, `frames`, `fps`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`\n\
+        "3:2: unknown table `[outptu]` (did you mean `[output]`?); the top level takes `scene`, `frames`, `fps`, `loop`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`\n\
+         5:2: unknown table `[camra]` (did you mean `[camera]`?); the top level takes `scene`, `frames`, `fps`, `loop`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`\n\
          8:1: render: unknown key `samles` (did you mean `samples`?); [render] takes `width`, `height`, `samples`, `motion_blur`, `antialias`\n\
          9:17: render.motion_blur: unknown key `shuter` (did you mean `shutter`?); motion_blur takes `shutter`, `samples`\n\
          12:22: track[0].keys[0]: unknown key `vlaue` (did you mean `value`?); a track key takes `frame`, `time`, `value`, `ease`"

@@ -55,6 +55,7 @@ const TOP: Place = Place {
         ("scene", Value),
         ("frames", Value),
         ("fps", Value),
+        ("loop", Value),
         ("camera", Camera),
         ("output", Table(OUTPUT)),
         ("render", Table(RENDER)),
@@ -323,7 +324,7 @@ mod tests {
         assert_eq!(
             found[1].1,
             "unknown table `[camra]` (did you mean `[camera]`?); the top level takes `scene`, \
-             `frames`, `fps`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`"
+             `frames`, `fps`, `loop`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`"
         );
         assert_eq!(
             found[2].1,

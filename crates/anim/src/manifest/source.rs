@@ -141,6 +141,13 @@ impl Source<'_> {
             return Err(first.unwrap_or_else(|| self.error(0..0, "the manifest cannot be read")));
         };
         let (camera, look_at, lens) = parts;
+        let looped = raw.looped.as_ref().is_some_and(|l| *l.get_ref());
+        let camera = match (camera, &raw.looped) {
+            (Some(path), Some(at)) if looped => {
+                Some(path.looped().map_err(|m| self.error(at.span(), m))?)
+            }
+            (camera, _) => camera,
+        };
         Ok(Manifest {
             path: self.path.to_path_buf(),
             scene,
@@ -148,6 +155,7 @@ impl Source<'_> {
             camera_loc: FileLoc::default(),
             frames,
             fps,
+            looped,
             camera,
             look_at,
             lens,

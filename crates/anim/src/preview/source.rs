@@ -70,10 +70,11 @@ impl Source {
         Ok(anim)
     }
 
-    /// The camera at (up to `MAX_SAMPLES`) frames spread evenly from the first to the last.
+    /// The camera at (up to `MAX_SAMPLES`) frames spread evenly from the first to the last
+    /// (to frame `frames`, which is frame 0, when the sequence loops: the drawn path closes).
     pub fn camera_samples(&self) -> Vec<CameraSample> {
         let timeline = &self.project.timeline;
-        sample_frames(self.frames(), MAX_SAMPLES)
+        sample_frames(self.project.timeline.plotted_frames(), MAX_SAMPLES)
             .into_iter()
             .map(|frame| {
                 let state = timeline.at(f64::from(frame));
@@ -89,7 +90,7 @@ impl Source {
     /// The path of every tracked position (sphere centre, plane or cylinder point, light
     /// position), at the same frames as the camera samples.
     pub fn tracks(&self) -> Vec<Track> {
-        let frames = sample_frames(self.frames(), MAX_SAMPLES);
+        let frames = sample_frames(self.project.timeline.plotted_frames(), MAX_SAMPLES);
         self.project
             .timeline
             .tracked_positions()

@@ -34,11 +34,7 @@ impl Timeline {
                     let mut ext = self.base.ext.clone();
                     for (_, other) in &mine {
                         if let Field::Ext(f) = other.target.field {
-                            target::ext::write(
-                                &mut ext,
-                                &f,
-                                other.spec.motion.value_at(t, self.frames),
-                            );
+                            target::ext::write(&mut ext, &f, self.value(other, t));
                         }
                     }
                     let Err(why) = target::ext::check_record(&ext, record) else {
@@ -60,7 +56,7 @@ impl Timeline {
                         culprit.spec.target,
                         why.message
                     );
-                    let loc = culprit.spec.motion.loc_at(t, &culprit.spec.loc);
+                    let loc = self.loc_of(culprit, t);
                     return Err(invalid(loc, message));
                 }
             }
@@ -73,7 +69,7 @@ impl Timeline {
         for (n, track) in self.tracks.iter().enumerate() {
             for frame in 0..self.frames {
                 for t in self.times(frame) {
-                    let value = track.spec.motion.value_at(t, self.frames);
+                    let value = self.value(track, t);
                     if let Err(why) = track.target.check(value) {
                         let shown = match track.target.kind() {
                             Kind::Number => format!("{}", value.x),
@@ -89,12 +85,21 @@ impl Timeline {
                             n + 1,
                             track.spec.target
                         );
-                        let loc = track.spec.motion.loc_at(t, &track.spec.loc);
+                        let loc = self.loc_of(track, t);
                         return Err(invalid(loc, message));
                     }
                 }
             }
         }
         Ok(())
+    }
+
+    /// The manifest place of the key that gives `track` its value at `t`.
+    fn loc_of<'a>(&self, track: &'a Track, t: f64) -> &'a whitted::fileloc::FileLoc {
+        let (motion, frames) = (&track.spec.motion, self.frames);
+        match self.looped {
+            true => motion.loc_looped(t, frames, &track.spec.loc),
+            false => motion.loc_at(t, &track.spec.loc),
+        }
     }
 }

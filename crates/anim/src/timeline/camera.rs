@@ -112,6 +112,24 @@ impl CameraPath {
         }
     }
 
+    /// The path made to loop over `frames` frames (`loop = true`): a spline closed (after
+    /// its last key it runs back to its first, arriving `frames` frames after the first
+    /// key's frame), a circle as it is. Refused, with the reason, when it cannot loop: a
+    /// circle of fractional turns. (Keys lie within the sequence, so within one loop.)
+    pub fn looped(self) -> Result<CameraPath, String> {
+        match self {
+            CameraPath::Circle { circle, .. } if circle.turns.fract() != 0.0 => Err(format!(
+                "loop = true: the camera's circle must make whole turns to loop, found turns = {}",
+                circle.turns
+            )),
+            CameraPath::Spline(s) => {
+                let closed = Spline::new(s.keys.clone(), true, s.constant_speed, s.look_at);
+                Ok(CameraPath::Spline(closed.unwrap_or(s)))
+            }
+            path => Ok(path),
+        }
+    }
+
     /// The path's name as the manifest writes it: `circle` or `spline`.
     pub fn name(&self) -> &'static str {
         match self {

@@ -5,6 +5,10 @@
 //! value at time t put in and the camera's eye and look-at point there. Times are in
 //! frames and may be fractional (motion blur samples between frames, `MotionBlur`).
 //!
+//! A looping sequence (`loop = true`) repeats every `frames` frames: frame `frames` is
+//! frame 0, tracks run from their last key back to their first (`Motion::value_looped`),
+//! and motion blur's sub-frames before frame 0 are the end of the loop.
+//!
 //! Building a timeline resolves every track against the scene and checks every value it
 //! will produce, at every time a frame of the sequence will sample, against the bounds of
 //! SPEC §1; a refusal names the manifest's line and column, the track and the frame.
@@ -82,6 +86,8 @@ pub struct Sequence<'a> {
     pub tracks: &'a [TrackSpec],
     /// The motion blur, if any.
     pub blur: Option<MotionBlur>,
+    /// `loop = true`: the end leads into the start (frame `frames` is frame 0).
+    pub looped: bool,
 }
 
 /// What the camera looks at when the path does not say.
@@ -108,6 +114,9 @@ pub struct Timeline {
     pub tracks: Vec<Track>,
     /// The motion blur, if the manifest asks for it.
     pub blur: Option<MotionBlur>,
+    /// Whether the sequence loops: tracks run from their last key back to their first
+    /// (`Motion::value_looped`), a spline camera path is closed by the manifest.
+    pub looped: bool,
     gaze: Gaze,
 }
 
@@ -165,6 +174,11 @@ impl Timeline {
                     continue;
                 }
             };
+            if manifest.looped {
+                if let Err(m) = fits_a_loop(&spec.motion) {
+                    refuse(invalid(&spec.loc, format!("track {}: {m}", n + 1)));
+                }
+            }
             if let Some(j) = tracks.iter().position(|t| t.target == track.target) {
                 let message = format!(
                     "track {}: its target `{}` is already animated by track {}; one track per value",
@@ -185,6 +199,7 @@ impl Timeline {
             camera: manifest.camera.cloned(),
             tracks,
             blur: manifest.blur,
+            looped: manifest.looped,
             gaze,
         };
         timeline.check_values()?;
@@ -213,8 +228,7 @@ impl Timeline {
         } else {
             let mut scene = self.base.clone();
             for track in &self.tracks {
-                let value = track.spec.motion.value_at(t, self.frames);
-                track.target.apply(&mut scene, value);
+                track.target.apply(&mut scene, self.value(track, t));
             }
             Cow::Owned(scene)
         };
@@ -234,19 +248,45 @@ impl Timeline {
         }
     }
 
+    /// A track's value at time `t`, in a loop when the sequence loops.
+    pub fn value(&self, track: &Track, t: f64) -> DVec3 {
+        match self.looped {
+            true => track.spec.motion.value_looped(t, self.frames),
+            false => track.spec.motion.value_at(t, self.frames),
+        }
+    }
+
+    /// The frames a plot of the paths draws: every frame, and frame `frames` (which is
+    /// frame 0) when the sequence loops, so that the drawn path closes.
+    pub fn plotted_frames(&self) -> u32 {
+        self.frames + u32::from(self.looped)
+    }
+
     /// The position a track gives over the sequence, for plots: `(frame, point)` of each
-    /// track whose target is a position, at every frame.
+    /// track whose target is a position, at every frame of `plotted_frames`.
     pub fn tracked_positions(&self) -> Vec<(String, Vec<DVec3>)> {
         self.tracks
             .iter()
             .filter(|t| t.target.is_position())
             .map(|t| {
-                let points = (0..self.frames)
-                    .map(|f| t.spec.motion.value_at(f64::from(f), self.frames))
+                let points = (0..self.plotted_frames())
+                    .map(|f| self.value(t, f64::from(f)))
                     .collect();
                 (t.spec.target.clone(), points)
             })
             .collect()
+    }
+}
+
+/// Whether a track can loop: a circle's turns whole (keys lie within the sequence, so
+/// within one loop, always).
+fn fits_a_loop(motion: &Motion) -> Result<(), String> {
+    match motion {
+        Motion::Circle(c) if c.turns.fract() != 0.0 => Err(format!(
+            "with loop = true a circle makes whole turns, found turns = {}",
+            c.turns
+        )),
+        _ => Ok(()),
     }
 }
 
@@ -280,5 +320,7 @@ fn resolve(spec: &TrackSpec, scene: &Scene) -> Result<Track, String> {
     })
 }
 
+#[cfg(test)]
+mod loop_tests;
 #[cfg(test)]
 mod tests;

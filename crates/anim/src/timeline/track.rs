@@ -23,6 +23,12 @@
 //! after the last the end value holds; `step` holds a key's value until the next key's
 //! frame. `smooth` is the camera spline's centripetal Catmull-Rom through the key values
 //! (numbers as `(x, 0, 0)`), with the open path's reflected end points.
+//!
+//! In a loop (`loop = true`, `value_looped`) the keys repeat every `frames` frames: after
+//! the last key the value runs back to the first key's, arriving `frames` frames after the
+//! first key (at frame `frames` for a first key at 0) with the last key's ease and
+//! interpolation (`step` holds the last value until then); `smooth` is then the closed
+//! curve, its neighbours wrapping around, as a closed camera spline's.
 
 use super::camera::Circle;
 use super::ease::{Ease, Interpolation};
@@ -100,13 +106,47 @@ impl Motion {
                 };
                 let (a, b) = (&keys[segment], &keys[segment + 1]);
                 let u = (t - f64::from(a.frame)) / f64::from(b.frame - a.frame);
-                let e = a.ease.apply(u);
-                match interpolation {
-                    Interpolation::Step => a.value,
-                    Interpolation::Linear => a.value + (b.value - a.value) * e,
-                    Interpolation::Smooth => curve_point(keys, |k| k.value, false, segment, e),
-                }
+                between(*interpolation, keys, segment, a.ease.apply(u), false)
             }
+        }
+    }
+
+    /// The value at time `t` of a `frames`-frame sequence that loops (`loop = true`): the
+    /// keys repeat every `frames` frames, and after the last key the value runs back to
+    /// the first key's, reaching it `frames` frames after the first key's frame (frame
+    /// `frames` when the first key is at 0), with the last key's ease; `smooth` is the
+    /// closed curve through the keys, so the join is as smooth as the rest. A circle is
+    /// the same as `value_at`; one key holds.
+    pub fn value_looped(&self, t: f64, frames: u32) -> DVec3 {
+        let Motion::Keys {
+            interpolation,
+            keys,
+        } = self
+        else {
+            return self.value_at(t, frames);
+        };
+        let n = keys.len();
+        if n < 2 {
+            return keys[0].value;
+        }
+        let (segment, u) = looped_segment(keys, t, frames);
+        between(
+            *interpolation,
+            keys,
+            segment,
+            keys[segment].ease.apply(u),
+            true,
+        )
+    }
+
+    /// `loc_at` in a loop (`value_looped`): the key that starts the segment, the last key
+    /// for the closing one.
+    pub fn loc_looped<'a>(&'a self, t: f64, frames: u32, track: &'a FileLoc) -> &'a FileLoc {
+        match self {
+            Motion::Keys { keys, .. } if keys.len() > 1 => {
+                &keys[looped_segment(keys, t, frames).0].loc
+            }
+            _ => self.loc_at(t, track),
         }
     }
 
@@ -121,6 +161,53 @@ impl Motion {
                 None => &keys[keys.len() - 1].loc,
             },
         }
+    }
+}
+
+/// The time `t` of a loop of `frames` frames (widened to the keys' span should they span
+/// more: a manifest's keys lie within its frames) brought into the first loop: the first key's frame to
+/// that plus the period.
+fn in_loop(keys: &[TrackKey], t: f64, frames: u32) -> (f64, f64) {
+    let first = f64::from(keys[0].frame);
+    let last = f64::from(keys[keys.len() - 1].frame);
+    let period = f64::from(frames).max(last - first + 1.0);
+    (first + (t - first).rem_euclid(period), period)
+}
+
+/// The segment and its parameter u ∈ [0, 1] of time `t` in a loop (two keys at least):
+/// segment n − 1 is the closing one, from the last key back to the first.
+fn looped_segment(keys: &[TrackKey], t: f64, frames: u32) -> (usize, f64) {
+    let n = keys.len();
+    let (t, period) = in_loop(keys, t, frames);
+    let (first, last) = (f64::from(keys[0].frame), f64::from(keys[n - 1].frame));
+    if t >= last {
+        return (
+            n - 1,
+            ((t - last) / (first + period - last)).clamp(0.0, 1.0),
+        );
+    }
+    let segment = segment_at(keys, t).unwrap_or(0);
+    let (a, b) = (
+        f64::from(keys[segment].frame),
+        f64::from(keys[segment + 1].frame),
+    );
+    (segment, ((t - a) / (b - a)).clamp(0.0, 1.0))
+}
+
+/// The value at eased parameter `e` of segment `segment` (from key `segment` to the next,
+/// the first after the last when `closed`).
+fn between(
+    interpolation: Interpolation,
+    keys: &[TrackKey],
+    segment: usize,
+    e: f64,
+    closed: bool,
+) -> DVec3 {
+    let (a, b) = (&keys[segment], &keys[(segment + 1) % keys.len()]);
+    match interpolation {
+        Interpolation::Step => a.value,
+        Interpolation::Linear => a.value + (b.value - a.value) * e,
+        Interpolation::Smooth => curve_point(keys, |k| k.value, closed, segment, e),
     }
 }
 

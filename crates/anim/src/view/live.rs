@@ -10,6 +10,7 @@
 //! seen; events within `DEBOUNCE` of each other make one reload.
 
 use crate::error::AnimError;
+use crate::project::draft::Draft;
 use crate::project::Project;
 use crate::refusal::ManifestError;
 use notify::{RecursiveMode, Watcher};
@@ -41,6 +42,7 @@ pub struct Loaded {
 /// The current load, and a way to wait for the next.
 pub struct Live {
     manifest: PathBuf,
+    draft: Draft,
     state: Mutex<Loaded>,
     changed: Condvar,
 }
@@ -49,12 +51,20 @@ impl Live {
     /// Loads `manifest` a first time: an error in it is kept (the page shows it), but a
     /// manifest that cannot be read at all is refused (`ManifestError::Io`).
     pub fn new(manifest: &Path) -> Result<Live, AnimError> {
-        let first = Project::load(manifest);
+        Live::with_draft(manifest, Draft::default())
+    }
+
+    /// `new`, every load with a draft's overrides (`--size`, `--scale`, `--samples`, `--aa`):
+    /// frames drawn at the draft's size and settings, the folder's state read from the
+    /// draft's folder.
+    pub fn with_draft(manifest: &Path, draft: Draft) -> Result<Live, AnimError> {
+        let first = Project::load_draft(manifest, &draft);
         if let Err(e @ AnimError::Manifest(ManifestError::Io { .. })) = first {
             return Err(e);
         }
         let live = Live {
             manifest: manifest.to_path_buf(),
+            draft,
             state: Mutex::new(Loaded {
                 generation: 0,
                 project_id: 0,
@@ -74,7 +84,7 @@ impl Live {
 
     /// Loads the manifest again and wakes every waiting page.
     pub fn reload(&self) {
-        self.store(Project::load(&self.manifest));
+        self.store(Project::load_draft(&self.manifest, &self.draft));
     }
 
     /// Makes `result` the current load, a new generation, and wakes every waiting page.

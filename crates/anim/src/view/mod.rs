@@ -47,6 +47,8 @@ pub struct ViewOptions {
     pub port: u16,
     /// The threads that draw frames (`None`: one a core).
     pub threads: Option<u32>,
+    /// A draft's overrides of the manifest (none by default), as `status` takes them.
+    pub draft: crate::project::draft::Draft,
 }
 
 /// Why the view could not start.
@@ -136,7 +138,7 @@ pub fn serve(
     stop: &AtomicUsize,
     ready: &dyn Fn(&str),
 ) -> Result<i32, ViewError> {
-    let live = Arc::new(live::Live::new(&options.manifest)?);
+    let live = Arc::new(live::Live::with_draft(&options.manifest, options.draft)?);
     let addr = SocketAddr::new(options.bind, options.port);
     let server = tiny_http::Server::http(addr).map_err(|e| ViewError::Bind {
         addr,

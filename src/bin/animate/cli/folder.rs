@@ -24,6 +24,8 @@ pub struct ViewArgs {
     /// Worker threads for rendering (default: all cores).
     #[arg(long, value_parser = clap::value_parser!(u32).range(1..=1024))]
     pub threads: Option<u32>,
+    #[command(flatten)]
+    pub draft: DraftArgs,
 }
 
 #[derive(Args, Debug)]

@@ -1,5 +1,6 @@
 //! The render's options (the command without a subcommand): frames, shard, resume, where
-//! the frames go (a folder, standard output, a video), ffmpeg's encoding, progress.
+//! the frames go (a folder, standard output, a video), ffmpeg's encoding, progress, the
+//! hooks run after each frame and after the run.
 
 use super::super::report::Usage;
 use super::{Common, DraftArgs, MAX_SHARDS};
@@ -7,6 +8,7 @@ use clap::Args;
 use std::io::IsTerminal;
 use std::path::PathBuf;
 use whitted::output::ImageFormat;
+use whitted_anim::frames::hooks::Hook;
 use whitted_anim::frames::run::{Destination, Encoding, Policy};
 use whitted_anim::select::{process_env, SelectError, Shard};
 use whitted_anim::{AnimError, Manifest};
@@ -65,6 +67,18 @@ pub struct RenderArgs {
     /// 127.0.0.1:14158) or `tev=HOST:PORT`. A missing viewer is a warning.
     #[arg(long, value_name = "tev[=HOST:PORT]")]
     pub display: Option<whitted::display::Display>,
+    /// Run CMD after each frame is written or found up to date, in the run's order of
+    /// frames, with ANIMATE_FRAME, ANIMATE_PATH and ANIMATE_STATE (rendered, up-to-date,
+    /// failed) in its environment. CMD is split into words as a shell would but not run
+    /// by one (write `sh -c '…'` for that). A failing hook is reported with its output
+    /// and makes the exit status 1; the render goes on.
+    #[arg(long, value_name = "CMD", conflicts_with_all = ["stdout", "video"])]
+    pub on_frame: Option<Hook>,
+    /// Run CMD after the run however it ends, with ANIMATE_RENDERED, ANIMATE_FAILED (frame
+    /// counts) and ANIMATE_EXIT (the run's exit status) in its environment; split into
+    /// words as --on-frame is. A failing hook makes the exit status 1.
+    #[arg(long, value_name = "CMD")]
+    pub on_done: Option<Hook>,
 }
 
 /// How ffmpeg encodes a video (`--video`, `animate encode`).

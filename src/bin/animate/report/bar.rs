@@ -23,6 +23,8 @@ pub struct RowBar {
     /// What moves the bar (none when it is hidden); it counts from the rows done before
     /// the run (the counter is process-wide), minus skipped frames.
     poll: Option<RowPoller>,
+    /// No lines besides the bar (`--quiet`).
+    quiet: bool,
 }
 
 impl RowBar {
@@ -91,6 +93,7 @@ impl RowBar {
             weighted,
             rows_per_frame: rows,
             poll,
+            quiet,
         }
     }
 
@@ -104,10 +107,15 @@ impl RowBar {
 
 impl Reporter for RowBar {
     fn event(&self, event: Event) {
-        if let (Some(w), Event::Finished { frame, .. } | Event::Skipped { frame }) =
-            (&self.weighted, event)
+        if let (
+            Some(w),
+            Event::Finished { frame, .. } | Event::Skipped { frame } | Event::Elsewhere { frame },
+        ) = (&self.weighted, event)
         {
             w.done(frame);
+        }
+        if let (Event::Sharing { pid }, false) = (event, self.quiet) {
+            self.bar.suspend(|| super::sharing(pid));
         }
         if let Event::Started { skipped, .. } = event {
             // Skipped frames count as done: move the base back by their rows.
@@ -174,8 +182,8 @@ impl Reporter for Bar {
                 self.0.set_position(skipped as u64);
                 self.0.reset_eta();
             }
-            Event::Finished { .. } => self.0.inc(1),
-            Event::Skipped { .. } | Event::Failed { .. } => {}
+            Event::Finished { .. } | Event::Elsewhere { .. } => self.0.inc(1),
+            Event::Skipped { .. } | Event::Failed { .. } | Event::Sharing { .. } => {}
         }
     }
 }

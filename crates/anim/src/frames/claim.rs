@@ -1,0 +1,126 @@
+//! Many runs, one folder: a run claims each frame before it renders it, so that runs of
+//! the same manifest started into one folder (two terminals, two machines on a shared
+//! disk) share the frames instead of each rendering all of them, as Blender's placeholders
+//! do, but with no placeholder left behind by a killed run.
+//!
+//! A claim is an exclusive advisory lock (`flock`, as the folder's lock in `lock`) on
+//! `.whitted-claims/NAME.claim`, NAME the frame's file name: the system releases it when
+//! the run ends however it ends (kill -9 included), so a dead run's claims are free for the
+//! next run to take. The claim files stay (removing a held one would let two runs lock two
+//! files of one name); they are empty.
+//!
+//! A run takes a free claim at once (`try_claim`) and skips, for now, a frame another live
+//! run holds; once through its frames it comes back to those and waits for each claim
+//! (`claim`): the other run has finished the frame (then it is written, newer than this
+//! run's start, and recording what the manifest gives it: `done_elsewhere`), or has died
+//! (then this run renders it).
+
+use super::provenance::{self, Inspection};
+use crate::error::AnimError;
+use crate::project::Animation;
+use std::fs::{File, OpenOptions, TryLockError};
+use std::path::{Path, PathBuf};
+use std::time::SystemTime;
+
+/// The folder of claims inside a frame folder.
+pub const CLAIMS: &str = ".whitted-claims";
+
+/// A frame claimed by this run, released when dropped.
+#[derive(Debug)]
+pub struct Claim {
+    _file: File,
+}
+
+/// The claims of one run in one folder.
+pub struct Claims {
+    dir: PathBuf,
+    started: SystemTime,
+}
+
+impl Claims {
+    /// The claims of a run into `dir` that starts now (creating the claims folder).
+    pub fn new(dir: &Path) -> Result<Claims, AnimError> {
+        let claims = dir.join(CLAIMS);
+        std::fs::create_dir_all(&claims).map_err(|source| AnimError::Folder {
+            dir: claims.clone(),
+            source,
+        })?;
+        Ok(Claims {
+            dir: claims,
+            started: SystemTime::now(),
+        })
+    }
+
+    fn open(&self, frame_path: &Path) -> std::io::Result<File> {
+        let name = frame_path.file_name().unwrap_or_default().to_string_lossy();
+        OpenOptions::new()
+            .write(true)
+            .create(true)
+            .truncate(false)
+            .open(self.dir.join(format!("{name}.claim")))
+    }
+
+    /// Claims the frame whose file is `frame_path` if no live run holds it: `None` when
+    /// one does.
+    pub fn try_claim(&self, frame_path: &Path) -> std::io::Result<Option<Claim>> {
+        let file = self.open(frame_path)?;
+        match file.try_lock() {
+            Ok(()) => Ok(Some(Claim { _file: file })),
+            Err(TryLockError::WouldBlock) => Ok(None),
+            Err(TryLockError::Error(e)) => Err(e),
+        }
+    }
+
+    /// Claims the frame, waiting while a live run holds it.
+    pub fn claim(&self, frame_path: &Path) -> std::io::Result<Claim> {
+        let file = self.open(frame_path)?;
+        file.lock()?;
+        Ok(Claim { _file: file })
+    }
+
+    /// Whether another run wrote frame `frame` while this one ran: its file is newer than
+    /// this run's start and records the digest the manifest now gives it.
+    pub fn done_elsewhere(&self, anim: &Animation, dir: &Path, frame: u32) -> bool {
+        let path = anim.frame_path(dir, frame);
+        let newer = std::fs::metadata(&path)
+            .and_then(|m| m.modified())
+            .is_ok_and(|t| t >= self.started);
+        if !newer {
+            return false;
+        }
+        let (format, w, h) = (anim.format(), anim.width, anim.height);
+        match provenance::inspect(&path, format, w, h, false) {
+            Inspection::Sound(record) => record.digest == Some(provenance::digest(anim, frame)),
+            _ => false,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_claim_is_held_until_dropped() {
+        let dir = tempfile::tempdir().unwrap();
+        let (one, two) = (
+            Claims::new(dir.path()).unwrap(),
+            Claims::new(dir.path()).unwrap(),
+        );
+        let frame = dir.path().join("frame_0003.png");
+        let held = one.try_claim(&frame).unwrap().expect("free");
+        // Another holder (flock locks belong to the open file) finds it taken.
+        assert!(two.try_claim(&frame).unwrap().is_none());
+        assert!(two
+            .try_claim(&dir.path().join("frame_0004.png"))
+            .unwrap()
+            .is_some());
+        drop(held);
+        assert!(two.try_claim(&frame).unwrap().is_some());
+        assert!(dir
+            .path()
+            .join(CLAIMS)
+            .join("frame_0003.png.claim")
+            .is_file());
+    }
+}
