@@ -65,10 +65,19 @@ fn build_sub<P: Send>(items: &mut [Item<P>], offset: usize, depth: usize) -> Sub
         return Sub::Nodes(root.to_vec());
     };
     let (a, b) = items.split_at_mut(mid);
-    let halves = rayon::join(
-        || build_sub(a, offset, depth + 1),
-        || build_sub(b, offset + mid, depth + 1),
-    );
+    // In a pool (the renderer's, sized by --threads) the halves are built side by side;
+    // outside one, in turn: rayon's global pool would start a thread per core regardless.
+    let halves = if rayon::current_thread_index().is_some() {
+        rayon::join(
+            || build_sub(a, offset, depth + 1),
+            || build_sub(b, offset + mid, depth + 1),
+        )
+    } else {
+        (
+            build_sub(a, offset, depth + 1),
+            build_sub(b, offset + mid, depth + 1),
+        )
+    };
     Sub::Split(root[0], Box::new(halves))
 }
 

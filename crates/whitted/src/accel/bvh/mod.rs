@@ -152,18 +152,21 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
     /// `bounds`, computed in parallel.
     pub fn build(prims: Vec<P>, bounds: impl Fn(&P) -> (DVec3, DVec3, DVec3) + Sync) -> Bvh<P> {
         use rayon::prelude::*;
-        let mut items: Vec<Item<P>> = prims
-            .into_par_iter()
-            .map(|prim| {
-                let (lo, hi, centre) = bounds(&prim);
-                Item {
-                    lo,
-                    hi,
-                    centre,
-                    prim,
-                }
-            })
-            .collect();
+        let item = |prim: P| {
+            let (lo, hi, centre) = bounds(&prim);
+            Item {
+                lo,
+                hi,
+                centre,
+                prim,
+            }
+        };
+        // Outside a pool (one sized by --threads), no rayon: its global pool would start.
+        let mut items: Vec<Item<P>> = if rayon::current_thread_index().is_some() {
+            prims.into_par_iter().map(item).collect()
+        } else {
+            prims.into_iter().map(item).collect()
+        };
         let mut bvh = Bvh {
             scale: items
                 .iter()
