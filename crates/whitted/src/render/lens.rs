@@ -45,7 +45,7 @@ impl<'a> Shot<'a> {
     /// The colour of the camera sample at image point (x, y) (pixels from the top left):
     /// the pinhole ray's (not clamped), or the mean of the clamped lens rays'. `hint`,
     /// the sample's screen tile, answers for rays that leave the eye.
-    #[inline]
+    #[inline(always)]
     pub fn color(
         &self,
         tracer: &Tracer,
@@ -57,15 +57,7 @@ impl<'a> Shot<'a> {
         let ray = self.camera.ray(x, y);
         match &self.lens {
             None => tracer.primary_in(hint, &ray, count),
-            Some(lens) => {
-                let mut sum = Color::ZERO;
-                for r in lens.rays(&ray) {
-                    sum += tracer
-                        .primary_in(hint, &r, count)
-                        .clamp(Color::ZERO, Color::ONE);
-                }
-                sum / lens.points().len() as f64
-            }
+            Some(lens) => lens_color(lens, tracer, hint, &ray, count),
         }
     }
 
@@ -78,6 +70,25 @@ impl<'a> Shot<'a> {
             Some(lens) => lens.rays(&ray).for_each(|r| each(&r)),
         }
     }
+}
+
+/// The mean of the clamped colours of the lens rays through `ray`'s focal point. Out of
+/// line: the pinhole path of `Shot::color` stays the row loop's own code.
+#[inline(never)]
+fn lens_color(
+    lens: &ThinLens,
+    tracer: &Tracer,
+    hint: Option<Hint>,
+    ray: &Ray,
+    count: &mut RayCount,
+) -> Color {
+    let mut sum = Color::ZERO;
+    for r in lens.rays(ray) {
+        sum += tracer
+            .primary_in(hint, &r, count)
+            .clamp(Color::ZERO, Color::ONE);
+    }
+    sum / lens.points().len() as f64
 }
 
 /// The rays traced per camera sample of `scene`: Samples² with a `focus` record, else 1
