@@ -29,6 +29,7 @@ mod check_bounded;
 mod check_browser;
 mod check_reports;
 mod colour_tags;
+mod csg_properties;
 mod degenerate_geometry;
 mod directing;
 mod docs_commands;

@@ -154,7 +154,11 @@ fn is_tame(scene: &Scene, limit: f64, tiny: f64) -> bool {
                 v(q.origin) && q.coef.iter().all(|&c| s(c)) && -q.coef[9] >= tiny * tiny
             }
             // An NFF's shapes and the extension's: not what this check bounds.
-            Shape::Triangle(_) | Shape::Smooth(_) | Shape::Cone(_) | Shape::Placed(_) => false,
+            Shape::Triangle(_)
+            | Shape::Smooth(_)
+            | Shape::Cone(_)
+            | Shape::Placed(_)
+            | Shape::Csg(_) => false,
         };
         let tex = match o.texture {
             Texture::Uniform(c) => v(c),
@@ -1400,7 +1404,7 @@ fn a_tiny_or_huge_normal_or_axis_is_not_called_zero() {
         // The same picture as a unit normal and axis.
         let unit = Scene::parse(&plane_and_cylinder("0 1 0", "0 1 0"), "n.txt").unwrap();
         let sign = if v.starts_with("0 -") { -1.0 } else { 1.0 };
-        let parts = |s: &Scene| match (s.objects[0].shape, s.objects[1].shape) {
+        let parts = |s: &Scene| match (&s.objects[0].shape, &s.objects[1].shape) {
             (Shape::Plane(p), Shape::Quadric(q)) => (p.normal(), q.coef),
             _ => unreachable!(),
         };

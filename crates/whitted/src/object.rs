@@ -38,8 +38,8 @@ pub enum Highlight {
     },
 }
 
-/// One renderable object.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// One renderable object (not `Copy`: its shape may be a shared CSG block).
+#[derive(Clone, Debug, PartialEq)]
 pub struct Object {
     /// The surface.
     pub shape: Shape,

@@ -13,7 +13,7 @@
 use crate::camera::Camera;
 use crate::object::Object;
 use crate::texture::{Color, Texture};
-use crate::trace::{shading_normal, Tracer};
+use crate::trace::{facing, surface_at, Tracer};
 use serde::Serialize;
 
 /// What the camera ray through one pixel hits first.
@@ -100,7 +100,9 @@ pub fn pick(tracer: &Tracer, camera: &Camera, x: u32, y: u32) -> Option<Pick> {
     let scene = tracer.scene();
     let obj = scene.objects.get(index)?;
     let p = ray.at(t);
-    let (normal, _) = shading_normal(obj, p, ray.dir);
+    // A CSG block answers with the leaf the ray met (its texture, material and normal).
+    let (obj, outward) = surface_at(obj, &ray, p);
+    let (normal, _) = facing(obj, outward, p, ray.dir);
     Some(Pick {
         object: scene.object_name(index)?,
         index,

@@ -134,7 +134,7 @@ fn phong_highlight_by_hand() {
 #[test]
 fn opaque_blocker_casts_a_black_shadow() {
     let blocker = ball(DVec3::new(0.0, 3.0, 0.0), 0.0, Color::ONE);
-    let t = transmission(&[blocker], DVec3::ZERO, DVec3::Y, 5.0);
+    let t = transmission(std::slice::from_ref(&blocker), DVec3::ZERO, DVec3::Y, 5.0);
     assert_eq!(t, Color::ZERO);
     // A blocker beyond the light does not count.
     let t = transmission(&[blocker], DVec3::ZERO, DVec3::Y, 1.5);
@@ -146,7 +146,7 @@ fn glass_passes_kt_times_colour_per_crossing() {
     // Kt = 0.8, colour (1, 0.5, 0.5), crossed twice: (0.8·C)².
     let c = Color::new(1.0, 0.5, 0.5);
     let glass = ball(DVec3::new(0.0, 3.0, 0.0), 0.8, c);
-    let t = transmission(&[glass], DVec3::ZERO, DVec3::Y, 10.0);
+    let t = transmission(std::slice::from_ref(&glass), DVec3::ZERO, DVec3::Y, 10.0);
     let want = Color::new(0.64, 0.16, 0.16);
     assert!((t - want).length() < 1e-12, "{t}");
     // The light inside the glass sphere: one crossing only.

@@ -83,7 +83,7 @@ impl Accel {
             .enumerate()
             .filter(|(_, o)| o.shape.is_bounded() && !matches!(o.shape, Shape::Sphere(_)))
             .map(|(i, o)| ShapePrim {
-                shape: o.shape,
+                shape: o.shape.clone(),
                 index: i as u32,
                 glass: is_glass(o),
                 opaque: is_opaque(o),
@@ -107,7 +107,7 @@ impl Accel {
                 .iter()
                 .enumerate()
                 .filter(|(_, o)| !o.shape.is_bounded() && keep(o))
-                .map(|(i, o)| (i as u32, o.shape))
+                .map(|(i, o)| (i as u32, o.shape.clone()))
                 .collect()
         };
         Accel {

@@ -1,7 +1,8 @@
 //! Geometry: the shapes a Scene.txt can hold (sphere, plane, quadric cylinder), those an
 //! NFF adds (triangle, smooth triangle, open cone), those the extension records add (box,
 //! capped cylinder and cone, disc, torus, each in its own frame: `Placed`), and how a
-//! ray meets them (report IV.1).
+//! ray meets them (report IV.1), and CSG blocks of those solids (`csg`, one object each,
+//! shared behind an `Arc`: the only shape that is not a plain value).
 //!
 //! Every shape answers one question, `roots`: the parameters t (up to two, ascending, any
 //! sign) where the ray's line crosses its surface. From that the tracer gets the nearest
@@ -15,6 +16,7 @@
 mod aabox;
 mod capped;
 mod cone;
+pub mod csg;
 mod disc;
 mod frame;
 mod placed;
@@ -29,6 +31,7 @@ mod triangle;
 pub use aabox::AaBox;
 pub use capped::Capped;
 pub use cone::Cone;
+pub use csg::Csg;
 pub use disc::Disc;
 pub use frame::Frame;
 pub use placed::{Local, Placed};
@@ -41,6 +44,7 @@ pub use triangle::Triangle;
 
 use crate::optics::Ray;
 use glam::DVec3;
+use std::sync::Arc;
 
 /// Where a line crosses a surface: up to four parameters (a torus's), ascending.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -124,8 +128,8 @@ impl Roots {
     }
 }
 
-/// A surface of the scene.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// A surface of the scene. Not `Copy`: a CSG block is shared behind an `Arc`.
+#[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
     /// A sphere (centre, radius).
     Sphere(Sphere),
@@ -142,6 +146,8 @@ pub enum Shape {
     /// A shape of the extension records in its own frame (box, capped cylinder and cone,
     /// disc, torus, transformed sphere).
     Placed(Placed),
+    /// A CSG block of the extension records (one object of the scene).
+    Csg(Arc<Csg>),
 }
 
 impl Shape {
@@ -156,6 +162,7 @@ impl Shape {
             Shape::Smooth(t) => t.roots(ray),
             Shape::Cone(c) => c.roots(ray),
             Shape::Placed(p) => p.roots(ray),
+            Shape::Csg(c) => c.roots(ray),
         }
     }
 
@@ -170,6 +177,7 @@ impl Shape {
             Shape::Smooth(t) => t.hit(ray, t_max),
             Shape::Cone(c) => c.hit(ray, t_max),
             Shape::Placed(p) => p.hit(ray, t_max),
+            Shape::Csg(c) => c.hit(ray, t_max),
         }
     }
 
@@ -193,6 +201,7 @@ impl Shape {
             Shape::Smooth(t) => Some(t.flat.bounds()),
             Shape::Cone(c) => Some(c.bounds()),
             Shape::Placed(p) => Some(p.bounds()),
+            Shape::Csg(c) => c.bounds(),
         }
     }
 
@@ -213,6 +222,7 @@ impl Shape {
             Shape::Smooth(t) => t.normal(p),
             Shape::Cone(c) => c.normal(p),
             Shape::Placed(pl) => pl.normal(p),
+            Shape::Csg(c) => c.normal(p),
         }
     }
 }

@@ -50,7 +50,7 @@ pub struct Prim {
 
 /// One bounded shape of the tree (a triangle, a smooth triangle, a cone ...) with the
 /// index of its object in the scene.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct ShapePrim {
     /// The shape (a copy, so a leaf test needs no indirection).
     pub shape: Shape,
@@ -63,7 +63,7 @@ pub struct ShapePrim {
 }
 
 /// What the tree needs of a primitive: its box and centre, and whether it is glass.
-pub trait Bounded: Copy {
+pub trait Bounded: Clone {
     /// The low corner, the high corner and the centre of its box.
     fn bounds(&self) -> (DVec3, DVec3, DVec3);
     /// Kt > 0 (a flat list keeps the others first).

@@ -148,9 +148,11 @@ fn bound(center: DVec3, objects: &[Object]) -> Option<f64> {
             Shape::Plane(p) => p.point.abs().max_element(),
             Shape::Quadric(q) => q.origin.abs().max_element(),
             // An NFF's shapes: no grid (`LightBuffer` answers nothing, the BVH does).
-            Shape::Triangle(_) | Shape::Smooth(_) | Shape::Cone(_) | Shape::Placed(_) => {
-                return None
-            }
+            Shape::Triangle(_)
+            | Shape::Smooth(_)
+            | Shape::Cone(_)
+            | Shape::Placed(_)
+            | Shape::Csg(_) => return None,
         };
         b = b.max(r);
         if !r.is_finite() {
@@ -191,7 +193,11 @@ pub(super) fn may_hit(shape: &Shape, from: DVec3, cone: &Cone, delta: f64) -> bo
             }
             None => true,
         },
-        Shape::Triangle(_) | Shape::Smooth(_) | Shape::Cone(_) | Shape::Placed(_) => true,
+        Shape::Triangle(_)
+        | Shape::Smooth(_)
+        | Shape::Cone(_)
+        | Shape::Placed(_)
+        | Shape::Csg(_) => true,
     }
 }
 

@@ -3,8 +3,9 @@
 //! sphere without modifiers stays the report's sphere (and joins the spheres' tree);
 //! planes and triangles take their frame by moving their points; every other shape is a
 //! `Placed` shape in its frame (scale, then rotate x, y, z in degrees, then translate).
+//! A CSG block becomes one object (`csg`), its children drawn in the block's frame.
 //!
-//! Not built yet: CSG blocks and meshes, refused with a located error naming them.
+//! Not built yet: meshes, refused with a located error naming them.
 
 use super::{ExtItem, ExtObject, ExtShape, Extension, Modifiers};
 use crate::object::Object;
@@ -25,7 +26,7 @@ pub fn objects(ext: &Extension) -> Result<Vec<(Object, ShapeSpec)>, SceneError> 
                 let spec = ShapeSpec::Ext {
                     item: item as u32,
                     kind: o.shape.keyword(),
-                    shape,
+                    shape: shape.clone(),
                     anchor: anchor(&o.shape, &o.mods),
                 };
                 let object = Object {
@@ -36,18 +37,21 @@ pub fn objects(ext: &Extension) -> Result<Vec<(Object, ShapeSpec)>, SceneError> 
                 out.push((object, spec));
             }
             ExtItem::Csg(c) => {
-                return Err(refused(
-                    &c.loc,
-                    c.op.keyword(),
-                    "CSG blocks are not drawn yet",
-                ))
+                let (object, anchor) = csg::object(c)?;
+                let spec = ShapeSpec::Ext {
+                    item: item as u32,
+                    kind: "csg",
+                    shape: object.shape.clone(),
+                    anchor,
+                };
+                out.push((object, spec));
             }
         }
     }
     Ok(out)
 }
 
-fn refused(loc: &FileLoc, what: &str, message: &str) -> SceneError {
+pub(super) fn refused(loc: &FileLoc, what: &str, message: &str) -> SceneError {
     SceneError::Syntax {
         loc: loc.clone(),
         message: message.to_string(),
@@ -68,7 +72,7 @@ pub fn frame(m: &Modifiers) -> Option<Frame> {
 }
 
 /// The point a camera looks at for this object: its defining centre, moved by its frame.
-fn anchor(s: &ExtShape, m: &Modifiers) -> DVec3 {
+pub(super) fn anchor(s: &ExtShape, m: &Modifiers) -> DVec3 {
     let p = match *s {
         ExtShape::Sphere { center, .. }
         | ExtShape::Disc { center, .. }
@@ -85,9 +89,19 @@ fn anchor(s: &ExtShape, m: &Modifiers) -> DVec3 {
 /// The drawn shape of one record (its bounds were checked by the reader; what still
 /// fails here, e.g. a frame that rounding made singular, is a located error).
 pub fn shape(o: &ExtObject) -> Result<Shape, SceneError> {
+    shape_in(o, &Frame::IDENTITY)
+}
+
+/// `shape`, its frame followed by `outer` (the frame of the CSG blocks around it).
+pub(super) fn shape_in(o: &ExtObject, outer: &Frame) -> Result<Shape, SceneError> {
     let bad = |why: &str| refused(&o.loc, o.shape.keyword(), why);
-    let f = frame(&o.mods)
-        .ok_or_else(|| bad("the scale, rotate and translate make a singular frame"))?;
+    let singular = || bad("the scale, rotate and translate make a singular frame");
+    let own = frame(&o.mods).ok_or_else(singular)?;
+    let f = if outer.is_identity() {
+        own
+    } else {
+        own.then(outer).ok_or_else(singular)?
+    };
     let placed = |local: Option<Local>| {
         local
             .map(|l| Shape::Placed(Placed::new(l, f)))
@@ -140,6 +154,9 @@ pub fn shape(o: &ExtObject) -> Result<Shape, SceneError> {
         ExtShape::Mesh { .. } => Err(bad("meshes are not drawn yet")),
     }
 }
+
+#[path = "build_csg.rs"]
+mod csg;
 
 #[cfg(test)]
 #[path = "build_tests.rs"]
