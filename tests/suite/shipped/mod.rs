@@ -25,8 +25,11 @@ pub const SCENES: &[&str] = &[
     "13-exp-fog.txt",
     "14-exp2-fog.txt",
     "bounce.txt",
+    "csg-piece.txt",
     "glass-cluster.txt",
+    "new-shapes.txt",
     "orbit.txt",
+    "torus-chain.txt",
 ];
 
 /// The shipped manifests, in `animations/`.
