@@ -4,8 +4,9 @@
 //!
 //! A crash is any panic, a syntax error whose `file:line:column:` is missing or outside
 //! the input, or a non-finite colour in a tame scene (every number up to 1e4 in
-//! magnitude, radii and Ior from 1e-4): extreme but finite values (1e300) may overflow
-//! to infinity by design, a tame scene must not.
+//! magnitude, radii and Ior from 1e-4, the extension's shapes and CSG blocks within
+//! boxes of that size): extreme but finite values (1e300) may overflow to infinity by
+//! design, a tame scene must not.
 
 #![no_main]
 
@@ -89,13 +90,23 @@ fn is_tame(scene: &Scene) -> bool {
             Shape::Quadric(q) => {
                 v(q.origin) && q.coef.iter().all(|&c| s(c)) && -q.coef[9] >= TINY * TINY
             }
+            // The extension's shapes and CSG blocks: tame when their box is (an unbounded
+            // block, e.g. one with a plane, is judged by its other fields).
+            Shape::Triangle(_)
+            | Shape::Smooth(_)
+            | Shape::Cone(_)
+            | Shape::Placed(_)
+            | Shape::Csg(_) => o
+                .shape
+                .bounds()
+                .is_none_or(|(lo, hi)| v(lo) && v(hi) && (hi - lo).min_element() >= TINY),
         };
         let tex = match o.texture {
             Texture::Uniform(c) => v(c),
             Texture::Checker(a, b) | Texture::Wood(a, b) | Texture::Marble(a, b) => v(a) && v(b),
             Texture::Perlin(a, b, c) => v(a) && v(b) && v(c),
         };
-        let m = o.material;
+        let m = &o.material;
         let bump = match m.bump {
             Bump::None => true,
             Bump::Uniform(e) | Bump::Water(e) => s(e),

@@ -158,7 +158,8 @@ fn is_tame(scene: &Scene, limit: f64, tiny: f64) -> bool {
             | Shape::Smooth(_)
             | Shape::Cone(_)
             | Shape::Placed(_)
-            | Shape::Mesh(_) => false,
+            | Shape::Mesh(_)
+            | Shape::Csg(_) => false,
         };
         let tex = match &o.texture {
             &Texture::Uniform(c) => v(c),
@@ -368,6 +369,10 @@ fn every_token_prefix_of_every_seed_fails_at_its_end() {
                 Err(e) => e,
             };
             check_located(prefix, "cut.txt", &err).unwrap_or_else(|e| panic!("{name}: {e}"));
+            // A CSG block the cut leaves open is named where it opens.
+            if records && err.to_string().contains("has no 'end'") {
+                continue;
+            }
             let loc = err.loc().unwrap();
             assert_eq!(
                 (loc.line, loc.column),
@@ -1409,7 +1414,7 @@ fn a_tiny_or_huge_normal_or_axis_is_not_called_zero() {
         // The same picture as a unit normal and axis.
         let unit = Scene::parse(&plane_and_cylinder("0 1 0", "0 1 0"), "n.txt").unwrap();
         let sign = if v.starts_with("0 -") { -1.0 } else { 1.0 };
-        let parts = |s: &Scene| match (s.objects[0].shape, s.objects[1].shape) {
+        let parts = |s: &Scene| match (&s.objects[0].shape, &s.objects[1].shape) {
             (Shape::Plane(p), Shape::Quadric(q)) => (p.normal(), q.coef),
             _ => unreachable!(),
         };

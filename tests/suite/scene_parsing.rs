@@ -29,7 +29,7 @@ fn the_reports_example_sphere() {
     let scene = parse(&src);
     assert_eq!(scene.objects.len(), 1);
     let obj = &scene.objects[0];
-    match obj.shape {
+    match &obj.shape {
         Shape::Sphere(s) => {
             assert_eq!(s.radius, 1.0);
             assert_eq!(s.center, v(0.0, 2.0, 9.0));
@@ -151,7 +151,7 @@ fn every_record_kind_in_order() {
         ]
     );
     // The plane normal given as (0, 0, 2) is stored unit.
-    match s.objects[3].shape {
+    match &s.objects[3].shape {
         Shape::Plane(p) => assert_eq!(p.normal(), v(0.0, 0.0, 1.0)),
         other => panic!("not a plane: {other:?}"),
     }
@@ -235,8 +235,8 @@ fn a_cylinder_of_slanted_axis() {
     // Axis (1, 2, -2) (length 3) through (1, 2, 3), radius 0.5.
     let s =
         parse("8 6\n0 0 10\n0 0 0\n0 0\n0 0 1 0\n1 2 -2   1 2 3   0.5   1 1 1 1   1 0 0 1 0 0\n");
-    let q = match s.objects[0].shape {
-        Shape::Quadric(q) => q,
+    let q = match &s.objects[0].shape {
+        Shape::Quadric(q) => *q,
         other => panic!("not a quadric: {other:?}"),
     };
     assert_eq!(

@@ -39,7 +39,7 @@ pub enum Highlight {
     },
 }
 
-/// One renderable object.
+/// One renderable object (not `Copy`: its shape may be a shared CSG block).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Object {
     /// The surface.

@@ -13,7 +13,7 @@
 use crate::camera::Camera;
 use crate::object::Object;
 use crate::texture::{Color, Texture};
-use crate::trace::{shading_normal, Tracer};
+use crate::trace::{facing, surface_at, Tracer};
 use serde::Serialize;
 
 /// What the camera ray through one pixel hits first.
@@ -101,7 +101,10 @@ pub fn pick(tracer: &Tracer, camera: &Camera, x: u32, y: u32) -> Option<Pick> {
     let scene = tracer.scene();
     let obj = scene.objects.get(index)?;
     let p = ray.at(t);
-    let (normal, _) = shading_normal(&tracer.surface_of(obj, hit.part), p, ray.dir);
+    let surface = tracer.surface_of(obj, hit.part);
+    // A CSG block answers with the leaf the ray met (its texture, material and normal).
+    let (obj, outward) = surface_at(&surface, &ray, p);
+    let (normal, _) = facing(obj, outward, p, ray.dir);
     Some(Pick {
         object: scene.object_name(index)?,
         index,

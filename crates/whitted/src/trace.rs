@@ -32,6 +32,7 @@ use crate::optics::{reflect, refract, Ray};
 pub use crate::record::{NoRecord, Record};
 use crate::scene::Scene;
 use crate::shading::{self, Occluders};
+use crate::shapes::Shape;
 use crate::texture::Color;
 use glam::DVec3;
 use std::borrow::Cow;
@@ -295,9 +296,11 @@ impl<'a> Tracer<'a> {
     ) -> Color {
         let p = ray.at(t);
         let v = ray.dir;
+        // A CSG block shades with the leaf the ray met (its texture and material).
+        let (obj, outward) = surface_at(obj, ray, p);
         let m = &obj.material;
         let c = obj.color_at(p);
-        let (n, entering) = shading_normal(obj, p, v);
+        let (n, entering) = facing(obj, outward, p, v);
         if R::ACTIVE {
             rec.surface(p, n, c);
         }
@@ -364,7 +367,25 @@ impl<'a> Tracer<'a> {
 /// turned to face the ray. What `shade` lights and `pick` answers.
 #[inline(always)]
 pub fn shading_normal(obj: &Object, p: DVec3, v: DVec3) -> (DVec3, bool) {
-    let outward = obj.shape.normal(p);
+    facing(obj, obj.shape.normal(p), p, v)
+}
+
+/// What shades the hit `p` of `ray` on `obj`, and the outward normal there: `obj` and its
+/// shape's normal, or for a CSG block the leaf the ray met (its texture and material)
+/// and the block's normal (reversed on a difference's cut surface).
+#[inline(always)]
+pub fn surface_at<'o>(obj: &'o Object, ray: &Ray, p: DVec3) -> (&'o Object, DVec3) {
+    if let Shape::Csg(csg) = &obj.shape {
+        if let Some(s) = csg.surface(ray, f64::INFINITY) {
+            return (s.leaf, s.normal);
+        }
+    }
+    (obj, obj.shape.normal(p))
+}
+
+/// `shading_normal` with the outward normal given: entering or leaving, bump, facing.
+#[inline(always)]
+pub fn facing(obj: &Object, outward: DVec3, p: DVec3, v: DVec3) -> (DVec3, bool) {
     let entering = v.dot(outward) < 0.0;
     let bumped = obj.material.bump.apply(outward, p);
     (if entering { bumped } else { -bumped }, entering)

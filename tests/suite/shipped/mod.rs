@@ -25,9 +25,12 @@ pub const SCENES: &[&str] = &[
     "13-exp-fog.txt",
     "14-exp2-fog.txt",
     "bounce.txt",
+    "csg-piece.txt",
     "glass-cluster.txt",
+    "new-shapes.txt",
     "orbit.txt",
     "showcase.txt",
+    "torus-chain.txt",
 ];
 
 /// The shipped manifests, in `animations/`.

@@ -84,7 +84,7 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
             }
             ShapeSpec::Ext {
                 item,
-                shape,
+                ref shape,
                 anchor,
                 ..
             } => {

@@ -47,7 +47,7 @@ fn tracks_put_their_values_into_the_scene() {
     // From frame 40 the key's own ease (out): u = 0.5 → e = 0.75 → 4 − 3·0.75 = 1.75.
     assert_eq!(center(60.0), DVec3::new(0.0, 1.75, 0.0));
     // The shape the tracer draws moved too.
-    let shape = t.at(40.0).scene.objects[0].shape;
+    let shape = t.at(40.0).scene.objects[0].shape.clone();
     assert_eq!(
         shape,
         whitted::scene::ShapeSpec::Sphere {

@@ -43,7 +43,8 @@ fn grazing(objects: &[Object], from: DVec3, rng: &mut Rng) -> Vec<DVec3> {
             | Shape::Smooth(_)
             | Shape::Cone(_)
             | Shape::Placed(_)
-            | Shape::Mesh(_) => continue,
+            | Shape::Mesh(_)
+            | Shape::Csg(_) => continue,
         };
         let to = c - from;
         let side = to
@@ -98,7 +99,7 @@ fn light_buffer_answers_as_the_linear_scan() {
             }
             // Points in a thin shell around the dome, where the buffer skips it: on it,
             // and just inside and outside, on both sides of where its entry reaches ε.
-            if let Some(Shape::Sphere(dome)) = objects.last().map(|o| o.shape) {
+            if let Some(Shape::Sphere(dome)) = objects.last().map(|o| o.shape.clone()) {
                 for e in [
                     -1e-6, 0.0, 1e-9, 1e-4, 1e-3, 2e-3, 2.5e-3, 3e-3, 5e-3, 9e-3, 0.01, 0.011,
                     0.02, 0.1,

@@ -58,7 +58,7 @@ fn brute(objects: &[Object], meshes: &[Arc<Mesh>], ray: &Ray) -> Option<Hit> {
         }
     };
     for (i, o) in objects.iter().enumerate() {
-        match o.shape {
+        match &o.shape {
             Shape::Mesh(m) => {
                 let mesh = &meshes[m.id as usize];
                 for k in 0..mesh.triangles.len() as u32 {

@@ -120,7 +120,7 @@ impl Accel {
                 glass: is_glass(o),
                 opaque: is_opaque(o),
             };
-            match o.shape {
+            match &o.shape {
                 Shape::Sphere(_) => {}
                 Shape::Mesh(m) => {
                     let count = meshes.get(m.id as usize).map_or(0, |m| m.triangles.len());
@@ -128,7 +128,7 @@ impl Accel {
                 }
                 shape if shape.is_bounded() => {
                     shapes.push(prim(solo.len() as u32, ShapePrim::SOLO));
-                    solo.push(shape);
+                    solo.push(shape.clone());
                 }
                 _ => {}
             }
@@ -136,9 +136,9 @@ impl Accel {
         let prims: Vec<Prim> = objects
             .iter()
             .enumerate()
-            .filter_map(|(i, o)| match o.shape {
+            .filter_map(|(i, o)| match &o.shape {
                 Shape::Sphere(sphere) => Some(Prim {
-                    sphere,
+                    sphere: *sphere,
                     index: i as u32,
                     glass: is_glass(o),
                     opaque: is_opaque(o),
@@ -151,7 +151,7 @@ impl Accel {
                 .iter()
                 .enumerate()
                 .filter(|(_, o)| !o.shape.is_bounded() && keep(o))
-                .map(|(i, o)| (i as u32, o.shape))
+                .map(|(i, o)| (i as u32, o.shape.clone()))
                 .collect()
         };
         let shapes = Bvh::build(shapes, |p| {

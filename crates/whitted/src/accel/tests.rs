@@ -288,7 +288,7 @@ fn same_answers_as_the_linear_scans_with_triangles_and_cones() {
             _ => Cone::new(a, rng.next().abs(), b, rng.next().abs() * 0.5).map(Shape::Cone),
         };
         if let Some(shape) = shape {
-            objects.push(object(shape, kt, white.clone()));
+            objects.push(object(shape.clone(), kt, white.clone()));
             if i % 9 == 0 {
                 objects.push(object(shape, kt, white.clone()));
             }

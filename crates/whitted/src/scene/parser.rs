@@ -192,9 +192,10 @@ impl<'a> Parser<'a> {
     fn object(&mut self, spec: ShapeSpec, specs: &mut Vec<ShapeSpec>) -> Result<Object> {
         let texture = self.texture()?;
         let material = self.material()?;
+        let shape = spec.build();
         specs.push(spec);
         Ok(Object {
-            shape: spec.build(),
+            shape,
             texture,
             material,
         })

@@ -11,7 +11,7 @@ use glam::DVec3;
 // `Ext` carries its built shape so that specs stay `Copy` (tracks copy them per frame);
 // boxing it would end that.
 #[allow(clippy::large_enum_variant)]
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum ShapeSpec {
     /// A sphere record.
     Sphere {
@@ -88,7 +88,7 @@ impl ShapeSpec {
             ShapeSpec::Cone { base, apex } => Shape::Cone(
                 Cone::new(base.0, base.1, apex.0, apex.1).expect("the NFF reader checks cones"),
             ),
-            ShapeSpec::Ext { shape, .. } => shape,
+            ShapeSpec::Ext { ref shape, .. } => shape.clone(),
         }
     }
 

@@ -1,7 +1,8 @@
 //! Geometry: the shapes a Scene.txt can hold (sphere, plane, quadric cylinder), those an
 //! NFF adds (triangle, smooth triangle, open cone), those the extension records add (box,
 //! capped cylinder and cone, disc, torus, each in its own frame: `Placed`), and how a
-//! ray meets them (report IV.1).
+//! ray meets them (report IV.1), and CSG blocks of those solids (`csg`, one object each,
+//! shared behind an `Arc`: the only shape that is not a plain value).
 //!
 //! Every shape answers one question, `roots`: the parameters t (up to two, ascending, any
 //! sign) where the ray's line crosses its surface. From that the tracer gets the nearest
@@ -15,6 +16,7 @@
 mod aabox;
 mod capped;
 mod cone;
+pub mod csg;
 mod disc;
 mod frame;
 mod meshref;
@@ -30,6 +32,7 @@ mod triangle;
 pub use aabox::AaBox;
 pub use capped::Capped;
 pub use cone::Cone;
+pub use csg::Csg;
 pub use disc::Disc;
 pub use frame::Frame;
 pub use meshref::MeshRef;
@@ -43,6 +46,7 @@ pub use triangle::Triangle;
 
 use crate::optics::Ray;
 use glam::DVec3;
+use std::sync::Arc;
 
 /// Where a line crosses a surface: up to four parameters (a torus's), ascending.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -126,8 +130,8 @@ impl Roots {
     }
 }
 
-/// A surface of the scene.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// A surface of the scene. Not `Copy`: a CSG block is shared behind an `Arc`.
+#[derive(Clone, Debug, PartialEq)]
 pub enum Shape {
     /// A sphere (centre, radius).
     Sphere(Sphere),
@@ -149,6 +153,8 @@ pub enum Shape {
     /// through `accel::Accel`, and a hit is shaded as its triangle); its normal, never
     /// asked, is +z.
     Mesh(MeshRef),
+    /// A CSG block of the extension records (one object of the scene).
+    Csg(Arc<Csg>),
 }
 
 impl Shape {
@@ -164,6 +170,7 @@ impl Shape {
             Shape::Cone(c) => c.roots(ray),
             Shape::Placed(p) => p.roots(ray),
             Shape::Mesh(_) => Roots::NONE,
+            Shape::Csg(c) => c.roots(ray),
         }
     }
 
@@ -179,6 +186,7 @@ impl Shape {
             Shape::Cone(c) => c.hit(ray, t_max),
             Shape::Placed(p) => p.hit(ray, t_max),
             Shape::Mesh(_) => None,
+            Shape::Csg(c) => c.hit(ray, t_max),
         }
     }
 
@@ -203,6 +211,7 @@ impl Shape {
             Shape::Cone(c) => Some(c.bounds()),
             Shape::Placed(p) => Some(p.bounds()),
             Shape::Mesh(m) => Some((m.lo, m.hi)),
+            Shape::Csg(c) => c.bounds(),
         }
     }
 
@@ -226,6 +235,7 @@ impl Shape {
             Shape::Cone(c) => c.normal(p),
             Shape::Placed(pl) => pl.normal(p),
             Shape::Mesh(_) => DVec3::Z,
+            Shape::Csg(c) => c.normal(p),
         }
     }
 }

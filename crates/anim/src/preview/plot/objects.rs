@@ -1,6 +1,7 @@
 //! The scene's objects in the path plot, to scale: planes seen edge-on, cylinders as
-//! bands (discs along their axis), spheres as discs in their texture's first colour, and
-//! the lights, numbered; each clipped to its panel.
+//! bands (discs along their axis), spheres as discs in their texture's first colour, the
+//! other bounded shapes (boxes, cones, tori, triangles, CSG blocks …) as their bounding
+//! box seen along the view's axis, and the lights, numbered; each clipped to its panel.
 
 use super::{draw_err, Chart, PlotError, LIGHT, SOLID};
 use crate::preview::clip::{self, Rect, P2};
@@ -73,12 +74,28 @@ pub(super) fn scene_shapes(
     let far = r.diagonal() * 4.0;
     for o in &scene.objects {
         match o.shape {
-            // An NFF's finite shapes and meshes: not drawn on the plan.
+            // The extension's shapes, meshes, CSG blocks and an NFF's finite shapes: their
+            // bounding box seen along the view's axis, in their texture's colour.
             Shape::Triangle(_)
             | Shape::Smooth(_)
             | Shape::Cone(_)
             | Shape::Placed(_)
-            | Shape::Mesh(_) => {}
+            | Shape::Mesh(_)
+            | Shape::Csg(_) => {
+                let Some((lo, hi)) = o.shape.bounds() else {
+                    continue;
+                };
+                let (a, b) = (v.project(lo), v.project(hi));
+                let (u0, u1) = (a.0.min(b.0), a.0.max(b.0));
+                let (v0, v1) = (a.1.min(b.1), a.1.max(b.1));
+                let poly = [(u0, v0), (u1, v0), (u1, v1), (u0, v1)];
+                let fill = rgb(first_color(&o.texture));
+                shape(chart, &poly, r, fill, BLACK)?;
+                legend.add(
+                    "other shapes (bounding box, texture colour)",
+                    Swatch::Fill(RGBColor(200, 170, 150)),
+                );
+            }
             Shape::Plane(p) => {
                 // Edge-on when the normal is across the line of sight: a line.
                 let n = p.normal();

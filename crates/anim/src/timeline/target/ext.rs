@@ -276,7 +276,7 @@ pub fn rebuild(scene: &mut Scene, item: usize) {
     let (mut object, mut spec) = built.objects.remove(0);
     // A mesh's triangles go where its old ones were (its handle keeps its number).
     if let (Shape::Mesh(old), Shape::Mesh(new), Some(mesh)) = (
-        scene.objects[index].shape,
+        &scene.objects[index].shape,
         &mut object.shape,
         built.meshes.pop(),
     ) {
@@ -287,7 +287,7 @@ pub fn rebuild(scene: &mut Scene, item: usize) {
     }
     if let ShapeSpec::Ext { item: i, shape, .. } = &mut spec {
         *i = item as u32;
-        *shape = object.shape;
+        *shape = object.shape.clone();
     }
     scene.objects[index].shape = object.shape;
     scene.specs[index] = spec;

@@ -152,7 +152,8 @@ fn bound(center: DVec3, objects: &[Object]) -> Option<f64> {
             | Shape::Smooth(_)
             | Shape::Cone(_)
             | Shape::Placed(_)
-            | Shape::Mesh(_) => return None,
+            | Shape::Mesh(_)
+            | Shape::Csg(_) => return None,
         };
         b = b.max(r);
         if !r.is_finite() {
@@ -197,7 +198,8 @@ pub(super) fn may_hit(shape: &Shape, from: DVec3, cone: &Cone, delta: f64) -> bo
         | Shape::Smooth(_)
         | Shape::Cone(_)
         | Shape::Placed(_)
-        | Shape::Mesh(_) => true,
+        | Shape::Mesh(_)
+        | Shape::Csg(_) => true,
     }
 }
 

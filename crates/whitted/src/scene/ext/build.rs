@@ -5,9 +5,8 @@
 //! `Placed` shape in its frame (scale, then rotate x, y, z in degrees, then translate).
 //! A `mesh` is read from its file (`crate::mesh`), its vertices moved by its frame, and
 //! becomes one object (`Shape::Mesh`, its box) whose triangles the scene keeps in
-//! `Scene::meshes`; a file that cannot be drawn is an error at the record.
-//!
-//! Not built yet: CSG blocks, refused with a located error naming them.
+//! `Scene::meshes`; a file that cannot be drawn is an error at the record. A CSG block
+//! becomes one object (`csg`), its children drawn in the block's frame.
 
 use super::{ExtItem, ExtObject, ExtShape, Extension, Modifiers};
 use crate::mesh::Mesh;
@@ -58,7 +57,7 @@ pub fn objects(ext: &Extension) -> Result<Drawn, SceneError> {
                 let spec = ShapeSpec::Ext {
                     item: item as u32,
                     kind: o.shape.keyword(),
-                    shape,
+                    shape: shape.clone(),
                     anchor,
                 };
                 let object = Object {
@@ -69,11 +68,14 @@ pub fn objects(ext: &Extension) -> Result<Drawn, SceneError> {
                 out.objects.push((object, spec));
             }
             ExtItem::Csg(c) => {
-                return Err(refused(
-                    &c.loc,
-                    c.op.keyword(),
-                    "CSG blocks are not drawn yet",
-                ))
+                let (object, anchor) = csg::object(c)?;
+                let spec = ShapeSpec::Ext {
+                    item: item as u32,
+                    kind: "csg",
+                    shape: object.shape.clone(),
+                    anchor,
+                };
+                out.objects.push((object, spec));
             }
         }
     }
@@ -91,7 +93,7 @@ fn mesh(o: &ExtObject, path: &std::path::Path, id: usize) -> Result<(MeshRef, Me
     Ok((MeshRef { id, lo, hi }, mesh))
 }
 
-fn refused(loc: &FileLoc, what: &str, message: &str) -> SceneError {
+pub(super) fn refused(loc: &FileLoc, what: &str, message: &str) -> SceneError {
     SceneError::Syntax {
         loc: loc.clone(),
         message: message.to_string(),
@@ -112,7 +114,7 @@ pub fn frame(m: &Modifiers) -> Option<Frame> {
 }
 
 /// The point a camera looks at for this object: its defining centre, moved by its frame.
-fn anchor(s: &ExtShape, m: &Modifiers) -> DVec3 {
+pub(super) fn anchor(s: &ExtShape, m: &Modifiers) -> DVec3 {
     let p = match *s {
         ExtShape::Sphere { center, .. }
         | ExtShape::Disc { center, .. }
@@ -130,9 +132,19 @@ fn anchor(s: &ExtShape, m: &Modifiers) -> DVec3 {
 /// The drawn shape of one record (its bounds were checked by the reader; what still
 /// fails here, e.g. a frame that rounding made singular, is a located error).
 pub fn shape(o: &ExtObject) -> Result<Shape, SceneError> {
+    shape_in(o, &Frame::IDENTITY)
+}
+
+/// `shape`, its frame followed by `outer` (the frame of the CSG blocks around it).
+pub(super) fn shape_in(o: &ExtObject, outer: &Frame) -> Result<Shape, SceneError> {
     let bad = |why: &str| refused(&o.loc, o.shape.keyword(), why);
-    let f = frame(&o.mods)
-        .ok_or_else(|| bad("the scale, rotate and translate make a singular frame"))?;
+    let singular = || bad("the scale, rotate and translate make a singular frame");
+    let own = frame(&o.mods).ok_or_else(singular)?;
+    let f = if outer.is_identity() {
+        own
+    } else {
+        own.then(outer).ok_or_else(singular)?
+    };
     let placed = |local: Option<Local>| {
         local
             .map(|l| Shape::Placed(Placed::new(l, f)))
@@ -185,6 +197,9 @@ pub fn shape(o: &ExtObject) -> Result<Shape, SceneError> {
         ExtShape::Mesh { .. } => Err(bad("a mesh is drawn from its file by `objects`")),
     }
 }
+
+#[path = "build_csg.rs"]
+mod csg;
 
 #[cfg(test)]
 #[path = "build_tests.rs"]

@@ -211,3 +211,59 @@ fn the_tree_finds_what_a_linear_scan_finds() {
     }
     assert!(hits > 50, "only {hits} rays hit");
 }
+
+/// A report part with no object and one light, then `rest`.
+fn with_ext(rest: &str) -> Scene {
+    let src = format!("8 6\n0 0 10\n0 0 0\n0 0\n0 0 0 1\n5 5 5 1 1 1 1\n{rest}");
+    Scene::parse(&src, "s.txt").unwrap_or_else(|e| panic!("{e}"))
+}
+
+#[test]
+fn a_csg_block_is_one_object_in_its_frame_shaded_by_the_child_hit() {
+    // The unit ball minus the box x ≥ 0, moved to z = −10; then an unnamed union.
+    let scene = with_ext(
+        "difference\n\
+           sphere 0 0 0 1  1 1 0 0  1 0 0 1 0 0\n\
+           box 0 -2 -2 2 2 2  1 0 1 0  1 0 0 1 0 0\n\
+         end name bowl translate 0 0 -10\n\
+         union\n\
+           sphere 0 5 0 1  1 1 1 1  1 0 0 1 0 0\n\
+           intersection sphere 0 6 0 1 1 1 1 1 1 0 0 1 0 0 plane 0 6 0 0 1 0 1 1 1 1 1 0 0 1 0 0 end\n\
+         end\n",
+    );
+    assert_eq!(scene.objects.len(), 2);
+    let names: Vec<String> = scene.object_names().collect();
+    // Numbered in file order, the named block counting: the second is `csg 2`.
+    assert_eq!(names, ["bowl", "csg 2"]);
+    assert_eq!(scene.specs[0].anchor(), DVec3::new(0.0, 0.0, -10.0));
+    // From +x towards the block: the cut face x = 0 at t = 5, green, normal +x.
+    let tracer = crate::trace::Tracer::new(&scene);
+    let ray = Ray::new(DVec3::new(5.0, 0.0, -10.0), -DVec3::X).with_t_min(scene.t_min);
+    let (t, i) = tracer.nearest_index(&ray).unwrap();
+    assert_eq!((t, i), (5.0, 0));
+    let (leaf, n) = crate::trace::surface_at(&scene.objects[i], &ray, ray.at(t));
+    assert_eq!(n, DVec3::X);
+    assert_eq!(leaf.texture, Texture::Uniform(DVec3::new(0.0, 1.0, 0.0)));
+    // From −x: the ball's red side at x = −1.
+    let ray = Ray::new(DVec3::new(-5.0, 0.0, -10.0), DVec3::X).with_t_min(scene.t_min);
+    let (leaf, n) = crate::trace::surface_at(&scene.objects[0], &ray, ray.at(4.0));
+    assert_eq!(
+        (n, leaf.texture.clone()),
+        (-DVec3::X, Texture::Uniform(DVec3::X))
+    );
+    // The union's nested half ball (y ≤ 6) is capped by the plane: from above at x = 0
+    // the upper ball's top y = 6 is cut, the flat cap is at y = 6 too, then nothing
+    // above the lower ball's top at 6: the first hit is at y = 6 (t = 4).
+    let ray = Ray::new(DVec3::new(0.0, 10.0, 0.0), -DVec3::Y);
+    assert_eq!(scene.objects[1].shape.hit(&ray, f64::INFINITY), Some(4.0));
+}
+
+#[test]
+fn a_shell_inside_a_block_is_refused_where_it_is_written() {
+    let src = "8 6\n0 0 10\n0 0 0\n0 0\n0 0 0 1\n5 5 5 1 1 1 1\n\
+               union\n sphere 0 0 0 1 1 1 1 1 1 0 0 1 0 0\n\
+               cylinder 0 0 0 0 1 0 1 1 1 1 1 1 0 0 1 0 0 open\nend\n";
+    let e = Scene::parse(src, "s.txt").unwrap_err();
+    let loc = e.loc().unwrap();
+    assert_eq!((loc.line, loc.column), (9, 1), "{e}");
+}
