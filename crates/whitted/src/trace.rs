@@ -22,8 +22,10 @@
 
 mod count;
 pub mod rules;
+mod surface;
 pub use count::RayCount;
 pub use rules::Rules;
+pub use surface::{facing, surface_at};
 
 use crate::accel::{Accel, Hint, Hit, LightBuffer, NO_PART};
 use crate::lights::{self, SceneLight};
@@ -32,10 +34,8 @@ use crate::optics::{reflect, refract, Ray};
 pub use crate::record::{NoRecord, Record};
 use crate::scene::Scene;
 use crate::shading::{self, Occluders};
-use crate::shapes::Shape;
 use crate::texture::Color;
 use glam::DVec3;
-use std::borrow::Cow;
 use std::sync::Arc;
 
 /// Bounces allowed after the primary ray.
@@ -125,20 +125,6 @@ impl<'a> Tracer<'a> {
     #[inline]
     pub fn nearest_hit(&self, ray: &Ray) -> Option<Hit> {
         self.accel.nearest_hit(ray)
-    }
-
-    /// The object as shading sees it at a hit on `part`: a mesh object becomes its
-    /// triangle `part` (with the mesh's texture and material); any other is itself.
-    #[inline]
-    pub fn surface_of<'o>(&self, obj: &'o Object, part: u32) -> Cow<'o, Object> {
-        match self.accel.surface(&obj.shape, part) {
-            Some(shape) => Cow::Owned(Object {
-                shape,
-                texture: obj.texture.clone(),
-                material: obj.material,
-            }),
-            None => Cow::Borrowed(obj),
-        }
     }
 
     /// What a shadow ray from `p` towards a light `dist` away along the unit `to_light`
@@ -360,35 +346,6 @@ impl<'a> Tracer<'a> {
         }
         out
     }
-}
-
-/// The shading normal at `p` on `obj` for a ray along `v`, and whether the ray enters the
-/// object: the outward normal decides entering (V·N < 0), bump perturbs it, and it is
-/// turned to face the ray. What `shade` lights and `pick` answers.
-#[inline(always)]
-pub fn shading_normal(obj: &Object, p: DVec3, v: DVec3) -> (DVec3, bool) {
-    facing(obj, obj.shape.normal(p), p, v)
-}
-
-/// What shades the hit `p` of `ray` on `obj`, and the outward normal there: `obj` and its
-/// shape's normal, or for a CSG block the leaf the ray met (its texture and material)
-/// and the block's normal (reversed on a difference's cut surface).
-#[inline(always)]
-pub fn surface_at<'o>(obj: &'o Object, ray: &Ray, p: DVec3) -> (&'o Object, DVec3) {
-    if let Shape::Csg(csg) = &obj.shape {
-        if let Some(s) = csg.surface(ray, f64::INFINITY) {
-            return (s.leaf, s.normal);
-        }
-    }
-    (obj, obj.shape.normal(p))
-}
-
-/// `shading_normal` with the outward normal given: entering or leaving, bump, facing.
-#[inline(always)]
-pub fn facing(obj: &Object, outward: DVec3, p: DVec3, v: DVec3) -> (DVec3, bool) {
-    let entering = v.dot(outward) < 0.0;
-    let bumped = obj.material.bump.apply(outward, p);
-    (if entering { bumped } else { -bumped }, entering)
 }
 
 impl Occluders for Tracer<'_> {
