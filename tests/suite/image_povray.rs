@@ -66,20 +66,7 @@ fn compare(ours_interp: &str, pov_interp: &str) -> Option<f64> {
         .unwrap();
     let pov = dir.path().join("scene.pov");
     std::fs::write(&pov, POV.replace("{I}", pov_interp)).unwrap();
-    let theirs = dir.path().join("pov.png");
-    let out = std::process::Command::new(povray)
-        .current_dir(dir.path())
-        .arg(format!("+I{}", pov.display()))
-        .arg(format!("+O{}", theirs.display()))
-        .args([&format!("+W{W}"), &format!("+H{H}"), "-A", "-D", "+FN8"])
-        .args(["File_Gamma=1.0", "Output_Alpha=off", "-V", "-GA"])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success() && theirs.exists(),
-        "povray failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let theirs = crate::nff_povray::povray_png(&povray, dir.path(), &pov, W, H);
     if let Some(keep) = std::env::var_os("IMAGE_POVRAY_KEEP") {
         let keep = std::path::Path::new(&keep);
         std::fs::copy(&ours, keep.join(format!("ours-{ours_interp}.png"))).unwrap();
@@ -88,22 +75,12 @@ fn compare(ours_interp: &str, pov_interp: &str) -> Option<f64> {
     Some(share_apart(&ours, &theirs, 6))
 }
 
-fn assert_close(share: Option<f64>) {
-    if let Some(share) = share {
-        assert!(
-            share < 0.01,
-            "{:.2} % of the pixels are apart",
-            share * 100.0
-        );
-    }
-}
-
 #[test]
 fn nearest_maps_match_image_map_without_interpolation() {
-    assert_close(compare("nearest", ""));
+    crate::nff_povray::assert_close(compare("nearest", ""));
 }
 
 #[test]
 fn bilinear_maps_match_image_map_interpolate_2() {
-    assert_close(compare("bilinear", "interpolate 2"));
+    crate::nff_povray::assert_close(compare("bilinear", "interpolate 2"));
 }

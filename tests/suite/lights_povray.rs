@@ -64,36 +64,13 @@ fn compare(lights: Vec<ExtLight>, pov_light: &str) -> Option<f64> {
         .unwrap();
     let pov = dir.path().join("scene.pov");
     std::fs::write(&pov, format!("{POV_BASE}{pov_light}\n")).unwrap();
-    let theirs = dir.path().join("pov.png");
-    let out = std::process::Command::new(povray)
-        .current_dir(dir.path())
-        .arg(format!("+I{}", pov.display()))
-        .arg(format!("+O{}", theirs.display()))
-        .args([&format!("+W{W}"), &format!("+H{H}"), "-A", "-D", "+FN8"])
-        .args(["File_Gamma=1.0", "Output_Alpha=off", "-V", "-GA"])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success() && theirs.exists(),
-        "povray failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let theirs = crate::nff_povray::povray_png(&povray, dir.path(), &pov, W, H);
     if let Some(keep) = std::env::var_os("LIGHTS_POVRAY_KEEP") {
         let keep = std::path::Path::new(&keep);
         std::fs::copy(&ours, keep.join("ours.png")).unwrap();
         std::fs::copy(&theirs, keep.join("pov.png")).unwrap();
     }
     Some(share_apart(&ours, &theirs, 6))
-}
-
-fn assert_close(share: Option<f64>) {
-    if let Some(share) = share {
-        assert!(
-            share < 0.01,
-            "{:.2} % of the pixels are apart",
-            share * 100.0
-        );
-    }
 }
 
 #[test]
@@ -108,7 +85,7 @@ fn directional_matches_parallel() {
         0.8,
         None,
     );
-    assert_close(compare(
+    crate::nff_povray::assert_close(compare(
         vec![d],
         "light_source { <100, 200, -150> color rgb <1, 0.9, 0.8> * 0.8 parallel point_at <0, 0, 0> }",
     ));
@@ -128,7 +105,7 @@ fn spot_matches_spotlight() {
         1.0,
         None,
     );
-    assert_close(compare(
+    crate::nff_povray::assert_close(compare(
         vec![s],
         "light_source { <3, 6, -2> color rgb 1 spotlight point_at <-0.5, 0, 0> \
          radius 12 falloff 25 tightness 4 }",
@@ -145,7 +122,7 @@ fn faded_point_matches_fade_distance_and_power() {
         1.0,
         Some((2.5, 2.0)),
     );
-    assert_close(compare(
+    crate::nff_povray::assert_close(compare(
         vec![p],
         "light_source { <2, 3, -2> color rgb <1, 1, 0.9> fade_distance 2.5 fade_power 2 }",
     ));
@@ -166,7 +143,7 @@ fn area_matches_area_light() {
         0.9,
         None,
     );
-    assert_close(compare(
+    crate::nff_povray::assert_close(compare(
         vec![a],
         "light_source { <1, 6, -1> color rgb 0.9 area_light <3, 0, 0>, <0, 0, -3>, 4, 4 }",
     ));

@@ -167,36 +167,13 @@ fn compare(files: &[(&str, String)], records: &str, pov: &str) -> Option<f64> {
         .unwrap();
     let pov_file = dir.path().join("scene.pov");
     std::fs::write(&pov_file, format!("{POV_BASE}{pov}")).unwrap();
-    let theirs = dir.path().join("pov.png");
-    let out = std::process::Command::new(povray)
-        .current_dir(dir.path())
-        .arg(format!("+I{}", pov_file.display()))
-        .arg(format!("+O{}", theirs.display()))
-        .args([&format!("+W{W}"), &format!("+H{H}"), "-A", "-D", "+FN8"])
-        .args(["File_Gamma=1.0", "Output_Alpha=off", "-V", "-GA"])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success() && theirs.exists(),
-        "povray failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let theirs = crate::nff_povray::povray_png(&povray, dir.path(), &pov_file, W, H);
     if let Some(keep) = std::env::var_os("MESH_POVRAY_KEEP") {
         let keep = std::path::Path::new(&keep);
         std::fs::copy(&ours, keep.join("ours.png")).unwrap();
         std::fs::copy(&theirs, keep.join("pov.png")).unwrap();
     }
     Some(share_apart(&ours, &theirs, 6))
-}
-
-fn assert_close(share: Option<f64>) {
-    if let Some(share) = share {
-        assert!(
-            share < 0.01,
-            "{:.2} % of the pixels are apart",
-            share * 100.0
-        );
-    }
 }
 
 const RED: &str = "1 0.9 0.3 0.2  0.7 0 0 1 0 0";
@@ -207,7 +184,7 @@ const POV_BLUE: &str = "pigment { color rgb <0.2, 0.5, 0.9> } Fin(0.7)";
 #[test]
 fn smooth_icosphere_matches_mesh2() {
     let ico = icosphere();
-    assert_close(compare(
+    crate::nff_povray::assert_close(compare(
         &[("ball.obj", obj(&ico, true))],
         &format!("mesh \"ball.obj\" {RED} scale 0.9 0.9 0.9 translate 0 0.9 0\n"),
         &mesh2(
@@ -221,7 +198,7 @@ fn smooth_icosphere_matches_mesh2() {
 #[test]
 fn flat_icosphere_and_quad_cube_match_mesh2() {
     let (ico, cube) = (icosphere(), cube());
-    assert_close(compare(
+    crate::nff_povray::assert_close(compare(
         &[
             ("gem.obj", obj(&ico, false)),
             ("cube.obj", obj(&cube, false)),

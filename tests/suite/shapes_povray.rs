@@ -49,20 +49,7 @@ fn compare(objects: &[Obj], keep: &str) -> Option<f64> {
     let pov = dir.path().join("scene.pov");
     let pov_objects: Vec<String> = objects.iter().map(Obj::pov).collect();
     std::fs::write(&pov, format!("{POV_BASE}{}\n", pov_objects.join("\n"))).unwrap();
-    let theirs = dir.path().join("pov.png");
-    let out = std::process::Command::new(povray)
-        .current_dir(dir.path())
-        .arg(format!("+I{}", pov.display()))
-        .arg(format!("+O{}", theirs.display()))
-        .args([&format!("+W{W}"), &format!("+H{H}"), "-A", "-D", "+FN8"])
-        .args(["File_Gamma=1.0", "Output_Alpha=off", "-V", "-GA"])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success() && theirs.exists(),
-        "povray failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let theirs = crate::nff_povray::povray_png(&povray, dir.path(), &pov, W, H);
     if let Some(to) = std::env::var_os("SHAPES_POVRAY_KEEP") {
         let to = std::path::Path::new(&to);
         std::fs::copy(&ours, to.join(format!("{keep}-ours.png"))).unwrap();
@@ -71,16 +58,6 @@ fn compare(objects: &[Obj], keep: &str) -> Option<f64> {
         std::fs::write(to.join(format!("{keep}.txt")), &src).unwrap();
     }
     Some(share_apart(&ours, &theirs, 6))
-}
-
-fn assert_close(share: Option<f64>) {
-    if let Some(share) = share {
-        assert!(
-            share < 0.01,
-            "{:.2} % of the pixels are apart",
-            share * 100.0
-        );
-    }
 }
 
 const RED: [f64; 3] = [0.9, 0.2, 0.2];
@@ -119,7 +96,7 @@ fn every_shape_matches_povray() {
             YELLOW,
         ),
     ];
-    assert_close(compare(&objects, "shapes"));
+    crate::nff_povray::assert_close(compare(&objects, "shapes"));
 }
 
 #[test]
@@ -169,7 +146,7 @@ fn framed_shapes_match_povray() {
             [-1.6, 1.6, -1.8],
         ),
     ];
-    assert_close(compare(&objects, "framed"));
+    crate::nff_povray::assert_close(compare(&objects, "framed"));
 }
 
 #[test]
@@ -256,5 +233,5 @@ fn csg_matches_povray() {
             [2.5, 0.8, -1.2],
         ),
     ];
-    assert_close(compare(&objects, "csg"));
+    crate::nff_povray::assert_close(compare(&objects, "csg"));
 }
