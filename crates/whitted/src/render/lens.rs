@@ -37,6 +37,15 @@ impl<'a> Shot<'a> {
         self.camera
     }
 
+    /// The camera when the shot has no lens (each camera sample is one pinhole ray).
+    #[inline]
+    pub fn pinhole(&self) -> Option<&Camera> {
+        match self.lens {
+            None => Some(self.camera),
+            Some(_) => None,
+        }
+    }
+
     /// The rays traced for one camera sample: 1 without a lens, Samples² with one.
     pub fn rays_per_sample(&self) -> u32 {
         self.lens.as_ref().map_or(1, |l| l.points().len() as u32)
