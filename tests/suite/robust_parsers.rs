@@ -309,6 +309,10 @@ fn seeds() -> Vec<(String, String)> {
     ];
     for p in shipped::scenes() {
         if let Ok(text) = std::fs::read_to_string(&p) {
+            // A mesh record names its file from the scene's folder: made absolute, so
+            // that the seed and its prefixes parse under any name.
+            let dir = p.parent().unwrap().display().to_string();
+            let text = text.replace("mesh \"meshes/", &format!("mesh \"{dir}/meshes/"));
             out.push((p.file_name().unwrap().to_string_lossy().into_owned(), text));
         }
     }

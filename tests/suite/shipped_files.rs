@@ -35,6 +35,7 @@ fn the_list_is_what_git_tracks() {
         .collect();
     let mut listed: Vec<String> = shipped::SCENES
         .iter()
+        .chain(shipped::MESH_FILES)
         .map(|n| format!("scenes/{n}"))
         .chain(
             shipped::ANIMATIONS

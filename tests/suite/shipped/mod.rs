@@ -27,11 +27,16 @@ pub const SCENES: &[&str] = &[
     "bounce.txt",
     "csg-piece.txt",
     "glass-cluster.txt",
+    "meshes.txt",
     "new-shapes.txt",
     "orbit.txt",
     "showcase.txt",
     "torus-chain.txt",
 ];
+
+/// The mesh files the shipped scenes read, in `scenes/` (written by
+/// `benches/gen_meshes.py`).
+pub const MESH_FILES: &[&str] = &["meshes/gem.obj", "meshes/trefoil.ply"];
 
 /// The shipped manifests, in `animations/`.
 pub const ANIMATIONS: &[&str] = &[
