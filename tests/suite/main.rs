@@ -69,6 +69,7 @@ mod production_hooks;
 mod production_loops;
 mod production_shared;
 mod progress;
+mod provenance_inputs;
 mod raytrace_cli;
 mod readonly_folder;
 mod reliability_three;

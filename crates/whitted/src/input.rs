@@ -62,6 +62,13 @@ pub fn open_regular(path: &Path, limit: u64, what: &str) -> Result<(File, u64), 
     Ok((file, len.max(meta.len())))
 }
 
+/// The SHA-256 of a file's bytes: what a frame's provenance records of the mesh and
+/// image files it was drawn from (their content, not their name or date).
+pub fn digest(bytes: &[u8]) -> [u8; 32] {
+    use sha2::{Digest, Sha256};
+    Sha256::digest(bytes).into()
+}
+
 /// Reads the whole of `path` if it is a regular file of at most `limit` bytes, and
 /// never more than `limit` bytes even if it grows while being read.
 pub fn read_regular(path: &Path, limit: u64, what: &str) -> Result<Vec<u8>, Error> {

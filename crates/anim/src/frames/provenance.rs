@@ -6,9 +6,9 @@
 //!
 //! The digest is SHA-256 over the pixel version, the settings (`Settings`, serialized as
 //! JSON), and for each time the frame samples the scene's values after tracks (not the
-//! file's bytes: comments and layout count for nothing), the eye and the look-at point,
-//! every number by its exact bits. Frames carry no render time, so that the same inputs
-//! give the same bytes on every run.
+//! file's bytes: comments and layout count for nothing; the extension's shapes, lights
+//! and focus included), the eye and the look-at point, every number by its exact bits.
+//! Frames carry no render time, so that the same inputs give the same bytes on every run.
 
 use crate::project::Animation;
 use glam::DVec3;
@@ -17,8 +17,12 @@ use std::path::{Path, PathBuf};
 use whitted::camera::Lens;
 use whitted::fog::Fog;
 use whitted::object::Highlight;
+use whitted::object::Object;
 use whitted::optics::T_MIN;
 use whitted::scene::{Scene, ShapeSpec};
+use whitted::shapes::csg::{Csg, Node};
+use whitted::shapes::Shape;
+use whitted::texture::Texture;
 
 /// The keyword of the digest in every format.
 pub(crate) const DIGEST_KEY: &str = "whitted:digest";
@@ -121,6 +125,22 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
         v(light.color, &mut f);
         f(light.intensity);
     }
+    // The extension's records, every value as tracks left it (their modifiers included),
+    // and the contents of the mesh and image files they read; nothing for a file without
+    // them, so that a Scene.txt's digests stay what they were. Debug prints each f64
+    // exactly.
+    let ext = &scene.ext;
+    if !ext.is_empty() {
+        f(10.0);
+        format!("{:?}{:?}{:?}", ext.objects, ext.lights, ext.focus)
+            .bytes()
+            .for_each(|b| f(f64::from(b)));
+    }
+    let mut sources: Vec<[u8; 32]> = scene.meshes.iter().map(|m| m.source).collect();
+    image_sources(scene.objects.iter(), &mut sources);
+    for s in sources {
+        s.iter().for_each(|&b| f(f64::from(b)));
+    }
     // An NFF's background, epsilon and view (nothing for a Scene.txt's defaults).
     let lens = scene.lens;
     if scene.background != DVec3::ZERO || scene.t_min != T_MIN || lens != Lens::default() {
@@ -131,6 +151,29 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
         f(lens.roll);
         v(lens.up, &mut f);
         f(f64::from(u8::from(lens.centres)));
+    }
+}
+
+/// The SHA-256 of the file of every image texture of `objects` (CSG blocks' leaves
+/// included), in order.
+fn image_sources<'a>(objects: impl Iterator<Item = &'a Object>, out: &mut Vec<[u8; 32]>) {
+    for obj in objects {
+        if let Texture::Image(img) = &obj.texture {
+            out.push(img.pixels.source());
+        }
+        if let Shape::Csg(csg) = &obj.shape {
+            csg_sources(csg, out);
+        }
+    }
+}
+
+/// `image_sources` of a CSG block's leaves.
+fn csg_sources(csg: &Csg, out: &mut Vec<[u8; 32]>) {
+    for node in csg.children() {
+        match node {
+            Node::Leaf(obj) => image_sources(std::iter::once(obj), out),
+            Node::Csg(inner) => csg_sources(inner, out),
+        }
     }
 }
 

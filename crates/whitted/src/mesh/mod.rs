@@ -117,6 +117,8 @@ pub struct Mesh {
     pub normals: Vec<DVec3>,
     /// The triangles of non-zero area, in file order.
     pub triangles: Vec<[u32; 3]>,
+    /// The SHA-256 of the file it was read from (zeros for one made in memory).
+    pub source: [u8; 32],
 }
 
 impl std::fmt::Debug for Mesh {
@@ -157,7 +159,11 @@ impl Mesh {
             let count = raw.triangles.len() as u64;
             return Err(MeshError::TooMany { path: name, count });
         }
-        Mesh::from_raw(raw, frame).ok_or(MeshError::Degenerate { path: name })
+        let mesh = Mesh::from_raw(raw, frame).ok_or(MeshError::Degenerate { path: name })?;
+        Ok(Mesh {
+            source: crate::input::digest(&bytes),
+            ..mesh
+        })
     }
 
     /// The mesh of `raw` placed by `frame`, its zero-area triangles dropped; `None` when
@@ -193,6 +199,7 @@ impl Mesh {
             vertices,
             normals,
             triangles,
+            source: [0; 32],
         })
     }
 

@@ -47,6 +47,8 @@ pub struct Pixels {
     width: u32,
     height: u32,
     data: Vec<[f32; 3]>,
+    /// The SHA-256 of the file they were read from (zeros when made in memory).
+    source: [u8; 32],
 }
 
 impl std::fmt::Debug for Pixels {
@@ -63,7 +65,18 @@ impl Pixels {
             width,
             height,
             data,
+            source: [0; 32],
         })
+    }
+
+    /// The same pixels, read from a file whose bytes have the SHA-256 `source`.
+    pub fn with_source(self, source: [u8; 32]) -> Pixels {
+        Pixels { source, ..self }
+    }
+
+    /// The SHA-256 of the file the pixels were read from (zeros when made in memory).
+    pub fn source(&self) -> [u8; 32] {
+        self.source
     }
 
     /// The width and height.

@@ -17,11 +17,12 @@ use std::path::Path;
 pub fn load(path: &Path) -> Result<Pixels, String> {
     let bytes =
         crate::input::read_regular(path, MAX_TEXTURE_BYTES, "image").map_err(|e| e.to_string())?;
-    if bytes.starts_with(&[0x76, 0x2f, 0x31, 0x01]) {
+    let pixels = if bytes.starts_with(&[0x76, 0x2f, 0x31, 0x01]) {
         exr_pixels(&bytes)
     } else {
         picture_pixels(&bytes)
-    }
+    };
+    pixels.map(|p| p.with_source(crate::input::digest(&bytes)))
 }
 
 /// Refuses a size past the limits.
