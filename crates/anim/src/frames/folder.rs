@@ -7,8 +7,9 @@
 //! - `temporaries`: hidden `.frame_0007.png.XXXXXX.tmp` files (and those of RAW records)
 //!   that a killed run left; a run holding the folder's lock (`lock`) removes them, since
 //!   no other run can be writing them;
-//! - `clean` (`animate clean`): removes both, and the records of removed RAW frames;
-//!   files past the end that are not this manifest's (`owner`) only when forced.
+//! - `clean` (`animate clean`): removes both, the records of removed RAW frames and the
+//!   claim files of the manifest's frames that no run holds (`claim`); files past the end
+//!   that are not this manifest's (`owner`) only when forced.
 
 use super::owner::{owner, Owner};
 use super::provenance::{raw_record_path, RAW_RECORDS};
@@ -73,12 +74,27 @@ pub fn temporaries(anim: &Animation, dir: &Path) -> Vec<PathBuf> {
     found
 }
 
-/// Removes `paths`, and the RAW records of frames among them; returns how many files went.
+/// The claim files of `anim`'s frames in `dir`'s claims folder (held or not).
+pub fn claim_files(anim: &Animation, dir: &Path) -> usize {
+    let claims = std::fs::read_dir(dir.join(super::claim::CLAIMS));
+    (claims.into_iter().flatten().flatten())
+        .filter(|e| {
+            let name = e.file_name().to_string_lossy().into_owned();
+            (name.strip_suffix(".claim")).is_some_and(|f| frame_of(anim, f).is_some())
+        })
+        .count()
+}
+
+/// Removes `paths`, and the RAW records of frames among them; returns how many files went
+/// (a file already gone is not an error, nor counted).
 pub(crate) fn remove(paths: &[PathBuf]) -> std::io::Result<usize> {
     let mut n = 0;
     for p in paths {
-        std::fs::remove_file(p)?;
-        n += 1;
+        match std::fs::remove_file(p) {
+            Ok(()) => n += 1,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => continue,
+            Err(e) => return Err(e),
+        }
         // A removed frame's cost record goes with it (not counted: it is not a frame).
         let spent = super::cost::cost_path(p);
         if spent.is_file() {
@@ -100,6 +116,8 @@ pub struct Cleaned {
     pub beyond: Vec<u32>,
     /// Temporaries of killed runs removed.
     pub temporaries: usize,
+    /// Claim files of this manifest's frames removed (`claim::remove_free`).
+    pub claims: usize,
 }
 
 /// The files among `beyond(anim, dir)` that are not `anim`'s manifest's (another
@@ -116,34 +134,41 @@ pub fn not_ours(anim: &Animation, dir: &Path) -> Vec<(PathBuf, Owner)> {
 }
 
 /// Removes from `dir` the files of frames past the end of `anim`'s sequence (with their
-/// RAW records) and the temporaries of killed runs, under the folder's lock: refused
-/// while any other run writes into it (`AnimError::Busy`, `AnimError::InUse`), and when
-/// a file to remove is not this manifest's (`AnimError::NotOurs`) unless `force`.
+/// RAW records), the temporaries of killed runs and the claim files of the manifest's
+/// frames that no one holds, alone in the folder and holding its gate throughout (no run
+/// can join before it is done): refused while any other run writes into it
+/// (`AnimError::Busy`, `AnimError::InUse`), and when a file to remove is not this
+/// manifest's (`AnimError::NotOurs`) unless `force`.
 pub fn clean(anim: &Animation, dir: &Path, force: bool) -> Result<Cleaned, AnimError> {
-    let held = super::lock::lock(dir, &anim.manifest.path)?;
-    if !held.alone() {
-        return Err(AnimError::InUse {
-            dir: dir.to_path_buf(),
-        });
-    }
     let folder = |source| AnimError::Folder {
         dir: dir.to_path_buf(),
         source,
     };
-    if !force {
-        if let Some(refusal) = super::owner::refusal("removed", &not_ours(anim, dir)) {
-            return Err(refusal);
+    let gated = |alone: bool| {
+        if !alone {
+            return Err(AnimError::InUse {
+                dir: dir.to_path_buf(),
+            });
         }
-    }
-    let past = beyond(anim, dir);
-    let paths: Vec<PathBuf> = past.iter().map(|(_, p)| p.clone()).collect();
-    remove(&paths).map_err(folder)?;
-    let temps = temporaries(anim, dir);
-    remove(&temps).map_err(folder)?;
-    Ok(Cleaned {
-        beyond: past.into_iter().map(|(f, _)| f).collect(),
-        temporaries: temps.len(),
-    })
+        if !force {
+            if let Some(refusal) = super::owner::refusal("removed", &not_ours(anim, dir)) {
+                return Err(refusal);
+            }
+        }
+        let past = beyond(anim, dir);
+        let paths: Vec<PathBuf> = past.iter().map(|(_, p)| p.clone()).collect();
+        remove(&paths).map_err(folder)?;
+        let temps = remove(&temporaries(anim, dir)).map_err(folder)?;
+        let claims = super::claim::remove_free(dir, |name| frame_of(anim, name).is_some())
+            .map_err(folder)?;
+        Ok(Cleaned {
+            beyond: past.into_iter().map(|(f, _)| f).collect(),
+            temporaries: temps,
+            claims,
+        })
+    };
+    let (_held, cleaned) = super::lock::lock_with(dir, &anim.manifest.path, gated)?;
+    Ok(cleaned)
 }
 
 #[cfg(test)]

@@ -22,7 +22,7 @@ use super::claim::Claims;
 use super::cost::{self, Meter};
 use super::events::{Event, Reporter};
 use super::folder;
-use super::lock::lock;
+use super::lock::lock_with;
 use super::owner::{self, Owner};
 use super::policy::Policy;
 use super::provenance::{self, raw_record_path, Inspection};
@@ -196,15 +196,17 @@ pub(crate) fn render_to_folder(
         dir: dir.to_path_buf(),
         source,
     })?;
-    let lock = lock(dir, &anim.manifest.path)?;
-    if lock.alone() {
-        // No other run of this manifest is writing: every temporary is a killed run's.
-        let folder = |source| AnimError::Folder {
-            dir: dir.to_path_buf(),
-            source,
-        };
-        folder::remove(&folder::temporaries(anim, dir)).map_err(folder)?;
-    }
+    // Alone, the run clears the temporaries killed runs left, before another run may
+    // join and start writing its own (`lock_with` holds the gate until this returns).
+    let (lock, ()) = lock_with(dir, &anim.manifest.path, |alone| match alone {
+        true => folder::remove(&folder::temporaries(anim, dir))
+            .map(|_| ())
+            .map_err(|source| AnimError::Folder {
+                dir: dir.to_path_buf(),
+                source,
+            }),
+        false => Ok(()),
+    })?;
     // Each file is inspected once, in parallel, for both answers.
     let ours = anim.manifest.path.file_name().map(|n| n.to_string_lossy());
     let seen: Vec<Found> = frames
