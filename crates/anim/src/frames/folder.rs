@@ -5,12 +5,13 @@
 //!   lowered after they were rendered), which a `frame_%04d.png` glob would mix into a
 //!   video;
 //! - `temporaries`: hidden `.frame_0007.png.XXXXXX.tmp` files (and those of RAW records)
-//!   that a killed run left; a run holding the folder's lock (`lock`) removes them, since
-//!   no other run can be writing them;
+//!   that a killed run left; a run alone in the folder removes them as it takes it
+//!   (`take`), before another run may join and write its own;
 //! - `clean` (`animate clean`): removes both, the records of removed RAW frames and the
 //!   claim files of the manifest's frames that no run holds (`claim`); files past the end
 //!   that are not this manifest's (`owner`) only when forced.
 
+use super::lock::FolderLock;
 use super::owner::{owner, Owner};
 use super::provenance::{raw_record_path, RAW_RECORDS};
 use crate::error::AnimError;
@@ -83,6 +84,23 @@ pub fn claim_files(anim: &Animation, dir: &Path) -> usize {
             (name.strip_suffix(".claim")).is_some_and(|f| frame_of(anim, f).is_some())
         })
         .count()
+}
+
+/// Takes `dir` (which exists) for a run of `anim`'s manifest (`lock::lock_with`). Alone
+/// in it, the run first removes the temporaries killed runs left, still holding the
+/// folder's gate: a run let in before that could be writing a temporary of its own, which
+/// the listing would take for a killed run's (one of the two runs then failed).
+pub(crate) fn take(anim: &Animation, dir: &Path) -> Result<FolderLock, AnimError> {
+    let clear = |alone: bool| match alone {
+        true => remove(&temporaries(anim, dir))
+            .map(|_| ())
+            .map_err(|source| AnimError::Folder {
+                dir: dir.to_path_buf(),
+                source,
+            }),
+        false => Ok(()),
+    };
+    super::lock::lock_with(dir, &anim.manifest.path, clear).map(|(held, ())| held)
 }
 
 /// Removes `paths`, and the RAW records of frames among them; returns how many files went
@@ -175,10 +193,59 @@ pub fn clean(anim: &Animation, dir: &Path, force: bool) -> Result<Cleaned, AnimE
 mod tests {
     use super::*;
 
+    const SCENE: &str = "8 6  0 1 6  0 1 0  0 0  1 0 0 1\n1.0  0 1 0   1 0.9 0.2 0.1   0.7 0.3 0 1 0 0\n5 10 5  1 1 1  0.9";
+
+    #[test]
+    fn a_lone_run_clears_temporaries_before_another_may_join() {
+        use notify::event::{AccessKind, AccessMode, EventKind, RemoveKind};
+        use notify::Watcher;
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("s.txt"), SCENE).unwrap();
+        let m = dir.path().join("m.toml");
+        std::fs::write(&m, "scene = \"s.txt\"\nframes = 4\n").unwrap();
+        let p = crate::project::Project::load(&m).unwrap();
+        let anim = Animation::new(&p).unwrap();
+        let frames = dir.path().join("frames");
+        std::fs::create_dir(&frames).unwrap();
+        let stale = frames.join(".frame_0002.png.Ab12Cd.tmp");
+        std::fs::write(&stale, "half").unwrap();
+        // The folder's events, in the order the system saw them.
+        let (tx, rx) = std::sync::mpsc::channel();
+        let mut watcher = notify::recommended_watcher(tx).unwrap();
+        watcher
+            .watch(&frames, notify::RecursiveMode::NonRecursive)
+            .unwrap();
+        let held = take(&anim, &frames).unwrap();
+        assert!(held.alone() && !stale.exists());
+        let gate = frames.join(super::super::lock::LOCK_FILE);
+        let (mut removed, mut released) = (None, None);
+        for k in 0.. {
+            // A bound on the wait for the events, not a measured time.
+            let event = rx.recv_timeout(std::time::Duration::from_secs(30));
+            let event = event.expect("the events came").unwrap();
+            let at = |path: &Path| event.paths.iter().any(|p| p == path);
+            match event.kind {
+                EventKind::Remove(RemoveKind::File | RemoveKind::Any) if at(&stale) => {
+                    removed = Some(k)
+                }
+                EventKind::Access(AccessKind::Close(AccessMode::Write)) if at(&gate) => {
+                    released.get_or_insert(k);
+                }
+                _ => {}
+            }
+            if removed.is_some() && released.is_some() {
+                break;
+            }
+        }
+        // Before, the gate was let go first: a run could join and have its temporary taken
+        // for a killed run's.
+        assert!(removed < released, "{removed:?} {released:?}");
+    }
+
     #[test]
     fn frame_names_under_a_pattern() {
         let dir = tempfile::tempdir().unwrap();
-        std::fs::write(dir.path().join("s.txt"), "8 6  0 1 6  0 1 0  0 0  1 0 0 1\n1.0  0 1 0   1 0.9 0.2 0.1   0.7 0.3 0 1 0 0\n5 10 5  1 1 1  0.9").unwrap();
+        std::fs::write(dir.path().join("s.txt"), SCENE).unwrap();
         let m = dir.path().join("m.toml");
         std::fs::write(
             &m,
