@@ -164,9 +164,16 @@ fn four_shards_at_once_into_one_folder() {
     let shards: Vec<_> = (0..4)
         .map(|k| spawn(&manifest, &["--shard", &format!("{k}/4")]))
         .collect();
-    for child in shards {
-        assert!(child.wait_with_output().unwrap().status.success());
-    }
+    // Every shard waited for before any assertion; a failing one says why.
+    let failed: Vec<String> = (shards.into_iter().enumerate())
+        .map(|(k, child)| (k, child.wait_with_output().unwrap()))
+        .filter(|(_, out)| !out.status.success())
+        .map(|(k, out)| {
+            let err = String::from_utf8_lossy(&out.stderr);
+            format!("shard {k}/4: {}\n{err}", out.status)
+        })
+        .collect();
+    assert!(failed.is_empty(), "{}", failed.join("\n"));
     assert_eq!(
         files(&dir.path().join("frames")),
         files(&dir.path().join("single"))

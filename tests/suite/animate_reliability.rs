@@ -161,7 +161,7 @@ fn frames_past_a_shortened_sequence_are_reported_and_cleaned() {
     let text = String::from_utf8_lossy(&out.stdout);
     assert!(out.status.success());
     assert!(
-        text.contains("removed 10 frame(s) past the end (10-19) and 1 temporary file(s)"),
+        text.contains("removed 10 frame(s) past the end (10-19), 1 temporary file(s) and "),
         "{text}"
     );
     assert_eq!(files(&frames).len(), 10);

@@ -75,3 +75,57 @@ fn a_killed_runs_frames_are_taken_over() {
     let out = animate().arg(&manifest).arg("--resume").output().unwrap();
     assert!(!String::from_utf8_lossy(&out.stderr).contains("sharing"));
 }
+
+#[test]
+fn clean_removes_the_claim_files_no_run_holds() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    animate().arg(&manifest).arg("-q").assert().success();
+    let claims = dir
+        .path()
+        .join("frames")
+        .join(whitted_anim::frames::claim::CLAIMS);
+    let left = || {
+        let mut names: Vec<String> = std::fs::read_dir(&claims)
+            .map(|d| d.flatten().map(|e| e.file_name().into_string().unwrap()))
+            .into_iter()
+            .flatten()
+            .collect();
+        names.sort();
+        names
+    };
+    assert_eq!(left().len(), 12);
+    // Another pattern's claim is not this manifest's; one claim is held (by this test).
+    std::fs::write(claims.join("other_0001.png.claim"), "").unwrap();
+    let held = std::fs::File::options()
+        .write(true)
+        .open(claims.join("frame_0003.png.claim"))
+        .unwrap();
+    held.lock().unwrap();
+    let out = animate()
+        .args(["clean", "--dry-run"])
+        .arg(&manifest)
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("and 12 claim file(s) (those no run holds)"),
+        "{text}"
+    );
+    assert_eq!(left().len(), 13);
+    let out = animate().arg("clean").arg(&manifest).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "{text}");
+    assert!(
+        text.contains("0 temporary file(s) and 11 claim file(s)"),
+        "{text}"
+    );
+    assert_eq!(left(), ["frame_0003.png.claim", "other_0001.png.claim"]);
+    drop(held);
+    let out = animate().arg("clean").arg(&manifest).output().unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("and 1 claim file(s)"), "{text}");
+    assert_eq!(left(), ["other_0001.png.claim"]);
+    // The frames are untouched, and a run claims again as before.
+    animate().arg("status").arg(&manifest).assert().code(0);
+    animate().arg(&manifest).arg("-q").assert().success();
+}

@@ -1,5 +1,5 @@
-//! `animate clean` (frames past the end and killed runs' temporaries, only this
-//! manifest's unless forced) and `animate encode` (a complete folder into a video).
+//! `animate clean` (frames past the end, killed runs' temporaries and free claim files,
+//! only this manifest's unless forced) and `animate encode` (a complete folder into a video).
 
 use super::emit;
 use crate::error::AnimError;
@@ -43,20 +43,24 @@ pub fn clean(
             (n, false) => format!(" ({n} of them not this manifest's: removed only when forced)"),
         };
         format!(
-            "{}: would remove {} frame(s) past the end ({}){refused} and {} temporary file(s)\n",
+            "{}: would remove {} frame(s) past the end ({}){refused}, {} temporary file(s) \
+             and {} claim file(s) (those no run holds)\n",
             shown(&dir),
             past.len(),
             ranges(&past),
-            folder::temporaries(&anim, &dir).len()
+            folder::temporaries(&anim, &dir).len(),
+            folder::claim_files(&anim, &dir)
         )
     } else {
         let cleaned = folder::clean(&anim, &dir, request.force)?;
         format!(
-            "{}: removed {} frame(s) past the end ({}) and {} temporary file(s)\n",
+            "{}: removed {} frame(s) past the end ({}), {} temporary file(s) and {} claim \
+             file(s)\n",
             shown(&dir),
             cleaned.beyond.len(),
             ranges(&cleaned.beyond),
-            cleaned.temporaries
+            cleaned.temporaries,
+            cleaned.claims
         )
     };
     emit(out, text.as_bytes())?;

@@ -6,14 +6,15 @@
 //! A claim is an exclusive advisory lock (`flock`, as the folder's lock in `lock`) on
 //! `.whitted-claims/NAME.claim`, NAME the frame's file name: the system releases it when
 //! the run ends however it ends (kill -9 included), so a dead run's claims are free for the
-//! next run to take. The claim files stay (removing a held one would let two runs lock two
-//! files of one name); they are empty.
+//! next run to take. The claim files stay while runs come and go (removing a held one
+//! would let two runs lock two files of one name); they are empty.
 //!
 //! A run takes a free claim at once (`try_claim`) and skips, for now, a frame another live
 //! run holds; once through its frames it comes back to those and waits for each claim
 //! (`claim`): the other run has finished the frame (then it is written, newer than this
 //! run's start, and recording what the manifest gives it: `done_elsewhere`), or has died
-//! (then this run renders it).
+//! (then this run renders it). `animate clean` removes the claim files no one holds
+//! (`remove_free`).
 
 use super::provenance::{self, Inspection};
 use crate::error::AnimError;
@@ -96,6 +97,45 @@ impl Claims {
     }
 }
 
+/// Removes the claim files in `dir`'s claims folder whose frame file name `ours` accepts,
+/// each only if no one holds it: locked first, removed while locked. Called by `clean`
+/// alone in the folder and holding its gate (`lock::lock_with`), when no run of the
+/// manifest can be between taking the folder and claiming a frame, so none can open a
+/// claim file that is then unlinked under it and lock it while a later run locks a new
+/// file of the same name. The folder goes too once empty. Returns how many files went.
+pub fn remove_free(dir: &Path, ours: impl Fn(&str) -> bool) -> std::io::Result<usize> {
+    let claims = dir.join(CLAIMS);
+    let entries = match std::fs::read_dir(&claims) {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => return Ok(0),
+        entries => entries?,
+    };
+    let mut removed = 0;
+    for entry in entries {
+        let entry = entry?;
+        let name = entry.file_name().to_string_lossy().into_owned();
+        if !name.strip_suffix(".claim").is_some_and(&ours) {
+            continue;
+        }
+        // Opened without creating: a file gone meanwhile is not made again.
+        let file = match OpenOptions::new().write(true).open(entry.path()) {
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => continue,
+            file => file?,
+        };
+        match file.try_lock() {
+            Ok(()) => match std::fs::remove_file(entry.path()) {
+                Ok(()) => removed += 1,
+                Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
+                Err(e) => return Err(e),
+            },
+            Err(TryLockError::WouldBlock) => {}
+            Err(TryLockError::Error(e)) => return Err(e),
+        }
+    }
+    // Still holding others' claims (or another manifest's): it stays.
+    let _ = std::fs::remove_dir(&claims);
+    Ok(removed)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -122,5 +162,32 @@ mod tests {
             .join(CLAIMS)
             .join("frame_0003.png.claim")
             .is_file());
+    }
+
+    #[test]
+    fn only_free_claims_of_the_manifest_are_removed() {
+        let dir = tempfile::tempdir().unwrap();
+        let claims = Claims::new(dir.path()).unwrap();
+        let frame = |n: u32| dir.path().join(format!("frame_{n:04}.png"));
+        let held = claims.try_claim(&frame(1)).unwrap().unwrap();
+        drop(claims.try_claim(&frame(2)).unwrap().unwrap());
+        drop(claims.try_claim(&frame(3)).unwrap().unwrap());
+        drop(
+            claims
+                .try_claim(&dir.path().join("other_0002.png"))
+                .unwrap(),
+        );
+        let ours = |name: &str| name.starts_with("frame_");
+        assert_eq!(remove_free(dir.path(), ours).unwrap(), 2);
+        let mut left: Vec<String> = std::fs::read_dir(dir.path().join(CLAIMS))
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        left.sort();
+        assert_eq!(left, ["frame_0001.png.claim", "other_0002.png.claim"]);
+        drop(held);
+        assert_eq!(remove_free(dir.path(), |_| true).unwrap(), 2);
+        assert!(!dir.path().join(CLAIMS).exists());
+        assert_eq!(remove_free(dir.path(), |_| true).unwrap(), 0);
     }
 }

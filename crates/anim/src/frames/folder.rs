@@ -5,11 +5,13 @@
 //!   lowered after they were rendered), which a `frame_%04d.png` glob would mix into a
 //!   video;
 //! - `temporaries`: hidden `.frame_0007.png.XXXXXX.tmp` files (and those of RAW records)
-//!   that a killed run left; a run holding the folder's lock (`lock`) removes them, since
-//!   no other run can be writing them;
-//! - `clean` (`animate clean`): removes both, and the records of removed RAW frames;
-//!   files past the end that are not this manifest's (`owner`) only when forced.
+//!   that a killed run left; a run alone in the folder removes them as it takes it
+//!   (`take`), before another run may join and write its own;
+//! - `clean` (`animate clean`): removes both, the records of removed RAW frames and the
+//!   claim files of the manifest's frames that no run holds (`claim`); files past the end
+//!   that are not this manifest's (`owner`) only when forced.
 
+use super::lock::FolderLock;
 use super::owner::{owner, Owner};
 use super::provenance::{raw_record_path, RAW_RECORDS};
 use crate::error::AnimError;
@@ -73,12 +75,44 @@ pub fn temporaries(anim: &Animation, dir: &Path) -> Vec<PathBuf> {
     found
 }
 
-/// Removes `paths`, and the RAW records of frames among them; returns how many files went.
+/// The claim files of `anim`'s frames in `dir`'s claims folder (held or not).
+pub fn claim_files(anim: &Animation, dir: &Path) -> usize {
+    let claims = std::fs::read_dir(dir.join(super::claim::CLAIMS));
+    (claims.into_iter().flatten().flatten())
+        .filter(|e| {
+            let name = e.file_name().to_string_lossy().into_owned();
+            (name.strip_suffix(".claim")).is_some_and(|f| frame_of(anim, f).is_some())
+        })
+        .count()
+}
+
+/// Takes `dir` (which exists) for a run of `anim`'s manifest (`lock::lock_with`). Alone
+/// in it, the run first removes the temporaries killed runs left, still holding the
+/// folder's gate: a run let in before that could be writing a temporary of its own, which
+/// the listing would take for a killed run's (one of the two runs then failed).
+pub(crate) fn take(anim: &Animation, dir: &Path) -> Result<FolderLock, AnimError> {
+    let clear = |alone: bool| match alone {
+        true => remove(&temporaries(anim, dir))
+            .map(|_| ())
+            .map_err(|source| AnimError::Folder {
+                dir: dir.to_path_buf(),
+                source,
+            }),
+        false => Ok(()),
+    };
+    super::lock::lock_with(dir, &anim.manifest.path, clear).map(|(held, ())| held)
+}
+
+/// Removes `paths`, and the RAW records of frames among them; returns how many files went
+/// (a file already gone is not an error, nor counted).
 pub(crate) fn remove(paths: &[PathBuf]) -> std::io::Result<usize> {
     let mut n = 0;
     for p in paths {
-        std::fs::remove_file(p)?;
-        n += 1;
+        match std::fs::remove_file(p) {
+            Ok(()) => n += 1,
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => continue,
+            Err(e) => return Err(e),
+        }
         // A removed frame's cost record goes with it (not counted: it is not a frame).
         let spent = super::cost::cost_path(p);
         if spent.is_file() {
@@ -100,6 +134,8 @@ pub struct Cleaned {
     pub beyond: Vec<u32>,
     /// Temporaries of killed runs removed.
     pub temporaries: usize,
+    /// Claim files of this manifest's frames removed (`claim::remove_free`).
+    pub claims: usize,
 }
 
 /// The files among `beyond(anim, dir)` that are not `anim`'s manifest's (another
@@ -116,44 +152,100 @@ pub fn not_ours(anim: &Animation, dir: &Path) -> Vec<(PathBuf, Owner)> {
 }
 
 /// Removes from `dir` the files of frames past the end of `anim`'s sequence (with their
-/// RAW records) and the temporaries of killed runs, under the folder's lock: refused
-/// while any other run writes into it (`AnimError::Busy`, `AnimError::InUse`), and when
-/// a file to remove is not this manifest's (`AnimError::NotOurs`) unless `force`.
+/// RAW records), the temporaries of killed runs and the claim files of the manifest's
+/// frames that no one holds, alone in the folder and holding its gate throughout (no run
+/// can join before it is done): refused while any other run writes into it
+/// (`AnimError::Busy`, `AnimError::InUse`), and when a file to remove is not this
+/// manifest's (`AnimError::NotOurs`) unless `force`.
 pub fn clean(anim: &Animation, dir: &Path, force: bool) -> Result<Cleaned, AnimError> {
-    let held = super::lock::lock(dir, &anim.manifest.path)?;
-    if !held.alone() {
-        return Err(AnimError::InUse {
-            dir: dir.to_path_buf(),
-        });
-    }
     let folder = |source| AnimError::Folder {
         dir: dir.to_path_buf(),
         source,
     };
-    if !force {
-        if let Some(refusal) = super::owner::refusal("removed", &not_ours(anim, dir)) {
-            return Err(refusal);
+    let gated = |alone: bool| {
+        if !alone {
+            return Err(AnimError::InUse {
+                dir: dir.to_path_buf(),
+            });
         }
-    }
-    let past = beyond(anim, dir);
-    let paths: Vec<PathBuf> = past.iter().map(|(_, p)| p.clone()).collect();
-    remove(&paths).map_err(folder)?;
-    let temps = temporaries(anim, dir);
-    remove(&temps).map_err(folder)?;
-    Ok(Cleaned {
-        beyond: past.into_iter().map(|(f, _)| f).collect(),
-        temporaries: temps.len(),
-    })
+        if !force {
+            if let Some(refusal) = super::owner::refusal("removed", &not_ours(anim, dir)) {
+                return Err(refusal);
+            }
+        }
+        let past = beyond(anim, dir);
+        let paths: Vec<PathBuf> = past.iter().map(|(_, p)| p.clone()).collect();
+        remove(&paths).map_err(folder)?;
+        let temps = remove(&temporaries(anim, dir)).map_err(folder)?;
+        let claims = super::claim::remove_free(dir, |name| frame_of(anim, name).is_some())
+            .map_err(folder)?;
+        Ok(Cleaned {
+            beyond: past.into_iter().map(|(f, _)| f).collect(),
+            temporaries: temps,
+            claims,
+        })
+    };
+    let (_held, cleaned) = super::lock::lock_with(dir, &anim.manifest.path, gated)?;
+    Ok(cleaned)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
+    const SCENE: &str = "8 6  0 1 6  0 1 0  0 0  1 0 0 1\n1.0  0 1 0   1 0.9 0.2 0.1   0.7 0.3 0 1 0 0\n5 10 5  1 1 1  0.9";
+
+    #[test]
+    fn a_lone_run_clears_temporaries_before_another_may_join() {
+        use notify::event::{AccessKind, AccessMode, EventKind, RemoveKind};
+        use notify::Watcher;
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("s.txt"), SCENE).unwrap();
+        let m = dir.path().join("m.toml");
+        std::fs::write(&m, "scene = \"s.txt\"\nframes = 4\n").unwrap();
+        let p = crate::project::Project::load(&m).unwrap();
+        let anim = Animation::new(&p).unwrap();
+        let frames = dir.path().join("frames");
+        std::fs::create_dir(&frames).unwrap();
+        let stale = frames.join(".frame_0002.png.Ab12Cd.tmp");
+        std::fs::write(&stale, "half").unwrap();
+        // The folder's events, in the order the system saw them.
+        let (tx, rx) = std::sync::mpsc::channel();
+        let mut watcher = notify::recommended_watcher(tx).unwrap();
+        watcher
+            .watch(&frames, notify::RecursiveMode::NonRecursive)
+            .unwrap();
+        let held = take(&anim, &frames).unwrap();
+        assert!(held.alone() && !stale.exists());
+        let gate = frames.join(super::super::lock::LOCK_FILE);
+        let (mut removed, mut released) = (None, None);
+        for k in 0.. {
+            // A bound on the wait for the events, not a measured time.
+            let event = rx.recv_timeout(std::time::Duration::from_secs(30));
+            let event = event.expect("the events came").unwrap();
+            let at = |path: &Path| event.paths.iter().any(|p| p == path);
+            match event.kind {
+                EventKind::Remove(RemoveKind::File | RemoveKind::Any) if at(&stale) => {
+                    removed = Some(k)
+                }
+                EventKind::Access(AccessKind::Close(AccessMode::Write)) if at(&gate) => {
+                    released.get_or_insert(k);
+                }
+                _ => {}
+            }
+            if removed.is_some() && released.is_some() {
+                break;
+            }
+        }
+        // Before, the gate was let go first: a run could join and have its temporary taken
+        // for a killed run's.
+        assert!(removed < released, "{removed:?} {released:?}");
+    }
+
     #[test]
     fn frame_names_under_a_pattern() {
         let dir = tempfile::tempdir().unwrap();
-        std::fs::write(dir.path().join("s.txt"), "8 6  0 1 6  0 1 0  0 0  1 0 0 1\n1.0  0 1 0   1 0.9 0.2 0.1   0.7 0.3 0 1 0 0\n5 10 5  1 1 1  0.9").unwrap();
+        std::fs::write(dir.path().join("s.txt"), SCENE).unwrap();
         let m = dir.path().join("m.toml");
         std::fs::write(
             &m,

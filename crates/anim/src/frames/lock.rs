@@ -16,9 +16,11 @@
 //! The look at the other manifests' locks and the taking of one's own happen under an
 //! exclusive lock on `.whitted-lock` (held for milliseconds), so two runs cannot both
 //! find the folder free. A run that finds itself alone (no other run of its manifest)
-//! is told so: only then may it remove the temporaries that killed runs left. The lock
-//! files stay (removing a held one would let a second run lock a new file). Taking the
-//! lock is also the check, before anything renders, that the folder can be written.
+//! is told so: only then may it remove the temporaries that killed runs left, and it does
+//! so still holding the gate (`lock_with`), since a run let in meanwhile would be writing
+//! temporaries of its own. The lock files stay (removing a held one would let a second
+//! run lock a new file). Taking the lock is also the check, before anything renders, that
+//! the folder can be written.
 
 use crate::error::AnimError;
 use sha2::{Digest, Sha256};
@@ -75,6 +77,18 @@ fn holder(mut file: &File) -> String {
 /// Takes the lock on `dir` (which exists) for a run of `manifest`; refuses, naming the
 /// holder, when a run of another manifest holds it.
 pub fn lock(dir: &Path, manifest: &Path) -> Result<FolderLock, AnimError> {
+    lock_with(dir, manifest, |_| Ok(())).map(|(held, ())| held)
+}
+
+/// `lock`, then `gated(alone)` before any other run may take the folder: the gate is
+/// held until it returns, so a run alone in the folder stays alone while it clears what
+/// killed runs left (a run that joined meanwhile could be writing what it removes). Its
+/// error is the lock's.
+pub fn lock_with<T>(
+    dir: &Path,
+    manifest: &Path,
+    gated: impl FnOnce(bool) -> Result<T, AnimError>,
+) -> Result<(FolderLock, T), AnimError> {
     let folder = |source| AnimError::Folder {
         dir: dir.to_path_buf(),
         source,
@@ -127,12 +141,14 @@ pub fn lock(dir: &Path, manifest: &Path) -> Result<FolderLock, AnimError> {
     file.set_len(0).map_err(folder)?;
     file.rewind().map_err(folder)?;
     file.write_all(text.as_bytes()).map_err(folder)?;
+    let value = gated(alone)?;
     drop(gate);
-    Ok(FolderLock {
+    let held = FolderLock {
         _file: file,
         alone,
         shared_with,
-    })
+    };
+    Ok((held, value))
 }
 
 #[cfg(test)]
@@ -157,5 +173,34 @@ mod tests {
         assert_eq!(e.exit_code(), 2);
         drop(first);
         lock(dir.path(), Path::new("/a/two.toml")).unwrap();
+    }
+
+    #[test]
+    fn what_a_lone_run_does_at_the_gate_no_run_can_join() {
+        let dir = tempfile::tempdir().unwrap();
+        let manifest = Path::new("/a/one.toml");
+        let gate_free = || {
+            open(&dir.path().join(LOCK_FILE))
+                .unwrap()
+                .try_lock()
+                .is_ok()
+        };
+        let (held, seen) = lock_with(dir.path(), manifest, |alone| {
+            // A run taking the folder now would first have to take the gate.
+            Ok((alone, gate_free()))
+        })
+        .unwrap();
+        assert_eq!(seen, (true, false));
+        assert!(gate_free());
+        // A run that joins sees it is not alone; an error at the gate is the lock's.
+        let (_shard, alone) = lock_with(dir.path(), manifest, Ok).unwrap();
+        assert!(!alone);
+        let refused = lock_with(dir.path(), manifest, |_| -> Result<(), AnimError> {
+            Err(AnimError::InUse {
+                dir: dir.path().to_path_buf(),
+            })
+        });
+        assert!(matches!(refused, Err(AnimError::InUse { .. })));
+        drop(held);
     }
 }

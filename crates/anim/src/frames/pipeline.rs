@@ -1,8 +1,8 @@
 //! Producing frames: rendered in parallel with rayon, then either written into a folder
 //! or streamed in frame order, every step reported as an `Event`.
 //!
-//! - Folder: the run holds the folder's lock (`lock`) and clears the temporaries killed
-//!   runs left (`folder`); frames render in windows of four per thread; each is encoded
+//! - Folder: the run holds the folder's lock (`lock`) and, alone in it, clears the
+//!   temporaries killed runs left (`folder::take`); frames render in windows of four per thread; each is encoded
 //!   with its provenance (`provenance`), written to a temporary name in the folder, then
 //!   renamed, so a file under a final name is always complete. Each frame is claimed
 //!   first (`claim`): runs of the same manifest in one folder render each frame once, a
@@ -22,7 +22,6 @@ use super::claim::Claims;
 use super::cost::{self, Meter};
 use super::events::{Event, Reporter};
 use super::folder;
-use super::lock::lock;
 use super::owner::{self, Owner};
 use super::policy::Policy;
 use super::provenance::{self, raw_record_path, Inspection};
@@ -196,15 +195,7 @@ pub(crate) fn render_to_folder(
         dir: dir.to_path_buf(),
         source,
     })?;
-    let lock = lock(dir, &anim.manifest.path)?;
-    if lock.alone() {
-        // No other run of this manifest is writing: every temporary is a killed run's.
-        let folder = |source| AnimError::Folder {
-            dir: dir.to_path_buf(),
-            source,
-        };
-        folder::remove(&folder::temporaries(anim, dir)).map_err(folder)?;
-    }
+    let lock = folder::take(anim, dir)?;
     // Each file is inspected once, in parallel, for both answers.
     let ours = anim.manifest.path.file_name().map(|n| n.to_string_lossy());
     let seen: Vec<Found> = frames

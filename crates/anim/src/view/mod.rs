@@ -10,10 +10,13 @@
 //! - `assets/`: the page, its script and style, compiled into the binary (no network).
 //!
 //! The server is `tiny_http` (small, synchronous, no async runtime to carry for a
-//! loopback page). The accepting thread hands requests to `WORKERS` threads through a
-//! queue of `QUEUE` places, and a full queue is answered 503 at once; long polls have
-//! their own threads, at most `WAITERS`. Memory is so bounded whatever the number of
-//! requests. The loop ends when `stop` holds a signal number.
+//! loopback page), in a copy whose connection pool is patched (`vendor/README.md`: a
+//! burst of connections left some unread until another closed). `tiny_http` reads each
+//! open connection on a thread of its own; this loop hands their requests to `WORKERS`
+//! threads through a queue of `QUEUE` places, and a full queue is answered 503 at once;
+//! long polls have their own threads, at most `WAITERS`. The work and memory spent on
+//! requests are so bounded whatever their number. The loop ends when `stop` holds a
+//! signal number.
 
 pub mod frames;
 pub mod live;
