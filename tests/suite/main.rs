@@ -83,3 +83,4 @@ mod tev_stream;
 mod view_browser;
 mod view_server;
 mod wide_frames;
+mod camera_tracks;

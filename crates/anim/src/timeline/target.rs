@@ -10,6 +10,7 @@
 //!                               #   kd kr kt ior bump
 //! target = "light 1 position"   # light N position|color|intensity
 //! target = "fog distance"       # no N
+//! target = "camera position"    # camera position|look_at|fov (`camera`)
 //! target = "box 2 max"          # the extension's records and names: `ext`, `subject`
 //! ```
 
@@ -74,6 +75,12 @@ pub enum Field {
     FogDistance,
     /// A field of an extension record (`box 1 max`, `spot 1 falloff`, `focus distance`).
     Ext(ExtField),
+    /// The camera's eye (`camera position`).
+    CameraPosition,
+    /// The point the camera looks at (`camera look_at`).
+    CameraLookAt,
+    /// The vertical field of view in degrees, 0 < fov < 180 (`camera fov`).
+    CameraFov,
 }
 
 /// A resolved target: the field and, for objects and lights, the index into
@@ -213,10 +220,11 @@ impl Target {
         let words: Vec<&str> = text.split_whitespace().collect();
         let usage = || {
             format!(
-                "expected `KIND N FIELD` (e.g. \"sphere 1 center\"), `NAME FIELD`, \"fog distance\" or \"focus distance\", found {text:?}"
+                "expected `KIND N FIELD` (e.g. \"sphere 1 center\"), `NAME FIELD`, \"fog distance\", \"focus distance\" or \"camera position\", found {text:?}"
             )
         };
         let (subject, what, field) = match words[..] {
+            ["camera", field] => return camera::target(field),
             ["fog", field] => (Subject::Fog, "fog".to_string(), field),
             ["focus", field] => {
                 if scene.ext.focus.is_none() {
@@ -251,6 +259,7 @@ impl Target {
             | Field::Intensity
             | Field::FogDistance => Kind::Number,
             Field::Ext(f) => f.kind,
+            f if camera::is_camera(f) => camera::kind(f),
             _ => Kind::Vector,
         }
     }
@@ -280,7 +289,14 @@ impl Target {
         ];
         match self.field {
             Field::Ext(f) => POINTS.contains(&f.name),
-            f => matches!(f, Field::Center | Field::Point | Field::Position),
+            f => matches!(
+                f,
+                Field::Center
+                    | Field::Point
+                    | Field::Position
+                    | Field::CameraPosition
+                    | Field::CameraLookAt
+            ),
         }
     }
 
@@ -324,6 +340,7 @@ impl Target {
             }
         };
         match self.field {
+            f if camera::is_camera(f) => camera::check(f, v),
             Field::Center | Field::Point | Field::Position if !v.is_finite() => {
                 Err("coordinates must be finite".into())
             }
@@ -354,6 +371,7 @@ impl Target {
     }
 }
 
+pub(crate) mod camera;
 pub(crate) mod ext;
 mod subject;
 mod value;

@@ -23,6 +23,7 @@ impl Target {
         });
         match (self.field, spec) {
             (Field::Ext(f), _) => super::ext::read(&scene.ext, &f),
+            (f, _) if super::camera::is_camera(f) => super::camera::read(f, scene),
             (Field::Center, Some(ShapeSpec::Sphere { center, .. })) => *center,
             (Field::Radius, Some(ShapeSpec::Sphere { radius, .. }))
             | (Field::Radius, Some(ShapeSpec::Cylinder { radius, .. })) => num(*radius),
@@ -52,6 +53,9 @@ impl Target {
     /// Puts `v` into `scene` (checked with `check` beforehand), rebuilding the shape from
     /// its record when the field is geometric.
     pub fn apply(&self, scene: &mut Scene, v: DVec3) {
+        if super::camera::is_camera(self.field) {
+            return super::camera::put(self.field, scene, v);
+        }
         self.put(scene, v);
         // An extension object's record says what its object says, as the file would.
         if let Some(ShapeSpec::Ext { item, .. }) = scene.specs.get(self.index) {
@@ -109,6 +113,9 @@ impl Target {
             Field::LightColor => scene.lights[i].color = v,
             Field::Intensity => scene.lights[i].intensity = x,
             Field::FogDistance => scene.fog = fog_with_distance(scene.fog, x),
+            Field::CameraPosition | Field::CameraLookAt | Field::CameraFov => {
+                super::camera::put(self.field, scene, v)
+            }
             Field::Ext(f) => {
                 super::ext::write(&mut scene.ext, &f, v);
                 if let super::Record::Object(item) = f.record {
