@@ -71,12 +71,20 @@ fn a_look_at_track_and_a_fov_track_are_the_table_values_at_that_frame() {
     let dir = folder();
     let d = dir.path();
     let m = tracked("", "camera look_at", "[0.0, 1.0, 0.0]", "[2.0, 1.0, 0.0]");
-    let by_hand = frame(d, "look", &still("scene.txt", "look_at = [1.0, 1.0, 0.0]"), 0);
+    let by_hand = frame(
+        d,
+        "look",
+        &still("scene.txt", "look_at = [1.0, 1.0, 0.0]"),
+        0,
+    );
     assert!(frame(d, "look_track", &m, 2) == by_hand);
     let m = tracked("", "camera fov", "30.0", "50.0");
     let by_hand = frame(d, "fov", &still("scene.txt", "fov = 40.0"), 0);
     assert!(frame(d, "fov_track", &m, 2) == by_hand);
-    assert!(frame(d, "fov_track0", &m, 0) != by_hand, "the fov changed nothing");
+    assert!(
+        frame(d, "fov_track0", &m, 0) != by_hand,
+        "the fov changed nothing"
+    );
 }
 
 #[test]
@@ -97,15 +105,30 @@ fn a_track_beside_what_the_camera_table_gives_is_refused_at_its_line() {
     let circle = "path = \"circle\"\ncenter = [0.0, 1.0, 0.0]\nradius = 8.0\nheight = 3.0";
     let cases = [
         (
-            tracked(circle, "camera position", "[0.0, 3.0, 8.0]", "[8.0, 3.0, 0.0]"),
+            tracked(
+                circle,
+                "camera position",
+                "[0.0, 3.0, 8.0]",
+                "[8.0, 3.0, 0.0]",
+            ),
             "the camera's position is the `[camera] path = \"circle\"`'s",
         ),
         (
-            tracked(circle, "camera look_at", "[0.0, 1.0, 0.0]", "[2.0, 1.0, 0.0]"),
+            tracked(
+                circle,
+                "camera look_at",
+                "[0.0, 1.0, 0.0]",
+                "[2.0, 1.0, 0.0]",
+            ),
             "looks at its centre",
         ),
         (
-            tracked("look_at = \"sphere 1\"", "camera look_at", "[0.0, 1.0, 0.0]", "[1.0, 1.0, 0.0]"),
+            tracked(
+                "look_at = \"sphere 1\"",
+                "camera look_at",
+                "[0.0, 1.0, 0.0]",
+                "[1.0, 1.0, 0.0]",
+            ),
             "`[camera] look_at` already says",
         ),
         (

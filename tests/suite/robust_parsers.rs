@@ -166,6 +166,8 @@ fn is_tame(scene: &Scene, limit: f64, tiny: f64) -> bool {
             &(Texture::Checker(a, b) | Texture::Wood(a, b) | Texture::Marble(a, b)) => v(a) && v(b),
             &Texture::Perlin(a, b, c) => v(a) && v(b) && v(c),
             Texture::Image(i) => s(i.size),
+            // Only a track scales a texture; a parsed scene has none.
+            &Texture::Scaled(_, k) => s(k),
         };
         let m = o.material;
         let bump = match m.bump {

@@ -199,7 +199,13 @@ impl<'p> Animation<'p> {
     fn camera(&self, state: &Snapshot) -> Option<Camera> {
         let native = (self.timeline.base.width, self.timeline.base.height);
         let size = (self.width, self.height);
-        Camera::framed(state.eye, state.look_at, native, size, &self.lens_of(&state.scene))
+        Camera::framed(
+            state.eye,
+            state.look_at,
+            native,
+            size,
+            &self.lens_of(&state.scene),
+        )
     }
 
     /// The warning for frames whose pixels are not square (the report's view plane at

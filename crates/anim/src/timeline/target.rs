@@ -7,7 +7,7 @@
 //! target = "plane 1 normal"     # plane N point|normal
 //! target = "cylinder 2 radius"  # cylinder N axis|point|radius
 //! target = "sphere 3 color"     # any object: color (texture 1), color1..3 (texture 2),
-//!                               #   kd kr kt ior bump
+//!                               #   kd kr kt ior bump texture_scale
 //! target = "light 1 position"   # light N position|color|intensity
 //! target = "fog distance"       # no N
 //! target = "camera position"    # camera position|look_at|fov (`camera`)
@@ -65,6 +65,8 @@ pub enum Field {
     Ior,
     /// The bump amplitude ε of an object with bump mapping.
     Bump,
+    /// The scale of a procedural texture's pattern, > 0 (`sphere 1 texture_scale`).
+    TextureScale,
     /// A light's position.
     Position,
     /// A light's colour, RGB in 0..1 (`light N color`).
@@ -94,7 +96,7 @@ pub struct Target {
 }
 
 /// Object fields any kind of object has.
-const MATERIAL_FIELDS: [(&str, Field); 9] = [
+const MATERIAL_FIELDS: [(&str, Field); 10] = [
     ("color", Field::Color),
     ("color1", Field::Color1),
     ("color2", Field::Color2),
@@ -104,6 +106,7 @@ const MATERIAL_FIELDS: [(&str, Field); 9] = [
     ("kt", Field::Kt),
     ("ior", Field::Ior),
     ("bump", Field::Bump),
+    ("texture_scale", Field::TextureScale),
 ];
 
 fn fields_of(kind: &str) -> Option<Vec<(&'static str, Field)>> {
@@ -256,6 +259,7 @@ impl Target {
             | Field::Kt
             | Field::Ior
             | Field::Bump
+            | Field::TextureScale
             | Field::Intensity
             | Field::FogDistance => Kind::Number,
             Field::Ext(f) => f.kind,
@@ -304,7 +308,7 @@ impl Target {
     /// `color1..3` on a single colour, `color3` where the texture has no third colour,
     /// `bump` without bump mapping, `fog distance` without fog.
     fn applicable(&self, scene: &Scene) -> Result<(), String> {
-        let texture = || &scene.objects[self.index].texture;
+        let texture = || scene.objects[self.index].texture.pattern();
         let why = match self.field {
             Field::Color | Field::Color1 | Field::Color2 | Field::Color3
                 if matches!(texture(), Texture::Image(_)) =>
@@ -319,6 +323,9 @@ impl Target {
             }
             Field::Color3 if !matches!(texture(), Texture::Perlin(..)) => {
                 "only a Perlin texture (type 2) uses its third colour"
+            }
+            Field::TextureScale if !texture().is_procedural() => {
+                "its texture has no pattern to scale (only a procedural texture, type 2, has)"
             }
             Field::Bump if scene.objects[self.index].material.bump == Bump::None => {
                 "it has no bump mapping (BumpType 0)"
@@ -360,6 +367,9 @@ impl Target {
                 Err("a refraction index must be greater than 0".into())
             }
             Field::Bump if !x.is_finite() => Err("the bump ε must be finite".into()),
+            Field::TextureScale if !(x.is_finite() && x > 0.0) => {
+                Err("a texture's scale must be greater than 0".into())
+            }
             Field::Intensity if !(0.0..=MAX_INTENSITY).contains(&x) => Err(format!(
                 "a light's intensity must be from 0 to {MAX_INTENSITY}"
             )),

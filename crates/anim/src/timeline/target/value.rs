@@ -38,6 +38,7 @@ impl Target {
             (Field::Kr, _) => num(obj.map_or(0.0, |o| o.material.kr)),
             (Field::Kt, _) => num(obj.map_or(0.0, |o| o.material.kt)),
             (Field::Ior, _) => num(obj.map_or(1.0, |o| o.material.ior)),
+            (Field::TextureScale, _) => num(obj.map_or(1.0, |o| o.texture.scale())),
             (Field::Bump, _) => num(match obj.map(|o| o.material.bump) {
                 Some(Bump::Uniform(e) | Bump::Water(e)) => e,
                 _ => 0.0,
@@ -97,6 +98,10 @@ impl Target {
             Field::Color | Field::Color1 | Field::Color2 | Field::Color3 => {
                 set_color(&mut scene.objects[i].texture, self.field, v)
             }
+            Field::TextureScale => {
+                let texture = &mut scene.objects[i].texture;
+                *texture = std::mem::replace(texture, Texture::Uniform(DVec3::ZERO)).scaled(x)
+            }
             Field::Kd => scene.objects[i].material.kd = x,
             Field::Kr => scene.objects[i].material.kr = x,
             Field::Kt => scene.objects[i].material.kt = x,
@@ -146,16 +151,16 @@ fn fog_with_distance(fog: Fog, d: f64) -> Fog {
 
 /// A texture's first, second and third colours (zero where it has none).
 fn colors(t: &Texture) -> (DVec3, DVec3, DVec3) {
-    match *t {
+    match *t.pattern() {
         Texture::Uniform(c) => (c, DVec3::ZERO, DVec3::ZERO),
         Texture::Checker(a, b) | Texture::Wood(a, b) | Texture::Marble(a, b) => (a, b, DVec3::ZERO),
         Texture::Perlin(a, b, c) => (a, b, c),
-        Texture::Image(_) => (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO),
+        Texture::Image(_) | Texture::Scaled(..) => (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO),
     }
 }
 
 fn set_color(t: &mut Texture, field: Field, v: DVec3) {
-    match (t, field) {
+    match (t.pattern_mut(), field) {
         (Texture::Uniform(c), Field::Color) => *c = v,
         (
             Texture::Checker(c, _)
