@@ -57,6 +57,7 @@ mod mesh_files;
 mod mesh_povray;
 mod messages;
 mod newcomer;
+mod newcomer_frictions;
 mod nff;
 mod nff_povray;
 mod openjd_job;

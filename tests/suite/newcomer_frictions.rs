@@ -1,0 +1,126 @@
+//! A newcomer's small frictions, through `animate`: `-o still.png` is refused instead of
+//! making a folder of that name; `check --junit` into a missing folder (or `--html` under
+//! a file) is refused before anything renders; `--html` into a folder of an earlier
+//! report leaves only this run's images there.
+
+use crate::support;
+
+use std::path::Path;
+use support::*;
+
+const CHECK: &str = "\n[check]\nframes = [0, 5, 9]\nreferences = \"refs\"\n";
+
+#[test]
+fn an_output_folder_named_like_an_image_is_refused() {
+    let (dir, manifest) = project(&circle_manifest(""));
+    let still = dir.path().join("still.png");
+    let out = animate()
+        .arg(&manifest)
+        .arg("-o")
+        .arg(&still)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("still.png is the name of an image") && err.contains("--frames N -o DIR"),
+        "{err}"
+    );
+    assert!(!still.exists(), "a folder named still.png was made");
+    // A folder that already has such a name is a folder: taken as before.
+    std::fs::create_dir(&still).unwrap();
+    let out = animate()
+        .arg(&manifest)
+        .args(["--frames", "0", "-q", "-o"])
+        .arg(&still)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(still.join("frame_0000.png").is_file());
+}
+
+/// The files of `dir` (none when it does not exist).
+fn names(dir: &Path) -> Vec<String> {
+    match dir.exists() {
+        true => entries(dir),
+        false => Vec::new(),
+    }
+}
+
+#[test]
+fn report_paths_are_checked_before_the_render() {
+    let (dir, manifest) = blessed(CHECK);
+    let d = dir.path();
+    edit_reference(d, 5, magenta_block);
+    let report = d.join("report");
+    let report_arg = report.to_str().unwrap();
+    // Frame 5 fails, so a render would write its images into the report folder.
+    let junit = d.join("no/such/folder/check.xml");
+    let args = ["--report", report_arg, "--junit", junit.to_str().unwrap()];
+    let (code, _, err) = check(&manifest, &args);
+    assert_eq!(code, Some(2), "{err}");
+    assert!(
+        err.contains("no/such/folder/check.xml") && err.contains("does not exist"),
+        "{err}"
+    );
+    assert_eq!(
+        names(&report),
+        Vec::<String>::new(),
+        "the frames were rendered first"
+    );
+    // A page whose folder would be made under a file: refused the same way.
+    std::fs::write(d.join("a-file"), "x").unwrap();
+    let html = d.join("a-file/page");
+    let (code, _, err) = check(
+        &manifest,
+        &["--report", report_arg, "--html", html.to_str().unwrap()],
+    );
+    assert_eq!(code, Some(2), "{err}");
+    assert!(err.contains("is a file"), "{err}");
+    assert_eq!(names(&report), Vec::<String>::new());
+    // A page folder that does not exist yet is made, after the render, as before.
+    let page = d.join("new/deeper/page");
+    let (code, _, err) = check(&manifest, &["--html", page.to_str().unwrap()]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(page.join("index.html").is_file());
+}
+
+#[test]
+fn a_page_keeps_only_the_images_of_its_own_run() {
+    let (dir, manifest) = blessed(CHECK);
+    let d = dir.path();
+    let page = d.join("page");
+    let page_arg = page.to_str().unwrap();
+    edit_reference(d, 5, magenta_block);
+    let (code, _, err) = check(&manifest, &["--html", page_arg]);
+    assert_eq!(code, Some(1), "{err}");
+    assert!(names(&page).contains(&"frame_0005.diff.png".to_string()));
+    // Blessed again, frame 9's reference edited: frame 5 passes now, 9 fails.
+    animate().arg("bless").arg(&manifest).assert().success();
+    edit_reference(d, 9, magenta_block);
+    let (code, _, err) = check(&manifest, &["--html", page_arg]);
+    assert_eq!(code, Some(1), "{err}");
+    let files = names(&page);
+    assert!(
+        files.contains(&"frame_0009.diff.png".to_string()),
+        "{files:?}"
+    );
+    assert!(
+        !files.iter().any(|f| f.starts_with("frame_0005")),
+        "{files:?}"
+    );
+    // Every file but the page itself is named by the page.
+    let html = std::fs::read_to_string(page.join("index.html")).unwrap();
+    for f in files.iter().filter(|f| *f != "index.html") {
+        assert!(html.contains(&format!("\"{f}\"")), "{f} is not on the page");
+    }
+    // A passing run leaves the page alone in its folder.
+    animate().arg("bless").arg(&manifest).assert().success();
+    let (code, _, err) = check(&manifest, &["--html", page_arg]);
+    assert_eq!(code, Some(0), "{err}");
+    assert_eq!(names(&page), ["index.html"]);
+}
