@@ -124,3 +124,49 @@ fn a_page_keeps_only_the_images_of_its_own_run() {
     assert_eq!(code, Some(0), "{err}");
     assert_eq!(names(&page), ["index.html"]);
 }
+
+/// `estimate`'s sample size: the `N bytes encoded` of its first line.
+fn estimated_bytes(manifest: &Path) -> u64 {
+    let out = stdout_ok(animate().arg("estimate").arg(manifest).output().unwrap());
+    let text = String::from_utf8(out).unwrap();
+    let first = text.lines().next().unwrap();
+    let before = first.split(" bytes encoded").next().unwrap();
+    before
+        .rsplit(' ')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap_or_else(|_| panic!("{first}"))
+}
+
+#[test]
+fn estimate_times_the_frame_as_the_run_writes_it() {
+    // Ten passes in float EXR: the file is several times the beauty; the estimate's
+    // timed frame must be that file (less its provenance header), not the beauty alone.
+    let passes = "format = \"exr\"\npasses = [\"depth\", \"position\", \"normal\", \"albedo\", \
+                  \"ambient\", \"diffuse\", \"specular\", \"reflection\", \"transmission\", \"fog\"]\n";
+    let (dir, manifest) = project(&circle_manifest("").replace("format = \"png\"\n", passes));
+    let d = dir.path();
+    let estimated = estimated_bytes(&manifest);
+    animate()
+        .arg(&manifest)
+        .args(["--frames", "0", "-q"])
+        .assert()
+        .success();
+    let written = std::fs::metadata(d.join("frames/frame_0000.exr"))
+        .unwrap()
+        .len();
+    // The provenance header is a few kilobytes at most; the frames of a circle differ a
+    // little in how they compress.
+    let diff = written.abs_diff(estimated);
+    assert!(
+        diff < written / 5,
+        "estimated {estimated} bytes, the frame has {written}"
+    );
+    // The beauty alone would be far smaller than the frame with its passes.
+    let beauty = project(&circle_manifest("").replace("format = \"png\"\n", "format = \"exr\"\n"));
+    assert!(
+        estimated_bytes(&beauty.1) * 3 < estimated,
+        "the passes were not encoded"
+    );
+}

@@ -5,8 +5,10 @@
 
 use super::Animation;
 use crate::error::AnimError;
+use whitted::output::{encode_layers, encode_with};
 use whitted::passes::record::PixelSum;
 use whitted::render::estimate;
+use whitted::trace::RayCount;
 
 /// The memory frames in flight may take (pixels and their encoded copy): 1 GiB.
 pub const FRAME_MEMORY: usize = 1 << 30;
@@ -49,13 +51,29 @@ impl<'p> Animation<'p> {
     pub fn predict_seconds(&self, frame: u32, frames: usize) -> Result<f64, AnimError> {
         let small = self.scaled(estimate::SAMPLE_DIVISOR, None);
         let start = std::time::Instant::now();
-        small.draw(frame)?;
+        small.render_encoded(frame)?;
         let took = start.elapsed().as_secs_f64();
         Ok(estimate::predict(
             self.camera_rays(frames),
             small.camera_rays(1),
             took,
         ))
+    }
+
+    /// Draws frame `frame` as a run makes it (an EXR's layers with its passes) and
+    /// encodes it in memory, as what a frame costs is timed: its rays and its bytes.
+    pub fn render_encoded(&self, frame: u32) -> Result<(RayCount, usize), AnimError> {
+        let format = self.format();
+        let mut bytes = Vec::new();
+        let (encoded, rays) = if format.is_layered() {
+            let (layers, rays) = self.render_layers(frame, format.passes())?;
+            (encode_layers(layers, format, &[], &mut bytes), rays)
+        } else {
+            let (image, rays) = self.render(frame)?;
+            (encode_with(&image, format, &[], &mut bytes), rays)
+        };
+        encoded.map_err(|source| AnimError::Write { frame, source })?;
+        Ok((rays, bytes.len()))
     }
 
     /// Past `estimate::ENORMOUS` camera rays for `frames`: the warning, with the time a
