@@ -170,3 +170,32 @@ fn estimate_times_the_frame_as_the_run_writes_it() {
         "the passes were not encoded"
     );
 }
+
+#[test]
+fn the_enormous_render_warning_counts_only_the_frames_to_render() {
+    // 64×48 at 16×16 samples: 786,432 camera rays a frame, so 342 frames are past the
+    // warning's 2^28 and one frame is far below it.
+    let manifest = "scene = \"scene.txt\"\nframes = 342\n[render]\nsamples = 16\n\
+                    [output]\ndir = \"frames\"\n";
+    let (dir, path) = project(manifest);
+    let frames = dir.path().join("frames");
+    animate()
+        .arg(&path)
+        .args(["--frames", "0", "-q"])
+        .assert()
+        .success();
+    // The camera holds still and nothing is tracked: every frame is frame 0's picture,
+    // recorded with the same digest, so copies of it are up to date (all but the last).
+    let first = frames.join("frame_0000.png");
+    for f in 1..341 {
+        std::fs::hard_link(&first, frames.join(format!("frame_{f:04}.png"))).unwrap();
+    }
+    let out = animate().arg(&path).arg("--resume").output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{err}");
+    assert!(err.contains("1 frame rendered, 341 up to date"), "{err}");
+    assert!(
+        !err.contains("warning"),
+        "a warning for frames that are done: {err}"
+    );
+}

@@ -79,19 +79,24 @@ impl<'p> Animation<'p> {
     /// Past `estimate::ENORMOUS` camera rays for `frames`: the warning, with the time a
     /// 1/`SAMPLE_DIVISOR` sample of the first frame predicts on the current pool.
     pub fn enormous(&self, frames: &[u32]) -> Option<estimate::Enormous> {
-        let rays = self.camera_rays(frames.len());
-        let &first = frames.first()?;
+        self.enormous_of(frames.len(), *frames.first()?)
+    }
+
+    /// `enormous` for `count` frames, timing frame `first` (a run warns once it knows
+    /// which frames it will render: not those `--resume` finds up to date).
+    pub fn enormous_of(&self, count: usize, first: u32) -> Option<estimate::Enormous> {
+        let rays = self.camera_rays(count);
         if rays <= estimate::ENORMOUS {
             return None;
         }
         let pixels = (u64::from(self.width) * u64::from(self.height)).max(1);
         Some(estimate::Enormous {
             rays,
-            frames: Some(frames.len()),
+            frames: Some(count),
             width: self.width,
             height: self.height,
             per_pixel: self.camera_rays(1) / pixels,
-            seconds: self.predict_seconds(first, frames.len()).ok(),
+            seconds: self.predict_seconds(first, count).ok(),
             threads: rayon::current_num_threads(),
         })
     }
