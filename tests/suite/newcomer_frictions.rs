@@ -199,3 +199,47 @@ fn the_enormous_render_warning_counts_only_the_frames_to_render() {
         "a warning for frames that are done: {err}"
     );
 }
+
+#[test]
+fn a_job_takes_the_codec_options_encode_takes() {
+    let (_dir, manifest) = project(&circle_manifest(""));
+    let job = |args: &[&str]| {
+        animate()
+            .arg("job")
+            .arg(&manifest)
+            .args(["--openjd", "--quiet"])
+            .args(args)
+            .output()
+            .unwrap()
+    };
+    let codec = [
+        "--codec",
+        "libx265",
+        "--crf",
+        "28",
+        "--pix-fmt",
+        "yuv420p10le",
+    ];
+    let t: serde_json::Value = serde_json::from_slice(&stdout_ok(job(&codec))).unwrap();
+    let args = t["steps"][1]["script"]["actions"]["onRun"]["args"].to_string();
+    let want = r#"["encode","{{Param.Manifest}}","--dir","{{Param.OutDir}}","-o","{{Param.Video}}","--force","--quiet","--codec","libx265","--crf","28","--pix-fmt","yuv420p10le"]"#;
+    assert_eq!(args, want);
+    // A job of some frames has no video step to give them to; braces would be read as
+    // the template's expressions.
+    for (args, why) in [
+        (
+            &["--frames", "0-5", "--crf", "20"][..],
+            "--crf applies to the job's video step",
+        ),
+        (
+            &["--codec", "{{Param.X}}"][..],
+            "cannot go into a job template",
+        ),
+    ] {
+        let out = job(args);
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{err}");
+        assert!(err.contains(why), "{why:?} not in {err}");
+        assert!(out.stdout.is_empty());
+    }
+}
