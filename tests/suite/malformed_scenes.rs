@@ -357,8 +357,8 @@ fn cases() -> Vec<Case> {
                 "0 20",
                 "2 0 0 1",
                 SPHERE,
-                "1.0 0.0 2.0 9.0 2 2 0.5 0.5 0.5",
-                "@",
+                "1.0 0.0 2.0 9.0 2 2 0.5 0.5 0.5@",
+                "",
             ],
             "sphere 2 of 2, texture, field C2.r",
             "found the end of the file",
@@ -371,7 +371,7 @@ fn cases() -> Vec<Case> {
                 "0 1 0",
                 "0 20",
                 "1 0 0 1",
-                "1 0 1   # the centre is cut short\n   @",
+                "1 0 1@   # the centre is cut short\n   ",
             ],
             "sphere 1 of 1, field Cz",
             "found the end of the file",
@@ -379,7 +379,8 @@ fn cases() -> Vec<Case> {
         case(
             "too few lights",
             &[
-                "40 30", "0 2 10", "0 1 0", "0 20", "1 1 1 2", SPHERE, PLANE, CYLINDER, LIGHT, "@",
+                "40 30", "0 2 10", "0 1 0", "0 20", "1 1 1 2", SPHERE, PLANE, CYLINDER,
+                "5 10 5  1 1 1  1@", "",
             ],
             "light 2 of 2, field Lx",
             "found the end of the file",
@@ -450,6 +451,47 @@ fn cases() -> Vec<Case> {
             context: "byte that cannot be read",
             message: "not UTF-8",
         },
+        // A value missing from a record's line: at the end of that line, however far on
+        // the error surfaces (in the header, the next record, two records on).
+        case(
+            "a camera position short of z",
+            &["40 30", "0 2@", "0 1 0", "0 20", "0 0 0 0"],
+            "camera position, field z",
+            "z is missing at the end of this line: the camera position has 2 values here, so reading on took '0' from line 3 for it (and then failed at 4:3: expected 0 (none), 1, 2 or 3 for FogType, found '20')",
+        ),
+        case(
+            "a sphere short of its BumpValue",
+            &[
+                "40 30", "0 2 10", "0 1 0", "0 20", "2 0 0 1", "1 0 1 0   1 1 0 0   0.7 0.3 0 1 0@",
+                SPHERE, LIGHT,
+            ],
+            "sphere 1 of 2, material, field BumpValue",
+            "BumpValue is missing at the end of this line: the sphere 1 of 2 has 13 values here, so reading on took '1' from line 7",
+        ),
+        case(
+            "a cylinder short of a value, failing two lines on",
+            &[
+                "40 30", "0 2 10", "0 1 0", "0 20", "0 0 1 2",
+                "0 1 0  3 0 -2  0.5   1 0 1 0   0.8 0 0 1 0@", LIGHT, "-6 8 4  0.6 0.6 0.8  0.6",
+            ],
+            "cylinder 1 of 1, material, field BumpValue",
+            "reading on took '5' from line 7 for it (and then failed at 8:1: Intensity must be from 0 to 1000, found '-6')",
+        ),
+        case(
+            "records laid out otherwise keep the error at its token",
+            &["40 30 0 2 10 0 1 0", "1 @-5", "0 0 0 0"],
+            "fog, field FogDistance",
+            "FogDistance must be greater than 0 with fog, found '-5'",
+        ),
+        case(
+            "a record written over two lines is not a missing value",
+            &[
+                "40 30", "0 2 10", "0 1 0", "0 20", "2 0 0 1", "1 0 1 0   1 1 0 0",
+                "0.7 0.3 0 1 0 0", "@-1 0 1 0   1 1 0 0   0.7 0.3 0 1 0 0", LIGHT,
+            ],
+            "sphere 2 of 2, field Radius",
+            "Radius must be greater than 0, found '-1'",
+        ),
         case(
             "an empty file",
             &["@"],

@@ -97,8 +97,8 @@ fn char_at(src: &str, line: usize, column: usize) -> Option<char> {
     src.split('\n').nth(line - 1)?.chars().nth(column - 1)
 }
 
-/// A syntax error is located inside `src`, on a token's first character or at the end,
-/// and its message starts with `name:line:column:` and says where in the structure.
+/// A syntax error is located inside `src`, on a token's first character, just past a
+/// token's last (the end of a line where a value is missing) or at the end, and its message starts with `name:line:column:` and says where in the structure.
 fn check_located(src: &str, name: &str, err: &SceneError) -> Result<(), String> {
     let shown = err.to_string();
     let SceneError::Syntax {
@@ -129,8 +129,11 @@ fn check_located(src: &str, name: &str, err: &SceneError) -> Result<(), String> 
     if (line, column) == end_position(src) {
         return Ok(());
     }
+    let token = |c: Option<char>| c.is_some_and(|c| !c.is_whitespace() && c != '#');
+    let after = column > 1 && token(char_at(src, line, column - 1));
     match char_at(src, line, column) {
         Some(c) if !c.is_whitespace() && c != '#' => Ok(()),
+        _ if after && src.split('\n').nth(line - 1).is_some() => Ok(()),
         Some(c) => Err(format!(
             "the error points at {c:?}, not at the start of a token: {shown}"
         )),
@@ -166,6 +169,8 @@ fn is_tame(scene: &Scene, limit: f64, tiny: f64) -> bool {
             &(Texture::Checker(a, b) | Texture::Wood(a, b) | Texture::Marble(a, b)) => v(a) && v(b),
             &Texture::Perlin(a, b, c) => v(a) && v(b) && v(c),
             Texture::Image(i) => s(i.size),
+            // Only a track scales a texture; a parsed scene has none.
+            &Texture::Scaled(_, k) => s(k),
         };
         let m = o.material;
         let bump = match m.bump {

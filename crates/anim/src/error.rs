@@ -191,6 +191,9 @@ pub enum AnimError {
         why: String,
     },
     /// Standard output is closed, so streamed frames would go nowhere (bad input).
+    /// A job template cannot carry what it was asked (bad input: nothing was written).
+    #[error("{0}")]
+    Job(String),
     #[error("standard output is closed: the frames would go nowhere")]
     StdoutClosed,
     /// The run was stopped by this signal number (2 SIGINT, 15 SIGTERM) after the frames
@@ -223,6 +226,7 @@ impl AnimError {
             | AnimError::VideoExists(_)
             | AnimError::NotReady { .. }
             | AnimError::Draft(_)
+            | AnimError::Job(_)
             | AnimError::StdoutClosed => Outcome::BadInput,
             AnimError::Write { .. }
             | AnimError::Stream(_)

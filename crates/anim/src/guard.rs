@@ -39,6 +39,37 @@ fn marked(path: &Path, mark: Mark) -> bool {
     read.is_ok() && String::from_utf8_lossy(&head).contains(mark.0)
 }
 
+/// Refuses, before anything is rendered, an output whose folder cannot hold it: `path`'s
+/// folder missing (a file is written into an existing folder), or, when `creates` (the
+/// folder is made if missing: `--html DIR`), a file where a folder on its way should be.
+pub fn folder(path: &Path, creates: bool) -> Result<(), AnimError> {
+    let parent = match path.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    let refuse = |why: String| {
+        Err(AnimError::Overwrite {
+            path: path.to_path_buf(),
+            why,
+        })
+    };
+    if parent.is_dir() {
+        return Ok(());
+    }
+    if !creates {
+        let why = format!("its folder {} does not exist", parent.display());
+        return refuse(why);
+    }
+    match parent.ancestors().find(|a| a.exists()) {
+        Some(a) if !a.is_dir() => refuse(format!(
+            "{} is a file, so the folder {} cannot be made",
+            a.display(),
+            parent.display()
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// Refuses to write `path` (a file of the kind `mark` marks) over one of `inputs`, over a
 /// folder, or, unless `force`, over an existing file without the mark.
 pub fn output(path: &Path, inputs: &[PathBuf], mark: Mark, force: bool) -> Result<(), AnimError> {

@@ -328,6 +328,7 @@ impl<'a> From<&'a Manifest> for Sequence<'a> {
             tracks: &m.tracks,
             blur: m.render.motion_blur,
             looped: m.looped,
+            fov: m.lens.fov,
         }
     }
 }

@@ -9,7 +9,7 @@
 
 use super::error::AnimError;
 use super::manifest::Manifest;
-use super::timeline::{MotionBlur, Snapshot, Timeline};
+use super::timeline::{Field, MotionBlur, Snapshot, Timeline};
 use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, OnceLock};
@@ -178,18 +178,34 @@ impl<'p> Animation<'p> {
         self
     }
 
-    /// The framing: the manifest's `fov` and `roll` over the scene's own lens (an NFF
-    /// view's angle and up; the report's for a Scene.txt).
-    fn lens(&self) -> Lens {
+    /// The framing of a frame's scene: the manifest's `fov` and `roll` over the scene's
+    /// own lens (an NFF view's angle and up, the report's for a Scene.txt, a `camera fov`
+    /// track's value).
+    fn lens_of(&self, scene: &Scene) -> Lens {
         let own = &self.manifest.lens;
-        self.timeline.base.lens.overridden(own.fov, own.roll)
+        scene.lens.overridden(own.fov, own.roll)
+    }
+
+    /// The framing of the first frame (every frame's but with a `camera fov` track).
+    fn lens(&self) -> Lens {
+        let tracked = (self.timeline.tracks.iter()).any(|t| t.target.field == Field::CameraFov);
+        match tracked {
+            true => self.lens_of(&self.timeline.at(0.0).scene),
+            false => self.lens_of(&self.timeline.base),
+        }
     }
 
     /// The camera of a frame state, `None` when the eye is on the point it looks at.
     fn camera(&self, state: &Snapshot) -> Option<Camera> {
         let native = (self.timeline.base.width, self.timeline.base.height);
         let size = (self.width, self.height);
-        Camera::framed(state.eye, state.look_at, native, size, &self.lens())
+        Camera::framed(
+            state.eye,
+            state.look_at,
+            native,
+            size,
+            &self.lens_of(&state.scene),
+        )
     }
 
     /// The warning for frames whose pixels are not square (the report's view plane at

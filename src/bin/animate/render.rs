@@ -90,7 +90,7 @@ fn render_frames(args: RenderArgs, tally: &mut Tally) -> anyhow::Result<Outcome>
         whitted_anim::process::exit_when_stuck(stop.clone(), stream_stopped);
     }
     if !c.quiet {
-        pool.install(|| report::warn_if_enormous(&anim, &frames));
+        report::warn_if_non_square(&anim);
     }
     let quiet = c.quiet || args.events;
     // The bar's ETA weighs each frame by the pre-pass's predicted cost (1/64 of the
@@ -107,6 +107,16 @@ fn render_frames(args: RenderArgs, tally: &mut Tally) -> anyhow::Result<Outcome>
     let reporter: &dyn Reporter = match args.events {
         true => &report::JsonLines,
         false => &bar,
+    };
+    // The warning before an enormous render, once the run knows what it renders.
+    let warned = report::WarnEnormous {
+        inner: reporter,
+        anim: &anim,
+        frames: &frames,
+    };
+    let reporter: &dyn Reporter = match c.quiet {
+        true => reporter,
+        false => &warned,
     };
     let hook = match &destination {
         Destination::Folder(_) => args.on_frame.clone(),

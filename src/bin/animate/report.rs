@@ -57,15 +57,32 @@ pub fn announce(anim: &Animation, frames: usize, raw: bool) {
     }
 }
 
-/// Before a request of more than `ENORMOUS` camera rays: the library's warning
-/// (`Animation::enormous`), with what the command line can do about it; and before
-/// frames whose pixels are not square, that warning (`Animation::non_square`).
-pub fn warn_if_enormous(anim: &Animation, frames: &[u32]) {
+/// Before frames whose pixels are not square, that warning (`Animation::non_square`).
+pub fn warn_if_non_square(anim: &Animation) {
     if let Some(w) = anim.non_square() {
         eprintln!("animate: warning: {w}");
     }
-    if let Some(e) = anim.enormous(frames) {
-        eprintln!("animate: warning: {e} (Ctrl-C stops, --resume continues)");
+}
+
+/// A run's reporter that, when the run starts (it then knows which frames it renders:
+/// not those `--resume` found up to date), says the library's warning before more than
+/// `ENORMOUS` camera rays (`Animation::enormous_of`), with what the command line can do.
+pub struct WarnEnormous<'a> {
+    /// The reporter the events go on to.
+    pub inner: &'a dyn Reporter,
+    /// The animation and the run's frames (the first is the timed sample).
+    pub anim: &'a Animation<'a>,
+    pub frames: &'a [u32],
+}
+
+impl Reporter for WarnEnormous<'_> {
+    fn event(&self, event: Event) {
+        if let (Event::Started { total, skipped }, Some(&first)) = (&event, self.frames.first()) {
+            if let Some(e) = self.anim.enormous_of(total.saturating_sub(*skipped), first) {
+                eprintln!("animate: warning: {e} (Ctrl-C stops, --resume continues)");
+            }
+        }
+        self.inner.event(event)
     }
 }
 

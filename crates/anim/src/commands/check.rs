@@ -28,6 +28,8 @@ pub fn check(project: &Project, request: &CheckRequest) -> Result<Outcome, AnimE
     let inputs = guard::inputs(project);
     for (path, mark) in &request.outputs {
         guard::output(path, &inputs, *mark, request.force)?;
+        // Every report's folder before the render, not after it: an HTML page's is made.
+        guard::folder(path, mark.0 == guard::HTML.0)?;
     }
     let report = run_check(&anim, &request.options)?;
     for exporter in &request.exporters {

@@ -30,6 +30,8 @@ pub struct JobRequest {
     pub chunk_seconds: Option<u32>,
     /// Write over an existing file animate did not write.
     pub force: bool,
+    /// The video step's `--codec`, `--crf`, `--pix-fmt` (as `animate encode`'s).
+    pub encoding: crate::frames::run::Encoding,
 }
 
 /// A written template: its frame count and chunk size, for the summary line.
@@ -50,6 +52,7 @@ pub fn job(
 ) -> Result<Result<Job, Outcome>, AnimError> {
     let (m, anim) = (&project.manifest, Animation::new(project)?);
     let frames = sorted(&run::frames_of(&anim, request.frames.as_deref(), None)?);
+    let video = crate::job::Video::new(m, &frames, &request.encoding).map_err(AnimError::Job)?;
     if let Some(file) = &request.out {
         guard::output(file, &guard::inputs(project), guard::OPENJD, request.force)?;
     }
@@ -77,7 +80,7 @@ pub fn job(
         relative_to(&manifest, &folder),
         relative_to(&out_dir, &folder),
     );
-    let template = openjd_template(m, &manifest, &out_dir, &frames, chunking);
+    let template = openjd_template(&manifest, &out_dir, &frames, chunking, video);
     let text = serde_json::to_string_pretty(&template).unwrap_or_default() + "\n";
     match &request.out {
         Some(file) => {

@@ -1,9 +1,10 @@
 //! `animate estimate`: what a render will cost before it runs. The pre-pass of `balance`
 //! predicts each frame's rays; one frame (the median by predicted cost) rendered at full
-//! size and timed turns pre-pass rays into full-size rays and seconds on this machine:
+//! size as a run makes it (an EXR's passes included) and encoded in memory, timed, turns
+//! pre-pass rays into full-size rays and seconds on this machine:
 //!
 //! ```text
-//! frames 0-249: 1.84 Grays predicted, 412 s expected (frame 118 timed: 1.62 s, 7.3 Mrays)
+//! frames 0-249: 1.84 Grays predicted, 412 s expected (frame 118 timed: 1.62 s, 7.3 Mrays, 921600 bytes encoded)
 //! frames      predicted rays   share   expected
 //! 0-31        12.1 M            4.2 %   20.4 s
 //! …
@@ -31,8 +32,10 @@ pub struct Estimate {
     pub sample: u32,
     /// Its full-size rays.
     pub sample_rays: u64,
-    /// Its seconds.
+    /// Its seconds, its encoding's included.
     pub sample_seconds: f64,
+    /// Its size, encoded as the run writes it (without its provenance).
+    pub sample_bytes: usize,
     /// Full-size rays per pre-pass ray, from the timed frame.
     pub scale: f64,
 }
@@ -54,16 +57,18 @@ impl Estimate {
                 sample: 0,
                 sample_rays: 0,
                 sample_seconds: 0.0,
+                sample_bytes: 0,
                 scale: 0.0,
             });
         };
         let start = Instant::now();
-        let (_, rays) = anim.render(frames[median])?;
+        let (rays, sample_bytes) = anim.render_encoded(frames[median])?;
         let sample_seconds = start.elapsed().as_secs_f64();
         Ok(Estimate {
             sample: frames[median],
             sample_rays: rays.total(),
             sample_seconds,
+            sample_bytes,
             scale: rays.total() as f64 / costs[median].max(1) as f64,
             frames,
             costs,
@@ -92,13 +97,14 @@ impl Estimate {
         let expected = self.seconds(self.total());
         let _ = writeln!(
             out,
-            "frames {}: {:.1} Mrays predicted, {:.1} s expected (frame {} timed: {:.2} s, {:.2} Mrays); pre-pass {:.2} s ({:.1} % of the expected render)",
+            "frames {}: {:.1} Mrays predicted, {:.1} s expected (frame {} timed: {:.2} s, {:.2} Mrays, {} bytes encoded); pre-pass {:.2} s ({:.1} % of the expected render)",
             ranges(&self.frames),
             full(self.total()),
             expected,
             self.sample,
             self.sample_seconds,
             self.sample_rays as f64 / 1e6,
+            self.sample_bytes,
             self.prepass_seconds,
             100.0 * self.prepass_seconds / expected.max(1e-9),
         );

@@ -104,6 +104,11 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
         for c in colors {
             v(c, &mut f);
         }
+        // A texture's scale (nothing at 1, so that digests stay what they were).
+        if obj.texture.scale() != 1.0 {
+            f(10.0);
+            f(obj.texture.scale());
+        }
         let m = &obj.material;
         for x in [m.kd, m.kr, m.kt, m.ior] {
             f(x);

@@ -16,6 +16,9 @@
 //! {{Param.Animate}} encode {{Param.Manifest}} --dir {{Param.OutDir}} -o {{Param.Video}} --force --quiet
 //! ```
 //!
+//! followed by the `--codec`, `--crf` and `--pix-fmt` the job was given (`Video`); a job
+//! of some frames has no video step, and is refused them.
+//!
 //! The chunk
 //! size is `--chunk N` frames, or comes from `--chunk-seconds S` and the cost estimate
 //! (`frames::estimate`), which also becomes the chunks' `targetRuntimeSeconds` so that a
@@ -25,6 +28,49 @@ use crate::frames::status::ranges;
 use crate::manifest::Manifest;
 use serde_json::{json, Value};
 use std::path::Path;
+
+/// The video step of a job of every frame: the extra arguments of its `animate encode`.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Video {
+    /// `--codec C`, `--crf N`, `--pix-fmt F`, as given.
+    pub args: Vec<String>,
+}
+
+impl Video {
+    /// The video step of `frames` of `m` with `encoding`: `None` for a job of some frames
+    /// (refused when an encoding was asked), or why the encoding cannot be written into
+    /// a template.
+    pub fn new(
+        m: &Manifest,
+        frames: &[u32],
+        encoding: &crate::frames::run::Encoding,
+    ) -> Result<Option<Video>, String> {
+        let mut args = Vec::new();
+        let options = [
+            ("--codec", encoding.codec.clone()),
+            ("--crf", encoding.crf.map(|n| n.to_string())),
+            ("--pix-fmt", encoding.pix_fmt.clone()),
+        ];
+        for (flag, value) in options {
+            let Some(value) = value else { continue };
+            if !plain(&value) || value.trim().is_empty() {
+                return Err(format!(
+                    "{flag} {value:?} cannot go into a job template: no control characters, braces or empty values"
+                ));
+            }
+            args.extend([flag.to_string(), value]);
+        }
+        if !frames.iter().copied().eq(0..m.frames) {
+            return match args.first() {
+                Some(flag) => Err(format!(
+                    "{flag} applies to the job's video step, and a job of some frames (--frames) has none: `animate encode` needs every frame"
+                )),
+                None => Ok(None),
+            };
+        }
+        Ok(Some(Video { args }))
+    }
+}
 
 /// How the frames are cut into tasks.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -107,13 +153,14 @@ fn path_param(name: &str, kind: &str, flow: &str, path: &Path) -> Value {
 }
 
 /// The template for `frames` (in number order) of the manifest at `manifest_path`, into
-/// `out_dir` (both relative to the folder the template is written into).
+/// `out_dir` (both relative to the folder the template is written into), with the video
+/// step `video_step` (`Video::new`) when there is one.
 pub fn openjd_template(
-    m: &Manifest,
     manifest_path: &Path,
     out_dir: &Path,
     frames: &[u32],
     chunking: Chunking,
+    video_step: Option<Video>,
 ) -> Value {
     let mut chunks = json!({
         "defaultTaskCount": chunking.size(),
@@ -154,15 +201,20 @@ pub fn openjd_template(
     ];
     let mut steps = vec![render];
     // `animate encode` needs every frame of the manifest: a job of some frames makes none.
-    if frames.iter().copied().eq(0..m.frames) {
+    if let Some(step) = video_step {
+        let mut args: Vec<Value> = ["encode", "{{Param.Manifest}}", "--dir", "{{Param.OutDir}}"]
+            .into_iter()
+            .chain(["-o", "{{Param.Video}}", "--force", "--quiet"])
+            .map(Value::from)
+            .collect();
+        args.extend(step.args.into_iter().map(Value::from));
         params.push(path_param("Video", "FILE", "OUT", Path::new(&video)));
         steps.push(json!({
             "name": "Video",
             "dependencies": [{"dependsOn": "Render"}],
             "script": {"actions": {"onRun": {
                 "command": "{{Param.Animate}}",
-                "args": ["encode", "{{Param.Manifest}}", "--dir", "{{Param.OutDir}}",
-                         "-o", "{{Param.Video}}", "--force", "--quiet"],
+                "args": args,
             }}},
         }));
     }

@@ -5,8 +5,10 @@
 
 use super::Animation;
 use crate::error::AnimError;
+use whitted::output::{encode_layers, encode_with};
 use whitted::passes::record::PixelSum;
 use whitted::render::estimate;
+use whitted::trace::RayCount;
 
 /// The memory frames in flight may take (pixels and their encoded copy): 1 GiB.
 pub const FRAME_MEMORY: usize = 1 << 30;
@@ -49,7 +51,7 @@ impl<'p> Animation<'p> {
     pub fn predict_seconds(&self, frame: u32, frames: usize) -> Result<f64, AnimError> {
         let small = self.scaled(estimate::SAMPLE_DIVISOR, None);
         let start = std::time::Instant::now();
-        small.draw(frame)?;
+        small.render_encoded(frame)?;
         let took = start.elapsed().as_secs_f64();
         Ok(estimate::predict(
             self.camera_rays(frames),
@@ -58,22 +60,43 @@ impl<'p> Animation<'p> {
         ))
     }
 
+    /// Draws frame `frame` as a run makes it (an EXR's layers with its passes) and
+    /// encodes it in memory, as what a frame costs is timed: its rays and its bytes.
+    pub fn render_encoded(&self, frame: u32) -> Result<(RayCount, usize), AnimError> {
+        let format = self.format();
+        let mut bytes = Vec::new();
+        let (encoded, rays) = if format.is_layered() {
+            let (layers, rays) = self.render_layers(frame, format.passes())?;
+            (encode_layers(layers, format, &[], &mut bytes), rays)
+        } else {
+            let (image, rays) = self.render(frame)?;
+            (encode_with(&image, format, &[], &mut bytes), rays)
+        };
+        encoded.map_err(|source| AnimError::Write { frame, source })?;
+        Ok((rays, bytes.len()))
+    }
+
     /// Past `estimate::ENORMOUS` camera rays for `frames`: the warning, with the time a
     /// 1/`SAMPLE_DIVISOR` sample of the first frame predicts on the current pool.
     pub fn enormous(&self, frames: &[u32]) -> Option<estimate::Enormous> {
-        let rays = self.camera_rays(frames.len());
-        let &first = frames.first()?;
+        self.enormous_of(frames.len(), *frames.first()?)
+    }
+
+    /// `enormous` for `count` frames, timing frame `first` (a run warns once it knows
+    /// which frames it will render: not those `--resume` finds up to date).
+    pub fn enormous_of(&self, count: usize, first: u32) -> Option<estimate::Enormous> {
+        let rays = self.camera_rays(count);
         if rays <= estimate::ENORMOUS {
             return None;
         }
         let pixels = (u64::from(self.width) * u64::from(self.height)).max(1);
         Some(estimate::Enormous {
             rays,
-            frames: Some(frames.len()),
+            frames: Some(count),
             width: self.width,
             height: self.height,
             per_pixel: self.camera_rays(1) / pixels,
-            seconds: self.predict_seconds(first, frames.len()).ok(),
+            seconds: self.predict_seconds(first, count).ok(),
             threads: rayon::current_num_threads(),
         })
     }

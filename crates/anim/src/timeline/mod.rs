@@ -88,6 +88,8 @@ pub struct Sequence<'a> {
     pub blur: Option<MotionBlur>,
     /// `loop = true`: the end leads into the start (frame `frames` is frame 0).
     pub looped: bool,
+    /// `[camera] fov`, which a `camera fov` track may not be beside.
+    pub fov: Option<f64>,
 }
 
 /// What the camera looks at when the path does not say.
@@ -166,6 +168,11 @@ impl Timeline {
             },
         };
         let mut tracks: Vec<Track> = Vec::with_capacity(manifest.tracks.len());
+        let given = target::camera::Given {
+            path: manifest.camera,
+            look_at: manifest.look_at,
+            fov: manifest.fov,
+        };
         for (n, spec) in manifest.tracks.iter().enumerate() {
             let track = match resolve(spec, &base) {
                 Ok(track) => track,
@@ -174,6 +181,9 @@ impl Timeline {
                     continue;
                 }
             };
+            if let Some(why) = target::camera::refusal(track.target.field, given) {
+                refuse(invalid(&spec.loc, format!("track {}: {why}", n + 1)));
+            }
             if manifest.looped {
                 if let Err(m) = fits_a_loop(&spec.motion) {
                     refuse(invalid(&spec.loc, format!("track {}: {m}", n + 1)));
@@ -267,7 +277,8 @@ impl Timeline {
     pub fn tracked_positions(&self) -> Vec<(String, Vec<DVec3>)> {
         self.tracks
             .iter()
-            .filter(|t| t.target.is_position())
+            // The camera's own position is drawn as the camera's path.
+            .filter(|t| t.target.is_position() && t.target.field != Field::CameraPosition)
             .map(|t| {
                 let points = (0..self.plotted_frames())
                     .map(|f| self.value(t, f64::from(f)))
@@ -296,7 +307,7 @@ fn resolve(spec: &TrackSpec, scene: &Scene) -> Result<Track, String> {
     match &spec.motion {
         Motion::Circle(_) if !target.is_position() => {
             return Err(format!(
-                "`{}` is not a position: only sphere center, plane or cylinder point and light position may follow a circle",
+                "`{}` is not a position: only sphere center, plane or cylinder point, light position and the camera's position or look_at may follow a circle",
                 spec.target
             ))
         }

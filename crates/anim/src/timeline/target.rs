@@ -7,9 +7,10 @@
 //! target = "plane 1 normal"     # plane N point|normal
 //! target = "cylinder 2 radius"  # cylinder N axis|point|radius
 //! target = "sphere 3 color"     # any object: color (texture 1), color1..3 (texture 2),
-//!                               #   kd kr kt ior bump
+//!                               #   kd kr kt ior bump texture_scale
 //! target = "light 1 position"   # light N position|color|intensity
 //! target = "fog distance"       # no N
+//! target = "camera position"    # camera position|look_at|fov (`camera`)
 //! target = "box 2 max"          # the extension's records and names: `ext`, `subject`
 //! ```
 
@@ -64,6 +65,8 @@ pub enum Field {
     Ior,
     /// The bump amplitude ε of an object with bump mapping.
     Bump,
+    /// The scale of a procedural texture's pattern, > 0 (`sphere 1 texture_scale`).
+    TextureScale,
     /// A light's position.
     Position,
     /// A light's colour, RGB in 0..1 (`light N color`).
@@ -74,6 +77,12 @@ pub enum Field {
     FogDistance,
     /// A field of an extension record (`box 1 max`, `spot 1 falloff`, `focus distance`).
     Ext(ExtField),
+    /// The camera's eye (`camera position`).
+    CameraPosition,
+    /// The point the camera looks at (`camera look_at`).
+    CameraLookAt,
+    /// The vertical field of view in degrees, 0 < fov < 180 (`camera fov`).
+    CameraFov,
 }
 
 /// A resolved target: the field and, for objects and lights, the index into
@@ -87,7 +96,7 @@ pub struct Target {
 }
 
 /// Object fields any kind of object has.
-const MATERIAL_FIELDS: [(&str, Field); 9] = [
+const MATERIAL_FIELDS: [(&str, Field); 10] = [
     ("color", Field::Color),
     ("color1", Field::Color1),
     ("color2", Field::Color2),
@@ -97,6 +106,7 @@ const MATERIAL_FIELDS: [(&str, Field); 9] = [
     ("kt", Field::Kt),
     ("ior", Field::Ior),
     ("bump", Field::Bump),
+    ("texture_scale", Field::TextureScale),
 ];
 
 fn fields_of(kind: &str) -> Option<Vec<(&'static str, Field)>> {
@@ -213,10 +223,11 @@ impl Target {
         let words: Vec<&str> = text.split_whitespace().collect();
         let usage = || {
             format!(
-                "expected `KIND N FIELD` (e.g. \"sphere 1 center\"), `NAME FIELD`, \"fog distance\" or \"focus distance\", found {text:?}"
+                "expected `KIND N FIELD` (e.g. \"sphere 1 center\"), `NAME FIELD`, \"fog distance\", \"focus distance\" or \"camera position\", found {text:?}"
             )
         };
         let (subject, what, field) = match words[..] {
+            ["camera", field] => return camera::target(field),
             ["fog", field] => (Subject::Fog, "fog".to_string(), field),
             ["focus", field] => {
                 if scene.ext.focus.is_none() {
@@ -248,9 +259,11 @@ impl Target {
             | Field::Kt
             | Field::Ior
             | Field::Bump
+            | Field::TextureScale
             | Field::Intensity
             | Field::FogDistance => Kind::Number,
             Field::Ext(f) => f.kind,
+            f if camera::is_camera(f) => camera::kind(f),
             _ => Kind::Vector,
         }
     }
@@ -280,7 +293,14 @@ impl Target {
         ];
         match self.field {
             Field::Ext(f) => POINTS.contains(&f.name),
-            f => matches!(f, Field::Center | Field::Point | Field::Position),
+            f => matches!(
+                f,
+                Field::Center
+                    | Field::Point
+                    | Field::Position
+                    | Field::CameraPosition
+                    | Field::CameraLookAt
+            ),
         }
     }
 
@@ -288,7 +308,7 @@ impl Target {
     /// `color1..3` on a single colour, `color3` where the texture has no third colour,
     /// `bump` without bump mapping, `fog distance` without fog.
     fn applicable(&self, scene: &Scene) -> Result<(), String> {
-        let texture = || &scene.objects[self.index].texture;
+        let texture = || scene.objects[self.index].texture.pattern();
         let why = match self.field {
             Field::Color | Field::Color1 | Field::Color2 | Field::Color3
                 if matches!(texture(), Texture::Image(_)) =>
@@ -303,6 +323,9 @@ impl Target {
             }
             Field::Color3 if !matches!(texture(), Texture::Perlin(..)) => {
                 "only a Perlin texture (type 2) uses its third colour"
+            }
+            Field::TextureScale if !texture().is_procedural() => {
+                "its texture has no pattern to scale (only a procedural texture, type 2, has)"
             }
             Field::Bump if scene.objects[self.index].material.bump == Bump::None => {
                 "it has no bump mapping (BumpType 0)"
@@ -324,6 +347,7 @@ impl Target {
             }
         };
         match self.field {
+            f if camera::is_camera(f) => camera::check(f, v),
             Field::Center | Field::Point | Field::Position if !v.is_finite() => {
                 Err("coordinates must be finite".into())
             }
@@ -343,6 +367,9 @@ impl Target {
                 Err("a refraction index must be greater than 0".into())
             }
             Field::Bump if !x.is_finite() => Err("the bump ε must be finite".into()),
+            Field::TextureScale if !(x.is_finite() && x > 0.0) => {
+                Err("a texture's scale must be greater than 0".into())
+            }
             Field::Intensity if !(0.0..=MAX_INTENSITY).contains(&x) => Err(format!(
                 "a light's intensity must be from 0 to {MAX_INTENSITY}"
             )),
@@ -354,6 +381,7 @@ impl Target {
     }
 }
 
+pub(crate) mod camera;
 pub(crate) mod ext;
 mod subject;
 mod value;

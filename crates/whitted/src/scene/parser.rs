@@ -2,10 +2,12 @@
 //! Every error points at the token that broke a rule and names its place in the
 //! structure; nothing is rendered from a scene that failed. When a record fails on a line
 //! that holds a record of another kind, the error is put on the count to blame
-//! (`counts`). After the last light come the extension records of SPEC §16 (`ext`).
+//! (`counts`); when a record was short of a value on its line, at the end of that line
+//! (`missing`). After the last light come the extension records of SPEC §16 (`ext`).
 
 mod counts;
 mod ext;
+mod missing;
 mod place;
 mod texture;
 
@@ -27,6 +29,7 @@ struct Parser<'a> {
     file: &'a str,
     place: Place,
     images: texture::Images,
+    layout: missing::Layout<'a>,
 }
 
 type Result<T> = std::result::Result<T, SceneError>;
@@ -48,12 +51,18 @@ impl<'a> Parser<'a> {
         self.error_at(tok.line, tok.column, message, field)
     }
 
-    /// The next token, or an error at the end of the file naming what was expected.
+    /// The next token, or an error naming what was expected at the end of the file (just
+    /// past its last value: the end of the line where a value is missing).
     fn token(&mut self, field: &str, what: &str) -> Result<Token<'a>> {
         match self.lexer.next() {
-            Some(tok) => Ok(tok),
+            Some(tok) => {
+                let place = self.place;
+                self.layout.took(tok, field, || place.describe(field));
+                Ok(tok)
+            }
             None => {
-                let (line, column) = self.lexer.position();
+                let end = self.layout.prev().map(|t| missing::end_of(&t));
+                let (line, column) = end.unwrap_or(self.lexer.position());
                 let msg = format!("expected {what} for {field}, found the end of the file");
                 Err(self.error_at(line, column, msg, field))
             }
@@ -241,6 +250,7 @@ impl<'a> Parser<'a> {
     }
 
     fn enter(&mut self, record: &'static str, index: Option<(u64, u64)>) {
+        self.layout.start();
         self.place = Place {
             record,
             index,
@@ -269,7 +279,13 @@ pub(super) fn read(src: &str, file: &str) -> Result<Scene> {
             within: None,
         },
         images: texture::Images::new(file),
+        layout: missing::Layout::new(),
     };
+    records(&mut p, src, file).map_err(|e| p.layout.blame(e))
+}
+
+/// The records of `src`, read by `p`.
+fn records<'a>(p: &mut Parser<'a>, src: &'a str, file: &str) -> Result<Scene> {
     let side = format!("an integer from 1 to {MAX_SIDE}");
     let (width, _) = p.integer("ResX", 1, MAX_SIDE as u64, &side)?;
     let (height, tok) = p.integer("ResY", 1, MAX_SIDE as u64, &side)?;
@@ -347,7 +363,8 @@ pub(super) fn read(src: &str, file: &str) -> Result<Scene> {
         .filter(ext::starts_extension)
         .is_some()
     {
-        extension = ext::read(&mut p, [ns, np, nc, nl])?;
+        p.layout.stop();
+        extension = ext::read(p, [ns, np, nc, nl])?;
     } else if let Some(tok) = p.lexer.next() {
         p.enter("after the last record", None);
         let msg = format!(

@@ -10,6 +10,11 @@
 //! - wood: T = 20·noise(p), n = T − ⌊T⌋, f = (1 − cos πn)/2, C = C1(1−f) + C2·f
 //! - marble: n = (1 + cos(x + noise(p)))/2, C = C1(1−n) + C2·n
 //!
+//! A procedural texture may be scaled (`Scaled`, from an animation's `texture_scale`
+//! track; no Scene.txt syntax): evaluated at p/s, its pattern is s times larger, about
+//! the world's origin. Scale 1 is the texture itself, not wrapped, so every picture
+//! without a scale keeps its bytes.
+//!
 //! The third form, `3 "file" Map Interp Size` (SPEC §16), maps an image onto its object
 //! (`image`, `map`, `load`): it needs the object's shape, so `Object::color_at` is what
 //! the tracer asks.
@@ -56,6 +61,9 @@ pub enum Texture {
     Marble(Color, Color),
     /// `3 "file" Map Interp Size`: an image mapped onto the object.
     Image(Arc<ImageTexture>),
+    /// A procedural texture (checker, Perlin, wood, marble) evaluated at p/s: its pattern
+    /// s times larger (s > 0, never 1: see `scaled`).
+    Scaled(Box<Texture>, f64),
 }
 
 impl Texture {
@@ -70,6 +78,49 @@ impl Texture {
             Texture::Wood(a, b) => ("wood", 4, vec![a, b]),
             Texture::Marble(a, b) => ("marble", 5, vec![a, b]),
             Texture::Image(_) => ("image", 6, vec![]),
+            Texture::Scaled(ref t, _) => t.record(),
+        }
+    }
+
+    /// Whether the texture is a pattern that can be scaled: checker, Perlin, wood, marble.
+    pub fn is_procedural(&self) -> bool {
+        !matches!(self, Texture::Uniform(_) | Texture::Image(_))
+    }
+
+    /// The pattern's scale: s of `Scaled`, else 1.
+    pub fn scale(&self) -> f64 {
+        match self {
+            Texture::Scaled(_, s) => *s,
+            _ => 1.0,
+        }
+    }
+
+    /// The texture without its scale.
+    pub fn pattern(&self) -> &Texture {
+        match self {
+            Texture::Scaled(t, _) => t,
+            t => t,
+        }
+    }
+
+    /// The texture without its scale, to change its colours.
+    pub fn pattern_mut(&mut self) -> &mut Texture {
+        match self {
+            Texture::Scaled(t, _) => t,
+            t => t,
+        }
+    }
+
+    /// This texture's pattern at scale `s`: itself, unwrapped, at 1; a one-colour or image
+    /// texture is returned as it is (it has no pattern to scale).
+    pub fn scaled(self, s: f64) -> Texture {
+        let pattern = match self {
+            Texture::Scaled(t, _) => *t,
+            t => t,
+        };
+        match s == 1.0 || !pattern.is_procedural() {
+            true => pattern,
+            false => Texture::Scaled(Box::new(pattern), s),
         }
     }
 
@@ -120,6 +171,7 @@ impl Texture {
                 let n = (1.0 + libm::cos(p.x + noise(p.x, p.y, p.z))) / 2.0;
                 c1 * (1.0 - n) + c2 * n
             }
+            Texture::Scaled(ref t, s) => t.color_at(p / s),
             Texture::Uniform(c) | Texture::Checker(c, _) => c, // answered by `color_at`
             Texture::Image(_) => Color::ZERO,                  // answered by `Object::color_at`
         }
@@ -168,6 +220,27 @@ mod tests {
                                                                   // A floor point computed as y = −1e-9 would flicker without the offset.
         assert_eq!(t.color_at(DVec3::new(0.5, -1e-9, 0.5)), RED);
         assert_eq!(t.color_at(DVec3::new(0.5, 1e-9, 0.5)), RED);
+    }
+
+    #[test]
+    fn a_scaled_pattern_is_the_pattern_at_p_over_s() {
+        // Scale 2: the checker's unit squares become 2 wide; (1.5, 0, 0.5) is (0.75, 0,
+        // 0.25) of the pattern (sum 0, RED) where the unscaled checker is BLUE (sum 1).
+        let t = Texture::Checker(RED, BLUE).scaled(2.0);
+        assert_eq!(t.color_at(DVec3::new(1.5, 0.0, 0.5)), RED);
+        assert_eq!(t.color_at(DVec3::new(2.5, 0.0, 0.5)), BLUE);
+        let plain = Texture::Checker(RED, BLUE);
+        assert_eq!(plain.color_at(DVec3::new(1.5, 0.0, 0.5)), BLUE);
+        // Wood at half scale: the pattern at 2p.
+        let wood = Texture::Wood(RED, BLUE);
+        let p = DVec3::new(1.57, 21.0, 3.5);
+        assert_eq!(wood.clone().scaled(0.5).color_at(p), wood.color_at(2.0 * p));
+        // Scale 1 unwraps; a scale is replaced, not stacked; one colour has no pattern.
+        assert_eq!(t.clone().scaled(1.0), Texture::Checker(RED, BLUE));
+        assert_eq!(t.clone().scaled(3.0).scale(), 3.0);
+        assert_eq!(t.pattern(), &Texture::Checker(RED, BLUE));
+        assert_eq!(t.record(), Texture::Checker(RED, BLUE).record());
+        assert_eq!(Texture::Uniform(RED).scaled(2.0), Texture::Uniform(RED));
     }
 
     #[test]

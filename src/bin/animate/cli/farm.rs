@@ -1,6 +1,6 @@
 //! The render farm's subcommands: `job` (an OpenJD template) and `estimate`.
 
-use super::{Common, MAX_SHARDS};
+use super::{Common, EncodingArgs, MAX_SHARDS};
 use clap::Args;
 use std::path::PathBuf;
 use whitted_anim::commands::farm::JobRequest;
@@ -29,6 +29,9 @@ pub struct JobArgs {
     /// frame to find out).
     #[arg(long, value_name = "S", value_parser = clap::value_parser!(u32).range(1..))]
     pub chunk_seconds: Option<u32>,
+    /// The video step's encoding (a job of every frame has one), as `encode`'s.
+    #[command(flatten)]
+    pub encoding: EncodingArgs,
 }
 
 #[derive(Args, Debug)]
@@ -51,6 +54,7 @@ impl JobArgs {
             chunk: self.chunk,
             chunk_seconds: self.chunk_seconds,
             force: self.force,
+            encoding: self.encoding.encoding(),
         }
     }
 }

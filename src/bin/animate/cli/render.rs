@@ -141,12 +141,29 @@ impl RenderArgs {
             let why = "refusing to write binary frames to a terminal: redirect standard output, or add --force";
             return Err(Usage(why.into()));
         }
+        if let Some(dir) = &self.out {
+            looks_like_an_image(dir)?;
+        }
         Ok(match (self.stdout, &self.video) {
             (Some(format), _) => Destination::Stream(format),
             (None, Some(video)) => Destination::Video(video.clone()),
             (None, None) => Destination::Folder(self.out.clone().unwrap_or(m.output.dir.clone())),
         })
     }
+}
+
+/// Refuses `-o still.png`: `-o` names the frames' folder, and a path ending in an image
+/// format's extension that is not already a folder is taken for a still's file name.
+fn looks_like_an_image(dir: &std::path::Path) -> Result<(), Usage> {
+    let ext = dir.extension().and_then(|e| e.to_str()).unwrap_or_default();
+    if dir.is_dir() || ImageFormat::from_name(&ext.to_ascii_lowercase()).is_none() {
+        return Ok(());
+    }
+    Err(Usage(format!(
+        "-o names the folder the frames go into, and {} is the name of an image: write one \
+         frame with `--frames N -o DIR` (DIR/frame_NNNN.{ext}), or a still with `raytrace`",
+        dir.display()
+    )))
 }
 
 fn stream_format(s: &str) -> Result<ImageFormat, String> {

@@ -5,7 +5,9 @@
 //! The images are copied beside the page (`NAME.reference.png`, `NAME.rendered.png`,
 //! `NAME.diff.png`, `NAME.flip.png`) with the legends (`heat-legend.png`,
 //! `flip-legend.png`), so the folder opens from disk with no server and no network: no
-//! file outside DIR and no address is named. The page is written last.
+//! file outside DIR and no address is named. The page is written last; then the images
+//! the page it replaced named (an earlier run's failing frames) and this one does not are
+//! removed, so the folder holds one run's report.
 
 use super::{copy_file, write_file, ExportError, Exporter};
 use crate::check::diff::heat_legend;
@@ -240,8 +242,47 @@ impl Exporter for Html {
                 write_png(&dir.join("flip-legend.png"), &flip::legend())?;
             }
         }
-        write_file(&dir.join("index.html"), Html::page(report).as_bytes())
+        let index = dir.join("index.html");
+        let old = std::fs::read_to_string(&index).unwrap_or_default();
+        let page = Html::page(report);
+        write_file(&index, page.as_bytes())?;
+        for name in stale(&old, &page) {
+            let path = dir.join(&name);
+            match std::fs::remove_file(&path) {
+                Err(e) if e.kind() != std::io::ErrorKind::NotFound => {
+                    return Err(ExportError::Io { path, source: e })
+                }
+                _ => {}
+            }
+        }
+        Ok(())
     }
+}
+
+/// The image files a page names (`src`, `data-reference`, `data-render`), decoded.
+fn images(page: &str) -> std::collections::BTreeSet<String> {
+    let mut names = std::collections::BTreeSet::new();
+    for attr in ["src=\"", "data-reference=\"", "data-render=\""] {
+        for rest in page.split(attr).skip(1) {
+            let name = rest.split('"').next().unwrap_or_default();
+            let name = percent_encoding::percent_decode_str(name).decode_utf8_lossy();
+            names.insert(name.into_owned());
+        }
+    }
+    names
+}
+
+/// The images an earlier page of ours (`old`, marked by its title) named that `new` does
+/// not: plain PNG names in the page's folder, nothing else.
+fn stale(old: &str, new: &str) -> Vec<String> {
+    if !old.contains(crate::guard::HTML.0) {
+        return Vec::new();
+    }
+    let keep = images(new);
+    let plain = |n: &String| {
+        n.ends_with(".png") && !n.contains(['/', '\\']) && !n.starts_with('.') && !keep.contains(n)
+    };
+    images(old).into_iter().filter(plain).collect()
 }
 
 #[cfg(test)]
@@ -292,6 +333,24 @@ mod tests {
         let html = Html::page(&report);
         assert!(sources(&html).is_empty(), "{html}");
         assert!(html.contains("PASS: 1 frame(s)"));
+    }
+
+    #[test]
+    fn the_images_only_an_earlier_page_of_ours_named_are_stale() {
+        let page = |title: &str, name: &str| {
+            format!(
+                "<title>{title}</title><img src=\"{name}.diff.png\"><img src=\"a%20b.png\">\
+                     <img data-reference=\"../up.png\" data-render=\"x.html\">"
+            )
+        };
+        let old = page("animate check: FAIL", "frame_0005");
+        let new = page("animate check: FAIL", "frame_0009");
+        assert_eq!(stale(&old, &new), ["frame_0005.diff.png"]);
+        assert_eq!(
+            stale(&old, "<title>animate check: PASS</title>"),
+            ["a b.png", "frame_0005.diff.png"]
+        );
+        assert!(stale(&page("someone's page", "frame_0005"), &new).is_empty());
     }
 
     #[test]

@@ -32,13 +32,13 @@ pub(super) fn rgb(c: DVec3) -> RGBColor {
 }
 
 pub(super) fn first_color(t: &Texture) -> DVec3 {
-    match *t {
+    match *t.pattern() {
         Texture::Uniform(c)
         | Texture::Checker(c, _)
         | Texture::Perlin(c, _, _)
         | Texture::Wood(c, _)
         | Texture::Marble(c, _) => c,
-        Texture::Image(_) => DVec3::splat(0.5),
+        Texture::Image(_) | Texture::Scaled(..) => DVec3::splat(0.5),
     }
 }
 

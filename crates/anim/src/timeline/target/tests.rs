@@ -175,3 +175,63 @@ fn geometry_and_positions() {
     );
     assert!(parse_subject("sphere", &s).is_err());
 }
+
+#[test]
+fn camera_targets_write_the_eye_the_look_at_point_and_the_fov() {
+    let s = scene();
+    let t = |text: &str| Target::parse(text, &s).unwrap();
+    let v = DVec3::new(1.0, 2.0, 3.0);
+    let mut tracked = s.clone();
+    t("camera position").apply(&mut tracked, v);
+    assert_eq!(
+        (tracked.eye, t("camera position").kind()),
+        (v, Kind::Vector)
+    );
+    t("camera look_at").apply(&mut tracked, -v);
+    assert_eq!(tracked.look_at, -v);
+    // The report's plane is 0.35 high at distance 1: 2·atan(0.175) = 19.8524…°.
+    let fov = t("camera fov");
+    assert_eq!(fov.kind(), Kind::Number);
+    assert!(
+        (fov.read(&s).x - 19.852_491_01).abs() < 1e-6,
+        "{}",
+        fov.read(&s)
+    );
+    fov.apply(&mut tracked, DVec3::new(40.0, 0.0, 0.0));
+    assert_eq!(
+        (tracked.lens.fov, tracked.lens.centres),
+        (Some(40.0), false)
+    );
+    assert_eq!(fov.read(&tracked).x, 40.0);
+    // Bounds: a field of view strictly between 0 and 180, finite points.
+    assert!(fov.check(DVec3::new(180.0, 0.0, 0.0)).is_err());
+    assert!(fov.check(DVec3::new(0.0, 0.0, 0.0)).is_err());
+    assert!(t("camera position").check(DVec3::INFINITY).is_err());
+    assert!(t("camera look_at").is_position() && !fov.is_position());
+    let e = Target::parse("camera eye", &s).unwrap_err();
+    assert!(e.contains("expected one of position, look_at, fov"), "{e}");
+}
+
+#[test]
+fn texture_scale_scales_a_procedural_pattern_only() {
+    let s = scene();
+    // Sphere 2 has a procedural texture (2 2: Perlin), sphere 1 one colour.
+    let t = Target::parse("sphere 2 texture_scale", &s).unwrap();
+    assert_eq!((t.field, t.kind()), (Field::TextureScale, Kind::Number));
+    assert_eq!(t.read(&s).x, 1.0);
+    let mut tracked = s.clone();
+    t.apply(&mut tracked, DVec3::new(2.5, 0.0, 0.0));
+    assert_eq!(tracked.objects[1].texture.scale(), 2.5);
+    assert_eq!(t.read(&tracked).x, 2.5);
+    // Colours still reach the pattern under its scale.
+    let c1 = Target::parse("sphere 2 color1", &s).unwrap();
+    c1.apply(&mut tracked, DVec3::ONE);
+    assert_eq!(c1.read(&tracked), DVec3::ONE);
+    assert_eq!(tracked.objects[1].texture.scale(), 2.5);
+    // Back to 1: the texture of the file, bytes and all.
+    t.apply(&mut tracked, DVec3::new(1.0, 0.0, 0.0));
+    assert_eq!(tracked.objects[1].texture.scale(), 1.0);
+    assert!(t.check(DVec3::ZERO).is_err());
+    let e = Target::parse("sphere 1 texture_scale", &s).unwrap_err();
+    assert!(e.contains("no pattern to scale"), "{e}");
+}

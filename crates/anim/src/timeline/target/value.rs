@@ -23,6 +23,7 @@ impl Target {
         });
         match (self.field, spec) {
             (Field::Ext(f), _) => super::ext::read(&scene.ext, &f),
+            (f, _) if super::camera::is_camera(f) => super::camera::read(f, scene),
             (Field::Center, Some(ShapeSpec::Sphere { center, .. })) => *center,
             (Field::Radius, Some(ShapeSpec::Sphere { radius, .. }))
             | (Field::Radius, Some(ShapeSpec::Cylinder { radius, .. })) => num(*radius),
@@ -37,6 +38,7 @@ impl Target {
             (Field::Kr, _) => num(obj.map_or(0.0, |o| o.material.kr)),
             (Field::Kt, _) => num(obj.map_or(0.0, |o| o.material.kt)),
             (Field::Ior, _) => num(obj.map_or(1.0, |o| o.material.ior)),
+            (Field::TextureScale, _) => num(obj.map_or(1.0, |o| o.texture.scale())),
             (Field::Bump, _) => num(match obj.map(|o| o.material.bump) {
                 Some(Bump::Uniform(e) | Bump::Water(e)) => e,
                 _ => 0.0,
@@ -52,6 +54,9 @@ impl Target {
     /// Puts `v` into `scene` (checked with `check` beforehand), rebuilding the shape from
     /// its record when the field is geometric.
     pub fn apply(&self, scene: &mut Scene, v: DVec3) {
+        if super::camera::is_camera(self.field) {
+            return super::camera::put(self.field, scene, v);
+        }
         self.put(scene, v);
         // An extension object's record says what its object says, as the file would.
         if let Some(ShapeSpec::Ext { item, .. }) = scene.specs.get(self.index) {
@@ -93,6 +98,10 @@ impl Target {
             Field::Color | Field::Color1 | Field::Color2 | Field::Color3 => {
                 set_color(&mut scene.objects[i].texture, self.field, v)
             }
+            Field::TextureScale => {
+                let texture = &mut scene.objects[i].texture;
+                *texture = std::mem::replace(texture, Texture::Uniform(DVec3::ZERO)).scaled(x)
+            }
             Field::Kd => scene.objects[i].material.kd = x,
             Field::Kr => scene.objects[i].material.kr = x,
             Field::Kt => scene.objects[i].material.kt = x,
@@ -109,6 +118,9 @@ impl Target {
             Field::LightColor => scene.lights[i].color = v,
             Field::Intensity => scene.lights[i].intensity = x,
             Field::FogDistance => scene.fog = fog_with_distance(scene.fog, x),
+            Field::CameraPosition | Field::CameraLookAt | Field::CameraFov => {
+                super::camera::put(self.field, scene, v)
+            }
             Field::Ext(f) => {
                 super::ext::write(&mut scene.ext, &f, v);
                 if let super::Record::Object(item) = f.record {
@@ -139,16 +151,16 @@ fn fog_with_distance(fog: Fog, d: f64) -> Fog {
 
 /// A texture's first, second and third colours (zero where it has none).
 fn colors(t: &Texture) -> (DVec3, DVec3, DVec3) {
-    match *t {
+    match *t.pattern() {
         Texture::Uniform(c) => (c, DVec3::ZERO, DVec3::ZERO),
         Texture::Checker(a, b) | Texture::Wood(a, b) | Texture::Marble(a, b) => (a, b, DVec3::ZERO),
         Texture::Perlin(a, b, c) => (a, b, c),
-        Texture::Image(_) => (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO),
+        Texture::Image(_) | Texture::Scaled(..) => (DVec3::ZERO, DVec3::ZERO, DVec3::ZERO),
     }
 }
 
 fn set_color(t: &mut Texture, field: Field, v: DVec3) {
-    match (t, field) {
+    match (t.pattern_mut(), field) {
         (Texture::Uniform(c), Field::Color) => *c = v,
         (
             Texture::Checker(c, _)

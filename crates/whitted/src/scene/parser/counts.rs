@@ -49,12 +49,13 @@ impl Counts<'_> {
         let Some(first) = record.first else {
             return error;
         };
-        // A record cut short by the end of the file says nothing of the counts.
-        let mut all = Lexer::new(src);
-        let on_line: Vec<Token> = all.by_ref().filter(|t| t.line == first.line).collect();
-        if error.loc().map(|l| (l.line, l.column)) == Some(all.position()) {
+        // A record cut short by the end of the file (its error just past the file's last
+        // value) says nothing of the counts.
+        let end = Lexer::new(src).last().map(|t| super::missing::end_of(&t));
+        if end.is_some() && error.loc().map(|l| (l.line, l.column)) == end {
             return error;
         }
+        let on_line: Vec<Token> = Lexer::new(src).filter(|t| t.line == first.line).collect();
         // The record must begin its line for the line to be a record.
         if on_line.first() != Some(&first) {
             return error;

@@ -74,7 +74,7 @@ pub(super) fn read(p: &mut Parser<'_>, report: [u64; 4]) -> Result<Extension> {
         base,
         out: Extension::default(),
     };
-    while let Some(tok) = ext.p.lexer.next() {
+    while let Some(tok) = ext.p.next() {
         ext.record(tok)?;
     }
     Ok(ext.out)
@@ -167,7 +167,7 @@ impl<'a> Ext<'_, 'a> {
         let mut children = Vec::new();
         loop {
             self.enter(op.keyword(), n, within);
-            let Some(child) = self.p.lexer.next() else {
+            let Some(child) = self.p.next() else {
                 let (line, column) = self.p.lexer.position();
                 let msg = format!(
                     "the {} block of line {} has no 'end' (the file ends inside it)",

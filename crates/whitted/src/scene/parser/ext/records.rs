@@ -205,7 +205,7 @@ impl<'a> Ext<'_, 'a> {
             let Some(word) = keywords::find(keywords::MODIFIERS, tok.text) else {
                 break;
             };
-            self.p.lexer.next();
+            self.p.next();
             if !allowed.contains(&word) {
                 let msg = match word {
                     "fade" if record == "directional" => {
