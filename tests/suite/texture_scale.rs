@@ -100,3 +100,22 @@ fn a_scale_of_a_one_colour_texture_or_below_zero_is_refused_at_the_track() {
         );
     }
 }
+
+#[test]
+fn a_new_scale_makes_the_frame_stale() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    std::fs::write(d.join("scene.txt"), scene_with_eye([0.0, 3.0, 8.0])).unwrap();
+    let path = d.join("m.toml");
+    let status = |scale: f64| {
+        let text = manifest("scene.txt", &held("sphere 3 texture_scale", scale));
+        std::fs::write(&path, text + "[output]\ndir = \"out\"\n").unwrap();
+        let out = animate().arg("status").arg(&path).output().unwrap();
+        out.status.code()
+    };
+    status(2.0);
+    animate().arg(&path).arg("-q").assert().success();
+    assert_eq!(status(2.0), Some(0), "rendered at 2: up to date");
+    assert_eq!(status(3.0), Some(1), "a scale of 3: stale");
+    assert_eq!(status(1.0), Some(1), "a scale of 1 (no scale): stale");
+}

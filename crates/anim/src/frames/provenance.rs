@@ -104,6 +104,12 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
         for c in colors {
             v(c, &mut f);
         }
+        // A pattern's `texture_scale` (nothing at 1, so that digests stay what they were).
+        let scale = obj.texture.scale();
+        if scale != 1.0 {
+            f(11.0);
+            f(scale);
+        }
         // A texture's scale (nothing at 1, so that digests stay what they were).
         if obj.texture.scale() != 1.0 {
             f(10.0);
