@@ -223,6 +223,47 @@ fn the_page_in_chromium() {
         "{info}"
     );
     shot(&mut b, "pick.png");
+    // The picked point is marked where it was clicked.
+    let marker: Value = serde_json::from_str(
+        b.eval("(() => { const m = document.getElementById('marker'); return JSON.stringify({ hidden: m.hidden, r: m.getBoundingClientRect() }); })()")
+            .as_str()
+            .unwrap(),
+    )
+    .unwrap();
+    assert_eq!(marker["hidden"], false, "{marker}");
+    let centre = |k: &str, size: &str| {
+        marker["r"][k].as_f64().unwrap() + marker["r"][size].as_f64().unwrap() / 2.0
+    };
+    let (mx, my) = (centre("left", "width"), centre("top", "height"));
+    let (cx, cy) = (
+        left + (f64::from(x) + 0.5) * k,
+        top + (f64::from(y) + 0.5) * k,
+    );
+    assert!(
+        (mx - cx).abs() < 2.5 && (my - cy).abs() < 2.5,
+        "marker at ({mx}, {my}), click at ({cx}, {cy})"
+    );
+    // After a reload the same point is asked again: the line describes the scene shown.
+    let before = info.as_str().unwrap().to_string();
+    std::fs::write(&manifest, good.replace("radius = 8.0", "radius = 6.0")).unwrap();
+    reload(
+        &mut b,
+        "edit → the pick line asked again",
+        "document.body.dataset.pickGen === '5'",
+    );
+    let (_, p) = v.json(&format!("/api/pick?n=2&x={x}&y={y}"));
+    let now = b.eval("document.getElementById('pickName').textContent + ' ' + document.getElementById('pickInfo').textContent");
+    let now = now.as_str().unwrap();
+    assert_ne!(
+        now,
+        format!("{name} {before}"),
+        "the pick line did not change"
+    );
+    let want = p["hit"]["object"].as_str().unwrap_or("nothing");
+    assert!(
+        now.starts_with(&format!("{want} frame 2 ({x}, {y})")),
+        "{now} (the server: {want})"
+    );
 }
 
 /// The figures of the report (not a timed test): on animations/orbit.toml, from a saved

@@ -1,6 +1,6 @@
 // animate view: the page. It asks the server for frames (a quarter size first, then the
 // whole frame), follows the manifest through a long poll (/api/wait), shows the folder's
-// state and names what a click hits. No library, no network beyond this server.
+// state and names what a click hits (and asks again after each reload). No library, no network beyond this server.
 "use strict";
 const $ = (id) => document.getElementById(id);
 const client = "p" + Math.random().toString(36).slice(2, 12);
@@ -108,6 +108,7 @@ async function follow() {
       if (s.generation !== view.gen) {
         applyState(s);
         if (!s.error && !view.playing) show(view.cur);
+        if (!s.error) pick(); // the marked point, in the scene as it is now
         refreshStrip();
       }
     } catch (e) {
@@ -165,13 +166,33 @@ async function play() {
   }
 }
 
-async function pickAt(e) {
+// A click names what is at that pixel of the current frame; the point stays marked, and
+// after a reload of the manifest it is asked again, so the line never describes a scene
+// that is no longer the one shown.
+function pickAt(e) {
   const s = view.state;
   if (!s || s.frames == null) return;
   const img = $("frame");
   const x = Math.min(s.width - 1, Math.floor((e.offsetX / img.clientWidth) * s.width));
   const y = Math.min(s.height - 1, Math.floor((e.offsetY / img.clientHeight) * s.height));
-  const r = await fetch(`/api/pick?n=${view.cur}&x=${x}&y=${y}`);
+  view.picked = { x, y };
+  pick();
+}
+
+function placeMarker() {
+  const m = $("marker"), s = view.state, img = $("frame");
+  if (!view.picked || !s || !s.width) { m.hidden = true; return; }
+  m.style.left = `${((view.picked.x + 0.5) / s.width) * img.clientWidth}px`;
+  m.style.top = `${((view.picked.y + 0.5) / s.height) * img.clientHeight}px`;
+  m.hidden = false;
+}
+
+async function pick() {
+  if (!view.picked) return;
+  const { x, y } = view.picked;
+  const n = view.cur, gen = view.gen;
+  placeMarker();
+  const r = await fetch(`/api/pick?n=${n}&x=${x}&y=${y}`);
   const p = await r.json();
   const f = (v) => v.map((c) => c.toFixed(3)).join(", ");
   if (!r.ok) {
@@ -179,16 +200,17 @@ async function pickAt(e) {
     $("pickInfo").textContent = "";
   } else if (!p.hit) {
     $("pickName").textContent = "nothing";
-    $("pickInfo").textContent = `(${x}, ${y}): the ray leaves the scene`;
+    $("pickInfo").textContent = `frame ${n} (${x}, ${y}): the ray leaves the scene`;
   } else {
     const h = p.hit, m = h.material;
     $("pickName").textContent = h.object;
     $("pickInfo").textContent =
-      `(${x}, ${y}) · ${h.texture.kind} ${h.texture.colors.map((c) => `(${f(c)})`).join(" ")}` +
+      `frame ${n} (${x}, ${y}) · ${h.texture.kind} ${h.texture.colors.map((c) => `(${f(c)})`).join(" ")}` +
       ` · Kd ${m.kd} Kr ${m.kr} Kt ${m.kt} Ior ${m.ior} bump ${m.bump_type} ${m.bump_value}` +
       ` · distance ${h.distance.toFixed(3)} · normal (${f(h.normal)})`;
   }
   document.body.dataset.pick = p.hit ? p.hit.object : "nothing";
+  document.body.dataset.pickGen = gen;
 }
 
 function step(d) {
@@ -204,6 +226,7 @@ $("play").onclick = () => (view.playing ? pause() : play());
 $("prev").onclick = () => step(-1);
 $("next").onclick = () => step(1);
 $("frame").addEventListener("click", pickAt);
+window.addEventListener("resize", placeMarker);
 document.addEventListener("keydown", (e) => {
   if (e.target === $("frameNo")) return;
   if (e.key === "ArrowLeft") { step(-1); e.preventDefault(); }
