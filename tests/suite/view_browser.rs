@@ -223,6 +223,13 @@ fn the_page_in_chromium() {
         "{info}"
     );
     shot(&mut b, "pick.png");
+    // The whole frame's drawing time is shown beside the controls.
+    let drawn = b.eval("document.getElementById('drawn').textContent");
+    let drawn = drawn.as_str().unwrap();
+    assert!(
+        drawn.starts_with("frame 2 drawn in ") && drawn.ends_with(" ms"),
+        "{drawn}"
+    );
     // The picked point is marked where it was clicked.
     let marker: Value = serde_json::from_str(
         b.eval("(() => { const m = document.getElementById('marker'); return JSON.stringify({ hidden: m.hidden, r: m.getBoundingClientRect() }); })()")

@@ -143,6 +143,16 @@ fn the_whole_frame_is_the_frame_animate_writes() {
     let r = v.get("/api/frame?n=5&scale=1&format=raw&client=t");
     assert_eq!(r.status, 200, "{}", r.text());
     assert_eq!(r.header("x-size"), Some("64x48"));
+    // How long the drawing took, in seconds; the same figure again from the cache.
+    let secs = r
+        .header("x-render-seconds")
+        .map(|s| s.parse::<f64>().unwrap());
+    assert!(secs.is_some_and(|s| s > 0.0 && s < 60.0), "{secs:?}");
+    let again = v.get("/api/frame?n=5&scale=1&format=raw&client=t");
+    let again = again
+        .header("x-render-seconds")
+        .map(|s| s.parse::<f64>().unwrap());
+    assert_eq!(again, secs, "a cached frame keeps its drawing time");
     assert!(
         r.body == out.stdout,
         "the served frame 5 differs from animate's"

@@ -37,8 +37,9 @@ pub enum Encoding {
 
 /// What a frame request gives.
 pub enum Drawn {
-    /// The encoded frame, its size.
-    Frame(Arc<Vec<u8>>, u32, u32),
+    /// The encoded frame, its size, and the seconds its drawing and encoding took (when it
+    /// was drawn: a frame from the cache keeps its own).
+    Frame(Arc<Vec<u8>>, u32, u32, f64),
     /// A newer request of the same client came first.
     Superseded,
 }
@@ -50,8 +51,8 @@ struct Slot {
 }
 
 type Key = (u64, u32, u32, Encoding);
-/// A cached frame: its key, bytes and size.
-type Entry = (Key, Arc<Vec<u8>>, u32, u32);
+/// A cached frame: its key, bytes, size and drawing seconds.
+type Entry = (Key, Arc<Vec<u8>>, u32, u32, f64);
 
 /// The frame service: client slots, the cache, and the threads that draw.
 pub struct Frames {
@@ -108,23 +109,23 @@ impl Frames {
         Arc::clone(clients.entry(client.to_string()).or_default())
     }
 
-    fn cached(&self, key: &Key) -> Option<(Arc<Vec<u8>>, u32, u32)> {
+    fn cached(&self, key: &Key) -> Option<Drawn> {
         let cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
         cache
             .iter()
             .find(|(k, ..)| k == key)
-            .map(|(_, b, w, h)| (Arc::clone(b), *w, *h))
+            .map(|(_, b, w, h, s)| Drawn::Frame(Arc::clone(b), *w, *h, *s))
     }
 
     /// Keeps a frame of project `key.0`, dropping those of older projects; a frame of an
     /// older project than one cached (a render begun before a reload) is not kept.
-    fn keep(&self, key: Key, bytes: Arc<Vec<u8>>, w: u32, h: u32) {
+    fn keep(&self, key: Key, bytes: Arc<Vec<u8>>, w: u32, h: u32, secs: f64) {
         let mut cache = self.cache.lock().unwrap_or_else(|e| e.into_inner());
         if cache.iter().any(|(k, ..)| k.0 > key.0) {
             return;
         }
         cache.retain(|(k, ..)| k.0 == key.0);
-        cache.push_back((key, bytes, w, h));
+        cache.push_back((key, bytes, w, h, secs));
         let mut total: usize = cache.iter().map(|(_, b, ..)| b.len()).sum();
         while total > CACHE_BYTES && cache.len() > 1 {
             if let Some((_, b, ..)) = cache.pop_front() {
@@ -146,22 +147,24 @@ impl Frames {
         let key = (loaded.project_id, frame, scale, encoding);
         let slot = self.slot(client);
         let ticket = slot.latest.fetch_add(1, Ordering::SeqCst) + 1;
-        if let Some((b, w, h)) = self.cached(&key) {
-            return Ok(Drawn::Frame(b, w, h));
+        if let Some(drawn) = self.cached(&key) {
+            return Ok(drawn);
         }
         let _busy = slot.busy.lock().unwrap_or_else(|e| e.into_inner());
         if slot.latest.load(Ordering::SeqCst) != ticket {
             return Ok(Drawn::Superseded);
         }
-        if let Some((b, w, h)) = self.cached(&key) {
-            return Ok(Drawn::Frame(b, w, h));
+        if let Some(drawn) = self.cached(&key) {
+            return Ok(drawn);
         }
+        let start = std::time::Instant::now();
         let (bytes, w, h) = self
             .pool
             .install(|| draw(project, frame, scale, encoding))?;
+        let secs = start.elapsed().as_secs_f64();
         let bytes = Arc::new(bytes);
-        self.keep(key, Arc::clone(&bytes), w, h);
-        Ok(Drawn::Frame(bytes, w, h))
+        self.keep(key, Arc::clone(&bytes), w, h, secs);
+        Ok(Drawn::Frame(bytes, w, h, secs))
     }
 }
 
@@ -200,13 +203,13 @@ mod tests {
     fn a_stale_frame_neither_wipes_nor_joins_the_cache() {
         let frames = service();
         let bytes = || Arc::new(vec![1u8; 3]);
-        frames.keep((2, 0, 1, Encoding::Raw), bytes(), 1, 1);
+        frames.keep((2, 0, 1, Encoding::Raw), bytes(), 1, 1, 0.1);
         // A render begun before the reload ends after it.
-        frames.keep((1, 0, 1, Encoding::Raw), bytes(), 1, 1);
+        frames.keep((1, 0, 1, Encoding::Raw), bytes(), 1, 1, 0.1);
         assert!(frames.cached(&(2, 0, 1, Encoding::Raw)).is_some());
         assert!(frames.cached(&(1, 0, 1, Encoding::Raw)).is_none());
         // A newer generation replaces the older ones.
-        frames.keep((3, 0, 1, Encoding::Raw), bytes(), 1, 1);
+        frames.keep((3, 0, 1, Encoding::Raw), bytes(), 1, 1, 0.1);
         assert!(frames.cached(&(2, 0, 1, Encoding::Raw)).is_none());
         assert!(frames.cached(&(3, 0, 1, Encoding::Raw)).is_some());
     }

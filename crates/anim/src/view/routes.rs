@@ -256,7 +256,7 @@ fn frame(ctx: &Context, query: &str) -> Result<Reply, Reply> {
     };
     let drawn = ctx.frames.get(&loaded, &p, client, n, scale, encoding);
     match drawn {
-        Ok(Drawn::Frame(body, w, h)) => Ok(Reply {
+        Ok(Drawn::Frame(body, w, h, secs)) => Ok(Reply {
             status: 200,
             content_type: match encoding {
                 Encoding::Png => "image/png",
@@ -267,6 +267,7 @@ fn frame(ctx: &Context, query: &str) -> Result<Reply, Reply> {
                 ("X-Frame", n.to_string()),
                 ("X-Size", format!("{w}x{h}")),
                 ("X-Generation", loaded.generation.to_string()),
+                ("X-Render-Seconds", format!("{secs:.4}")),
             ],
         }),
         Ok(Drawn::Superseded) => Err(Reply::error(

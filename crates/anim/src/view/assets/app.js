@@ -20,9 +20,10 @@ async function frame(n, scale, signalToken) {
     throw new Error(why.error);
   }
   const gen = Number(r.headers.get("X-Generation"));
+  const secs = Number(r.headers.get("X-Render-Seconds"));
   const blob = await r.blob();
   if (signalToken !== view.token) return null;
-  return { blob, gen };
+  return { blob, gen, secs };
 }
 
 function put(img, got, n, scale) {
@@ -35,6 +36,10 @@ function put(img, got, n, scale) {
       img.dataset.scale = scale;
       img.dataset.gen = got.gen;
       document.body.dataset.shown = `${got.gen}:${n}:${scale}`;
+      if (scale === 1) {
+        $("drawn").textContent = `frame ${n} drawn in ${(got.secs * 1000).toFixed(0)} ms`;
+        document.body.dataset.drawn = `${n}:${got.secs}`;
+      }
       note("shown", { gen: got.gen, n, scale });
       resolve();
     };
