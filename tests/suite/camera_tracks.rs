@@ -6,33 +6,7 @@
 
 use crate::support;
 
-use std::path::Path;
 use support::*;
-
-/// A folder holding `scene.txt` with its eye at (0, 3, 8).
-fn folder() -> tempfile::TempDir {
-    let dir = tempfile::tempdir().unwrap();
-    std::fs::write(
-        dir.path().join("scene.txt"),
-        scene_with_eye([0.0, 3.0, 8.0]),
-    )
-    .unwrap();
-    dir
-}
-
-/// Frame `frame` of `manifest` (written into `dir` as `name.toml`), as pixels.
-fn frame(dir: &Path, name: &str, manifest: &str, frame: u32) -> Vec<u8> {
-    let path = dir.join(format!("{name}.toml"));
-    std::fs::write(&path, manifest).unwrap();
-    let out = dir.join(name);
-    animate()
-        .arg(&path)
-        .args(["--frames", &frame.to_string(), "-q", "-o"])
-        .arg(&out)
-        .assert()
-        .success();
-    pixels(&out.join(format!("frame_{frame:04}.png")))
-}
 
 /// A 5-frame manifest over `scene.txt`: `camera` as its `[camera]` table's lines (none
 /// when empty), then one track of `target` from `a` at frame 0 to `b` at frame 4.
@@ -54,54 +28,54 @@ fn still(scene_file: &str, camera: &str) -> String {
 
 #[test]
 fn a_camera_position_track_is_the_still_camera_at_its_value() {
-    let dir = folder();
+    let dir = eye_folder();
     let d = dir.path();
     let m = tracked("", "camera position", "[0.0, 3.0, 8.0]", "[8.0, 3.0, 0.0]");
-    let tracked = frame(d, "tracked", &m, 2);
+    let tracked = frame_of(d, "tracked", &m, 2);
     // Half-way: (4, 3, 4), exactly.
     std::fs::write(d.join("at.txt"), scene_with_eye([4.0, 3.0, 4.0])).unwrap();
-    let by_hand = frame(d, "still", &still("at.txt", ""), 0);
+    let by_hand = frame_of(d, "still", &still("at.txt", ""), 0);
     assert!(tracked == by_hand, "frame 2 is not the camera at (4, 3, 4)");
-    let start = frame(d, "tracked0", &m, 0);
+    let start = frame_of(d, "tracked0", &m, 0);
     assert!(start != tracked, "the track moved nothing");
 }
 
 #[test]
 fn a_look_at_track_and_a_fov_track_are_the_table_values_at_that_frame() {
-    let dir = folder();
+    let dir = eye_folder();
     let d = dir.path();
     let m = tracked("", "camera look_at", "[0.0, 1.0, 0.0]", "[2.0, 1.0, 0.0]");
-    let by_hand = frame(
+    let by_hand = frame_of(
         d,
         "look",
         &still("scene.txt", "look_at = [1.0, 1.0, 0.0]"),
         0,
     );
-    assert!(frame(d, "look_track", &m, 2) == by_hand);
+    assert!(frame_of(d, "look_track", &m, 2) == by_hand);
     let m = tracked("", "camera fov", "30.0", "50.0");
-    let by_hand = frame(d, "fov", &still("scene.txt", "fov = 40.0"), 0);
-    assert!(frame(d, "fov_track", &m, 2) == by_hand);
+    let by_hand = frame_of(d, "fov", &still("scene.txt", "fov = 40.0"), 0);
+    assert!(frame_of(d, "fov_track", &m, 2) == by_hand);
     assert!(
-        frame(d, "fov_track0", &m, 0) != by_hand,
+        frame_of(d, "fov_track0", &m, 0) != by_hand,
         "the fov changed nothing"
     );
 }
 
 #[test]
 fn a_look_at_track_steers_a_spline_path_without_look_at_points() {
-    let dir = folder();
+    let dir = eye_folder();
     let d = dir.path();
     let path = "path = \"spline\"\nkeys = [{ frame = 0, position = [0.0, 3.0, 8.0] }, \
                 { frame = 4, position = [8.0, 3.0, 0.0] }]";
     let m = tracked(path, "camera look_at", "[0.0, 1.0, 0.0]", "[2.0, 1.0, 0.0]");
     let with_point = format!("{path}\nlook_at = [1.0, 1.0, 0.0]");
     let by_hand = tracked(&with_point, "sphere 1 kd", "0.1", "0.1");
-    assert!(frame(d, "spline_track", &m, 2) == frame(d, "spline_point", &by_hand, 2));
+    assert!(frame_of(d, "spline_track", &m, 2) == frame_of(d, "spline_point", &by_hand, 2));
 }
 
 #[test]
 fn a_track_beside_what_the_camera_table_gives_is_refused_at_its_line() {
-    let dir = folder();
+    let dir = eye_folder();
     let circle = "path = \"circle\"\ncenter = [0.0, 1.0, 0.0]\nradius = 8.0\nheight = 3.0";
     let cases = [
         (

@@ -6,7 +6,6 @@
 
 use crate::support;
 
-use std::path::Path;
 use support::*;
 
 /// A spline manifest over `scene.txt`: two keys at frames 0 and `end`, the first with
@@ -19,55 +18,30 @@ fn spline(frames: u32, end: u32, first: &str, extra: &str) -> String {
     )
 }
 
-/// Frame `frame` of `manifest` (written into `dir` as `name.toml`), as pixels.
-/// A folder holding `scene.txt`, the scene the splines' manifests name.
-fn project() -> tempfile::TempDir {
-    let dir = tempfile::tempdir().unwrap();
-    std::fs::write(
-        dir.path().join("scene.txt"),
-        scene_with_eye([0.0, 3.0, 8.0]),
-    )
-    .unwrap();
-    dir
-}
-
-fn frame(dir: &Path, name: &str, manifest: &str, frame: u32) -> Vec<u8> {
-    let path = dir.join(format!("{name}.toml"));
-    std::fs::write(&path, manifest).unwrap();
-    let out = dir.join(name);
-    animate()
-        .arg(&path)
-        .args(["--frames", &frame.to_string(), "-q", "-o"])
-        .arg(&out)
-        .assert()
-        .success();
-    pixels(&out.join(format!("frame_{frame:04}.png")))
-}
-
 #[test]
 fn a_camera_key_eases_its_segment() {
-    let dir = project();
+    let dir = eye_folder();
     let d = dir.path();
     // Eased in: u = 5/10 → e = 0.25 = 5/20 of the even path over 0 → 20.
-    let eased = frame(d, "in", &spline(11, 10, ", ease = \"in\"", ""), 5);
-    let even = frame(d, "even", &spline(21, 20, "", ""), 5);
+    let eased = frame_of(d, "in", &spline(11, 10, ", ease = \"in\"", ""), 5);
+    let even = frame_of(d, "even", &spline(21, 20, "", ""), 5);
     assert!(
         eased == even,
         "ease in at frame 5 is not the even path at u = 0.25"
     );
-    let half = frame(d, "half", &spline(21, 20, "", ""), 10);
+    let half = frame_of(d, "half", &spline(21, 20, "", ""), 10);
     assert!(eased != half, "the ease changed nothing");
     // Eased out: 1 − (1 − 0.5)² = 0.75 = 15/20.
-    let out = frame(d, "out", &spline(11, 10, ", ease = \"out\"", ""), 5);
-    assert!(out == frame(d, "even15", &spline(21, 20, "", ""), 15));
+    let out = frame_of(d, "out", &spline(11, 10, ", ease = \"out\"", ""), 5);
+    assert!(out == frame_of(d, "even15", &spline(21, 20, "", ""), 15));
     // The keys' own frames are kept: frame 10 is the last key's position either way.
-    let end = frame(d, "in10", &spline(11, 10, ", ease = \"in\"", ""), 10);
-    assert!(end == frame(d, "even20", &spline(21, 20, "", ""), 20));
+    let end = frame_of(d, "in10", &spline(11, 10, ", ease = \"in\"", ""), 10);
+    assert!(end == frame_of(d, "even20", &spline(21, 20, "", ""), 20));
 }
 
 #[test]
 fn ease_with_constant_speed_is_refused_at_its_key() {
-    let dir = project();
+    let dir = eye_folder();
     let m = dir.path().join("m.toml");
     let text = spline(11, 10, ", ease = \"in\"", "constant_speed = true\n");
     std::fs::write(&m, &text).unwrap();
@@ -93,19 +67,19 @@ fn ease_with_constant_speed_is_refused_at_its_key() {
 
 #[test]
 fn keys_in_seconds_are_the_frames_fps_makes_of_them() {
-    let dir = project();
+    let dir = eye_folder();
     let d = dir.path();
     // A spline key at "2s" at 5 fps is frame 10; at 10 fps "1s" is frame 10 too.
     let frames = spline(11, 10, "", "");
     let at_5fps = frames.replace("frames = 11", "frames = 11\nfps = 5");
     let seconds = at_5fps.replace("frame = 10,", "time = \"2s\",");
     assert!(seconds.contains("time = \"2s\""));
-    let want = frame(d, "frames", &frames, 5);
-    assert!(frame(d, "seconds", &seconds, 5) == want);
+    let want = frame_of(d, "frames", &frames, 5);
+    assert!(frame_of(d, "seconds", &seconds, 5) == want);
     let at_10fps = seconds
         .replace("fps = 5", "fps = 10")
         .replace("\"2s\"", "\"1s\"");
-    assert!(frame(d, "seconds10", &at_10fps, 5) == want);
+    assert!(frame_of(d, "seconds10", &at_10fps, 5) == want);
     // A track key at "0.75s" at 4 fps is frame 3 (round(3.0)); "0.625s" is 2.5: frame 3.
     let track = |when: &str| {
         format!(
@@ -114,15 +88,15 @@ fn keys_in_seconds_are_the_frames_fps_makes_of_them() {
              [output]\ndir = \"out\"\n"
         )
     };
-    let want = frame(d, "t-frames", &track("frame = 3"), 2);
-    assert!(frame(d, "t-seconds", &track("time = \"0.75s\""), 2) == want);
-    assert!(frame(d, "t-half", &track("time = \"0.625s\""), 2) == want);
-    assert!(frame(d, "t-earlier", &track("frame = 2"), 2) != want);
+    let want = frame_of(d, "t-frames", &track("frame = 3"), 2);
+    assert!(frame_of(d, "t-seconds", &track("time = \"0.75s\""), 2) == want);
+    assert!(frame_of(d, "t-half", &track("time = \"0.625s\""), 2) == want);
+    assert!(frame_of(d, "t-earlier", &track("frame = 2"), 2) != want);
 }
 
 #[test]
 fn bad_times_are_refused_where_they_are() {
-    let dir = project();
+    let dir = eye_folder();
     let m = dir.path().join("m.toml");
     let base = spline(11, 10, "", "").replace("frames = 11", "frames = 11\nfps = 10");
     for (edit, want) in [

@@ -5,7 +5,6 @@
 
 use crate::support;
 
-use std::path::Path;
 use support::*;
 
 /// The support scene (eye at (0, 3, 8)) with everything doubled.
@@ -34,39 +33,25 @@ fn held(target: &str, value: f64) -> String {
     format!("\n[[track]]\ntarget = \"{target}\"\nkeys = [{{ frame = 0, value = {value:?} }}]\n")
 }
 
-/// Frame 0 of `text` (written into `dir` as `name.toml`), as pixels.
-fn frame(dir: &Path, name: &str, text: &str) -> Vec<u8> {
-    let path = dir.join(format!("{name}.toml"));
-    std::fs::write(&path, text).unwrap();
-    let out = dir.join(name);
-    animate()
-        .arg(&path)
-        .args(["-q", "-o"])
-        .arg(&out)
-        .assert()
-        .success();
-    pixels(&out.join("frame_0000.png"))
-}
-
 #[test]
 fn a_world_twice_as_large_with_patterns_at_scale_two_is_the_same_picture() {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path();
     std::fs::write(d.join("scene.txt"), scene_with_eye([0.0, 3.0, 8.0])).unwrap();
     std::fs::write(d.join("doubled.txt"), DOUBLED).unwrap();
-    let original = frame(d, "original", &manifest("scene.txt", ""));
+    let original = frame_of(d, "original", &manifest("scene.txt", ""), 0);
     // Sphere 3 is wood, plane 1 the checker floor.
     let both = held("sphere 3 texture_scale", 2.0) + &held("plane 1 texture_scale", 2.0);
-    let scaled = frame(d, "scaled", &manifest("doubled.txt", &both));
+    let scaled = frame_of(d, "scaled", &manifest("doubled.txt", &both), 0);
     assert!(
         scaled == original,
         "the doubled world at scale 2 is another picture"
     );
-    let unscaled = frame(d, "unscaled", &manifest("doubled.txt", ""));
+    let unscaled = frame_of(d, "unscaled", &manifest("doubled.txt", ""), 0);
     assert!(unscaled != original, "doubling the world changed nothing");
     // Scale 1 is the file's own texture.
     let one = held("sphere 3 texture_scale", 1.0);
-    assert!(frame(d, "one", &manifest("scene.txt", &one)) == original);
+    assert!(frame_of(d, "one", &manifest("scene.txt", &one), 0) == original);
 }
 
 #[test]

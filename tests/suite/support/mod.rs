@@ -143,6 +143,32 @@ pub fn leftovers(dir: &Path) -> Vec<String> {
         .collect()
 }
 
+/// A folder holding `scene.txt`: `scene_with_eye` with its eye at (0, 3, 8).
+pub fn eye_folder() -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("scene.txt"),
+        scene_with_eye([0.0, 3.0, 8.0]),
+    )
+    .unwrap();
+    dir
+}
+
+/// Frame `frame` of `manifest` (written into `dir` as `name.toml`, rendered into the
+/// folder `name`), as pixels.
+pub fn frame_of(dir: &Path, name: &str, manifest: &str, frame: u32) -> Vec<u8> {
+    let path = dir.join(format!("{name}.toml"));
+    std::fs::write(&path, manifest).unwrap();
+    let out = dir.join(name);
+    animate()
+        .arg(&path)
+        .args(["--frames", &frame.to_string(), "-q", "-o"])
+        .arg(&out)
+        .assert()
+        .success();
+    pixels(&out.join(format!("frame_{frame:04}.png")))
+}
+
 /// The RGB pixels of a PNG file.
 pub fn pixels(path: &Path) -> Vec<u8> {
     image::open(path).unwrap().to_rgb8().into_raw()
