@@ -41,7 +41,7 @@ use crate::object::{Highlight, Light, Material, Object};
 use crate::shapes::{Cone, SmoothTriangle, Triangle};
 use crate::texture::{Color, Texture};
 use glam::DVec3;
-use reader::{Reader, Result};
+use reader::{Context, Reader, Result};
 use std::path::Path;
 
 /// The relative epsilon: a hit counts past `EPSILON_SCALE` times the scene's size.
@@ -113,7 +113,7 @@ pub fn parse(src: &str, file: &str) -> std::result::Result<Scene, SceneError> {
     let mut view: Option<View> = None;
     while let Some(tok) = r.next() {
         let at = (tok.line, tok.column);
-        r.context = format!("'{}' record on line {}", tok.text, tok.line);
+        r.context = Context::Record(tok.text, tok.line);
         match tok.text {
             "v" => {
                 if view.is_some() {
@@ -162,7 +162,7 @@ pub fn parse(src: &str, file: &str) -> std::result::Result<Scene, SceneError> {
         }
     }
     let Some(v) = view else {
-        r.context = "the whole file".into();
+        r.context = Context::WholeFile;
         return Err(r.error_at(r.end(), "no 'v' record: the file has no view".into()));
     };
     let n = b.lights.len() as f64;
@@ -267,9 +267,9 @@ fn read_polygon(r: &mut Reader, b: &mut Built, at: (usize, usize), smooth: bool)
     let mut v = Vec::with_capacity(n);
     let mut normals = Vec::new();
     for k in 1..=n {
-        v.push(r.vector(&format!("vertex {k} of {n}"))?);
+        v.push(r.vector(format_args!("vertex {k} of {n}"))?);
         if smooth {
-            normals.push(r.vector(&format!("normal {k} of {n}"))?);
+            normals.push(r.vector(format_args!("normal {k} of {n}"))?);
         }
     }
     let tris = polygon::triangulate(&v);
