@@ -15,12 +15,14 @@
 //! moves a hit point by a few ulps of its coordinates, far inside the same margin.
 
 mod build;
+mod node4;
 mod raybox;
 
 use crate::optics::Ray;
 use crate::shapes::Sphere;
 use glam::DVec3;
-use raybox::RayBox;
+use node4::{WideNode, LEAF};
+use raybox::{limit32, RayBox};
 
 /// Leaves hold at most this many spheres (unless the build runs out of depth).
 const LEAF_MAX: usize = 4;
@@ -29,10 +31,10 @@ const LEAF_MAX: usize = 4;
 pub const FLAT_MAX: usize = 12;
 /// SAH bins per split.
 const BINS: usize = 16;
-/// Deepest level the build creates (10,000 spheres need about 15); the traversal stack
-/// holds one entry per level.
+/// Deepest level the build creates (10,000 spheres need about 15). The four-wide tree
+/// is no deeper, and its traversal stacks at most three children per level.
 const MAX_DEPTH: usize = 32;
-const STACK: usize = MAX_DEPTH + 2;
+const STACK: usize = 3 * (MAX_DEPTH + 2);
 /// Relative box margin: δ = PAD · (|origin|∞ + scale + 1), see `RayBox::new`.
 const PAD: f64 = 1e-5;
 
@@ -120,7 +122,8 @@ const BLANK: Node = Node {
 /// `FLAT_MAX` primitives there are no nodes, only the primitives, opaque ones first.
 #[derive(Clone, Debug)]
 pub struct Bvh<P = Prim> {
-    nodes: Vec<Node>,
+    /// The four-wide nodes (`node4`), root at 0.
+    nodes: Vec<WideNode>,
     prims: Vec<P>,
     /// The largest coordinate magnitude of the boxes.
     scale: f64,
@@ -181,7 +184,7 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
             bvh.flat_opaque = bvh.prims.iter().filter(|p| !p.is_glass()).count();
             return bvh;
         }
-        bvh.nodes = build::build_tree(&mut items);
+        bvh.nodes = node4::collapse(&build::build_tree(&mut items));
         bvh.prims = items.into_iter().map(|it| it.prim).collect();
         bvh
     }
@@ -232,7 +235,8 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
     }
 
     /// `traverse` through the nodes (kept out of line, so that a query on a flat list
-    /// carries none of this).
+    /// carries none of this): each node's four boxes in one lane test, the children hit
+    /// entered nearest first, the others stacked with their entry parameters.
     #[inline(never)]
     fn traverse_tree(
         &self,
@@ -240,51 +244,61 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
         mut limit: f64,
         mut visit: impl FnMut(&P, f64) -> Option<f64>,
     ) {
-        let rb = &RayBox::new(ray, self.scale);
-        if rb.enter(&self.nodes[0], limit).is_none() {
+        let Some(rb) = RayBox::new(ray, self.scale) else {
+            // Beyond the lanes' range: every primitive, in the tree's order.
+            for prim in &self.prims {
+                match visit(prim, limit) {
+                    Some(l) => limit = l,
+                    None => return,
+                }
+            }
             return;
-        }
-        // Two plain arrays: cheaper to zero than an array of pairs.
-        let mut stack_node = [0u32; STACK];
-        let mut stack_t = [0.0f64; STACK];
+        };
+        let mut lim = limit32(limit);
+        // Three plain arrays: cheaper to zero than an array of triples.
+        let mut stack_ref = [0u32; STACK];
+        let mut stack_count = [0u32; STACK];
+        let mut stack_t = [0.0f32; STACK];
         let mut sp = 0usize;
-        let mut node = 0usize;
+        // The root, an interior node (a tree is never a single leaf without a node).
+        let (mut cur, mut count) = (0u32, 0u32);
         loop {
-            let n = &self.nodes[node];
-            if n.count > 0 {
-                let first = n.first as usize;
-                for prim in &self.prims[first..first + n.count as usize] {
+            if cur & LEAF != 0 {
+                let first = (cur & !LEAF) as usize;
+                for prim in &self.prims[first..first + count as usize] {
                     match visit(prim, limit) {
                         Some(l) => limit = l,
                         None => return,
                     }
                 }
+                lim = limit32(limit);
             } else {
-                let l = n.first as usize;
-                let hl = rb.enter(&self.nodes[l], limit);
-                let hr = rb.enter(&self.nodes[l + 1], limit);
-                match (hl, hr) {
-                    (Some(tl), Some(tr)) => {
-                        let (near, far, tfar) = if tl <= tr {
-                            (l, l + 1, tr)
-                        } else {
-                            (l + 1, l, tl)
-                        };
-                        stack_node[sp] = far as u32;
-                        stack_t[sp] = tfar;
+                let n = &self.nodes[cur as usize];
+                let (mask, t) = rb.enter4(n, lim);
+                if mask != 0 {
+                    // The slots hit, by entry parameter (insertion into at most four).
+                    let mut order = [0usize; 4];
+                    let mut k = 0;
+                    for s in 0..4 {
+                        if mask & (1 << s) != 0 {
+                            let mut j = k;
+                            while j > 0 && t[order[j - 1]] > t[s] {
+                                order[j] = order[j - 1];
+                                j -= 1;
+                            }
+                            order[j] = s;
+                            k += 1;
+                        }
+                    }
+                    for &s in order[1..k].iter().rev() {
+                        stack_ref[sp] = n.child[s];
+                        stack_count[sp] = n.count[s];
+                        stack_t[sp] = t[s];
                         sp += 1;
-                        node = near;
-                        continue;
                     }
-                    (Some(_), None) => {
-                        node = l;
-                        continue;
-                    }
-                    (None, Some(_)) => {
-                        node = l + 1;
-                        continue;
-                    }
-                    (None, None) => {}
+                    cur = n.child[order[0]];
+                    count = n.count[order[0]];
+                    continue;
                 }
             }
             // Next subtree from the stack whose entry is still within the limit.
@@ -293,23 +307,26 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
                     return;
                 }
                 sp -= 1;
-                if stack_t[sp] <= limit {
-                    node = stack_node[sp] as usize;
+                if stack_t[sp] <= lim {
+                    cur = stack_ref[sp];
+                    count = stack_count[sp];
                     break;
                 }
             }
         }
     }
 
-    /// The depth of the tree (1 for a single leaf), for tests and statistics.
+    /// The depth of the four-wide tree (1 for a root whose children are all leaves;
+    /// 0 for a flat list), for tests and statistics.
     pub fn depth(&self) -> usize {
-        fn walk(nodes: &[Node], i: usize) -> usize {
+        fn walk(nodes: &[WideNode], i: usize) -> usize {
             let n = &nodes[i];
-            if n.count > 0 {
-                1
-            } else {
-                1 + walk(nodes, n.first as usize).max(walk(nodes, n.first as usize + 1))
-            }
+            let below = (0..4)
+                .filter(|&s| n.child[s] & LEAF == 0 && n.count[s] == 0 && n.lo[0][s] <= n.hi[0][s])
+                .map(|s| walk(nodes, n.child[s] as usize))
+                .max()
+                .unwrap_or(0);
+            1 + below
         }
         if self.nodes.is_empty() {
             0
@@ -318,3 +335,6 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;

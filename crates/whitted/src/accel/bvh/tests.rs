@@ -1,0 +1,94 @@
+//! The four-wide tree's own parts: f32 rounding outward, the collapse, and the lanes'
+//! range; the whole queries are checked against the linear scans in `accel::tests`.
+
+use super::node4::{down, up};
+use super::*;
+
+#[test]
+fn rounding_to_f32_goes_outward() {
+    // 0.1 is not an f32: the nearest one, 0.100000001490116..., lies above it.
+    assert_eq!(up(0.1), 0.1f32);
+    assert_eq!(down(0.1), 0.099_999_994_f32);
+    assert_eq!(down(-0.1), -0.1f32);
+    assert_eq!(up(-0.1), -0.099_999_994_f32);
+    // Exact values stay; past f32's range the low side saturates at its largest value.
+    assert_eq!((down(0.5), up(0.5)), (0.5, 0.5));
+    assert_eq!((down(1e39), up(1e39)), (f32::MAX, f32::INFINITY));
+    assert_eq!((down(-1e39), up(-1e39)), (f32::NEG_INFINITY, -f32::MAX));
+}
+
+/// A row of `n` unit spheres along x, one every 3 units, from `x0`.
+fn row(n: usize, x0: f64) -> Bvh<Prim> {
+    let prims = (0..n)
+        .map(|i| Prim {
+            sphere: Sphere::new(DVec3::new(x0 + 3.0 * i as f64, 0.0, 0.0), 1.0),
+            index: i as u32,
+            glass: false,
+            opaque: true,
+        })
+        .collect();
+    Bvh::build(prims, Prim::bounds)
+}
+
+/// The primitives `traverse` offers, in its order, with no limit.
+fn offered(bvh: &Bvh<Prim>, ray: &Ray) -> Vec<u32> {
+    let mut seen = Vec::new();
+    bvh.traverse(ray, f64::INFINITY, |p, l| {
+        seen.push(p.index);
+        Some(l)
+    });
+    seen
+}
+
+#[test]
+fn the_collapse_keeps_every_primitive_once() {
+    let bvh = row(1000, 0.0);
+    assert!(bvh.depth() >= 4 && bvh.depth() <= 8, "{}", bvh.depth());
+    // A ray along the row meets every box: each sphere is offered exactly once,
+    // nearest first.
+    let seen = offered(&bvh, &Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X));
+    assert_eq!(seen, (0..1000).collect::<Vec<u32>>());
+    // The other way round, the leaves farthest first (a leaf's spheres in its order).
+    let mut back = offered(&bvh, &Ray::new(DVec3::new(3005.0, 0.0, 0.0), -DVec3::X));
+    assert!(back[0] >= 1000 - LEAF_MAX as u32 && back[999] < LEAF_MAX as u32);
+    back.sort();
+    assert_eq!(back, (0..1000).collect::<Vec<u32>>());
+}
+
+#[test]
+fn a_ray_beside_the_row_is_offered_nothing() {
+    let bvh = row(1000, 0.0);
+    let beside = Ray::new(DVec3::new(-5.0, 1.5, 0.0), DVec3::X);
+    assert!(offered(&bvh, &beside).is_empty());
+    // Parallel to a box's face, just inside its margin (|o| + scale ≈ 3000, δ ≈ 0.03):
+    // offered, since the widened box contains the line.
+    let inside = Ray::new(DVec3::new(-5.0, 1.0 + 0.02, 0.0), DVec3::X);
+    assert_eq!(offered(&bvh, &inside).len(), 1000);
+}
+
+#[test]
+fn beyond_the_lanes_range_every_primitive_is_offered() {
+    // Coordinates near 1e18 and more: the lanes decline and the traversal falls back
+    // to every primitive, which loses nothing.
+    let bvh = row(40, 1e18);
+    let beside = Ray::new(DVec3::new(1e18, 5.0, 0.0), DVec3::Y);
+    assert_eq!(offered(&bvh, &beside).len(), 40);
+    // Within the range the same shape of query is pruned.
+    let near = row(40, 1e6);
+    let beside = Ray::new(DVec3::new(1e6 + 1.5, 5.0, 0.0), DVec3::Y);
+    assert!(offered(&near, &beside).len() < 40);
+}
+
+#[test]
+fn zero_and_negative_zero_directions_enter_by_their_own_corners() {
+    let bvh = row(100, 0.0);
+    for d in [
+        DVec3::new(1.0, 0.0, 0.0),
+        DVec3::new(1.0, -0.0, -0.0),
+        DVec3::new(-1.0, 0.0, -0.0),
+    ] {
+        let o = if d.x > 0.0 { -5.0 } else { 400.0 };
+        let seen = offered(&bvh, &Ray::new(DVec3::new(o, 0.5, -0.5), d));
+        assert_eq!(seen.len(), 100, "{d:?}");
+    }
+}
