@@ -57,7 +57,7 @@ impl Accel {
             }
         } else {
             let mut blocked = false;
-            self.tree.traverse(&ray, dist, |prim, limit| {
+            self.tree.traverse_any(&ray, dist, |prim, limit| {
                 if prim.opaque && prim.sphere.hit(&ray, dist).is_some() {
                     blocked = true;
                     return None;
@@ -108,7 +108,7 @@ impl Accel {
     #[cold]
     fn mesh_crossings(&self, id: u32, ray: &Ray, dist: f64) -> Vec<f64> {
         let mut ts = Vec::new();
-        self.shapes.traverse(ray, dist, |prim, limit| {
+        self.shapes.traverse_any(ray, dist, |prim, limit| {
             if prim.mesh == id {
                 ts.extend(self.shape_hit(prim, ray, dist));
             }
@@ -134,7 +134,7 @@ impl Accel {
             }
         }
         let mut blocked = false;
-        self.tree.traverse(ray, dist, |prim, limit| {
+        self.tree.traverse_any(ray, dist, |prim, limit| {
             if prim.opaque {
                 if prim.sphere.hit(ray, dist).is_some() {
                     blocked = true;
@@ -151,7 +151,7 @@ impl Accel {
             return Color::ZERO;
         }
         if !self.shapes.is_empty() {
-            self.shapes.traverse(ray, dist, |prim, limit| {
+            self.shapes.traverse_any(ray, dist, |prim, limit| {
                 if prim.opaque {
                     if self.shape_hit(prim, ray, dist).is_some() {
                         blocked = true;
@@ -204,7 +204,7 @@ impl Accel {
     #[inline(never)]
     fn shapes_blocked(&self, ray: &Ray, dist: f64) -> bool {
         let mut blocked = false;
-        self.shapes.traverse(ray, dist, |prim, limit| {
+        self.shapes.traverse_any(ray, dist, |prim, limit| {
             if prim.opaque && self.shape_hit(prim, ray, dist).is_some() {
                 blocked = true;
                 return None;

@@ -17,12 +17,12 @@
 mod build;
 mod node4;
 mod raybox;
+mod walk;
 
 use crate::optics::Ray;
 use crate::shapes::Sphere;
 use glam::DVec3;
 use node4::{WideNode, LEAF};
-use raybox::{limit32, RayBox};
 
 /// Leaves hold at most this many spheres (unless the build runs out of depth).
 const LEAF_MAX: usize = 4;
@@ -213,10 +213,24 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
     }
 
     /// Calls `visit` on every primitive whose (widened) box the ray meets at some t in
-    /// [0, limit()], nearer subtrees first (a flat list: every primitive, in order). `visit` returns the new limit (it may shrink
-    /// it, as a nearest-hit search does) or `None` to stop at once (an any-hit search).
+    /// [0, limit], nearer subtrees first (a flat list: every primitive, in order).
+    /// `visit` returns the new limit (it may shrink it, as a nearest-hit search does) or
+    /// `None` to stop at once (an any-hit search).
     #[inline(always)]
-    pub fn traverse(
+    pub fn traverse(&self, ray: &Ray, limit: f64, visit: impl FnMut(&P, f64) -> Option<f64>) {
+        self.query::<true>(ray, limit, visit)
+    }
+
+    /// `traverse` in whatever order the tree gives, for visitors that never shrink the
+    /// limit (shadow rays: every crossing counts, or the first opaque blocker stops it),
+    /// where sorting the children by distance buys nothing.
+    #[inline(always)]
+    pub fn traverse_any(&self, ray: &Ray, limit: f64, visit: impl FnMut(&P, f64) -> Option<f64>) {
+        self.query::<false>(ray, limit, visit)
+    }
+
+    #[inline(always)]
+    fn query<const ORDERED: bool>(
         &self,
         ray: &Ray,
         mut limit: f64,
@@ -231,89 +245,7 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
             }
             return;
         }
-        self.traverse_tree(ray, limit, visit)
-    }
-
-    /// `traverse` through the nodes (kept out of line, so that a query on a flat list
-    /// carries none of this): each node's four boxes in one lane test, the children hit
-    /// entered nearest first, the others stacked with their entry parameters.
-    #[inline(never)]
-    fn traverse_tree(
-        &self,
-        ray: &Ray,
-        mut limit: f64,
-        mut visit: impl FnMut(&P, f64) -> Option<f64>,
-    ) {
-        let Some(rb) = RayBox::new(ray, self.scale) else {
-            // Beyond the lanes' range: every primitive, in the tree's order.
-            for prim in &self.prims {
-                match visit(prim, limit) {
-                    Some(l) => limit = l,
-                    None => return,
-                }
-            }
-            return;
-        };
-        let mut lim = limit32(limit);
-        // Three plain arrays: cheaper to zero than an array of triples.
-        let mut stack_ref = [0u32; STACK];
-        let mut stack_count = [0u32; STACK];
-        let mut stack_t = [0.0f32; STACK];
-        let mut sp = 0usize;
-        // The root, an interior node (a tree is never a single leaf without a node).
-        let (mut cur, mut count) = (0u32, 0u32);
-        loop {
-            if cur & LEAF != 0 {
-                let first = (cur & !LEAF) as usize;
-                for prim in &self.prims[first..first + count as usize] {
-                    match visit(prim, limit) {
-                        Some(l) => limit = l,
-                        None => return,
-                    }
-                }
-                lim = limit32(limit);
-            } else {
-                let n = &self.nodes[cur as usize];
-                let (mask, t) = rb.enter4(n, lim);
-                if mask != 0 {
-                    // The slots hit, by entry parameter (insertion into at most four).
-                    let mut order = [0usize; 4];
-                    let mut k = 0;
-                    for s in 0..4 {
-                        if mask & (1 << s) != 0 {
-                            let mut j = k;
-                            while j > 0 && t[order[j - 1]] > t[s] {
-                                order[j] = order[j - 1];
-                                j -= 1;
-                            }
-                            order[j] = s;
-                            k += 1;
-                        }
-                    }
-                    for &s in order[1..k].iter().rev() {
-                        stack_ref[sp] = n.child[s];
-                        stack_count[sp] = n.count[s];
-                        stack_t[sp] = t[s];
-                        sp += 1;
-                    }
-                    cur = n.child[order[0]];
-                    count = n.count[order[0]];
-                    continue;
-                }
-            }
-            // Next subtree from the stack whose entry is still within the limit.
-            loop {
-                if sp == 0 {
-                    return;
-                }
-                sp -= 1;
-                if stack_t[sp] <= lim {
-                    cur = stack_ref[sp];
-                    count = stack_count[sp];
-                    break;
-                }
-            }
-        }
+        walk::walk::<P, ORDERED>(&self.nodes, &self.prims, self.scale, ray, limit, visit)
     }
 
     /// The depth of the four-wide tree (1 for a root whose children are all leaves;

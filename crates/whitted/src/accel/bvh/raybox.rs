@@ -44,7 +44,8 @@ impl RayBox {
     #[inline]
     pub(super) fn new(ray: &Ray, scale: f64) -> Option<RayBox> {
         let reach = ray.origin.abs().max_element() + scale;
-        if !(reach < F32_RANGE) {
+        // (A NaN reach, from a NaN origin, declines too.)
+        if reach.partial_cmp(&F32_RANGE) != Some(std::cmp::Ordering::Less) {
             return None;
         }
         let delta = PAD * (reach + 1.0);
