@@ -238,7 +238,7 @@ $("next").onclick = () => step(1);
 $("frame").addEventListener("click", pickAt);
 window.addEventListener("resize", placeMarker);
 document.addEventListener("keydown", (e) => {
-  if (e.target === $("frameNo")) return;
+  if (e.target === $("frameNo") || e.target.tagName === "TEXTAREA") return; // the key field
   if (e.key === "ArrowLeft") { step(-1); e.preventDefault(); }
   else if (e.key === "ArrowRight") { step(1); e.preventDefault(); }
   else if (e.key === " ") { view.playing ? pause() : play(); e.preventDefault(); }
