@@ -85,5 +85,7 @@ mod spd_table;
 mod tev_stream;
 mod texture_scale;
 mod view_browser;
+mod view_direct;
+mod view_direct_browser;
 mod view_server;
 mod wide_frames;

@@ -181,7 +181,7 @@ impl<'p> Animation<'p> {
     /// The framing of a frame's scene: the manifest's `fov` and `roll` over the scene's
     /// own lens (an NFF view's angle and up, the report's for a Scene.txt, a `camera fov`
     /// track's value).
-    fn lens_of(&self, scene: &Scene) -> Lens {
+    pub(crate) fn lens_of(&self, scene: &Scene) -> Lens {
         let own = &self.manifest.lens;
         scene.lens.overridden(own.fov, own.roll)
     }
@@ -196,7 +196,7 @@ impl<'p> Animation<'p> {
     }
 
     /// The camera of a frame state, `None` when the eye is on the point it looks at.
-    fn camera(&self, state: &Snapshot) -> Option<Camera> {
+    pub(crate) fn camera(&self, state: &Snapshot) -> Option<Camera> {
         let native = (self.timeline.base.width, self.timeline.base.height);
         let size = (self.width, self.height);
         Camera::framed(
@@ -227,7 +227,7 @@ impl<'p> Animation<'p> {
 
     /// Frame `frame`'s camera sits on the point it looks at: located at the object the
     /// camera follows, or the manifest's `[camera]` table.
-    fn camera_error(&self, frame: u32) -> AnimError {
+    pub(crate) fn camera_error(&self, frame: u32) -> AnimError {
         let loc = match &self.manifest.look_at {
             Some(crate::timeline::LookAt::Object { loc, .. }) => loc.clone(),
             _ => self.manifest.camera_loc.clone(),

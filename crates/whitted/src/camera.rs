@@ -11,7 +11,8 @@
 //! `Lens` may set a vertical field of view (degrees: the plane is 2·tan(fov/2) high,
 //! square pixels at any size) and a roll (degrees: positive banks the camera to the
 //! right, so the picture turns counter-clockwise). Pixel (i, j) has i to the right and
-//! j downwards; its centre is (i + 0.5, j + 0.5).
+//! j downwards; its centre is (i + 0.5, j + 0.5). `project` takes a world point back to
+//! its (x, y) on the picture.
 //!
 //! ```toml
 //! [camera]
@@ -23,6 +24,7 @@ use crate::optics::Ray;
 use glam::DVec3;
 
 mod aspect;
+pub mod project;
 pub mod thin_lens;
 pub use aspect::NonSquare;
 pub use thin_lens::ThinLens;

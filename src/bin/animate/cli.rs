@@ -88,7 +88,9 @@ pub enum Command {
     Preview(PreviewArgs),
     /// Serve a page that shows the animation while you edit it: the current frame (a
     /// quarter size first, then whole), a timeline, play and step keys, the output
-    /// folder's state, picking, and live reload of the manifest and scene. Ctrl-C stops.
+    /// folder's state, picking, the camera's and tracks' paths over the picture, the
+    /// camera copied as a manifest key, an A/B wipe, and live reload of the manifest and
+    /// scene. Ctrl-C stops.
     View(ViewArgs),
 }
 

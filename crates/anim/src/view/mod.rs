@@ -7,7 +7,10 @@
 //! - `frames`: frames at 1/scale, one render per client at a time, newer requests
 //!   superseding older ones, a bounded cache;
 //! - `routes`: the HTTP routes, the Host check and the 400 reasons;
-//! - `assets/`: the page, its script and style, compiled into the binary (no network).
+//! - `strip`: the output folder's state of every frame (`/api/status`);
+//! - `direct`: the directing aids' routes: `paths` (the camera's and tracks' paths over
+//!   the picture) and `camera_key` (a frame's camera as a manifest key);
+//! - `assets`: the page, its scripts and style, compiled into the binary (no network).
 //!
 //! The server is `tiny_http` (small, synchronous, no async runtime to carry for a
 //! loopback page), in a copy whose connection pool is patched (`vendor/README.md`: a
@@ -18,9 +21,14 @@
 //! requests are so bounded whatever their number. The loop ends when `stop` holds a
 //! signal number.
 
+pub mod assets;
+pub mod camera_key;
+pub mod direct;
 pub mod frames;
 pub mod live;
+pub mod paths;
 pub mod routes;
+pub mod strip;
 
 use routes::{answer, Context, Reply};
 use std::io::Write;

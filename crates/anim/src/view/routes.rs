@@ -4,11 +4,13 @@
 //!
 //! | route | answer |
 //! |---|---|
-//! | `GET /`, `/app.js`, `/app.css` | the page (embedded) |
+//! | `GET /`, `/app.js`, `/direct.js`, `/ab.js`, `/app.css` | the page (`assets`) |
 //! | `GET /api/state` | `{generation, error, frames, fps, width, height, manifest}` |
 //! | `GET /api/wait?since=G` | the same, once the generation is not G (or after 20 s) |
 //! | `GET /api/frame?n=F&scale=S&client=C[&format=raw]` | frame F at 1/S (S 1..=64), PNG or RGB bytes; 409 when a newer request of client C superseded it |
 //! | `GET /api/pick?n=F&x=X&y=Y` | `{hit}`: what the camera ray through pixel (X, Y) of the whole frame F hits (`pick`) |
+//! | `GET /api/camera?n=F` | frame F's camera as a manifest key (`camera_key`) |
+//! | `GET /api/paths?n=F` | the camera's and tracked positions' paths on frame F's picture (`paths`) |
 //! | `GET /api/status` | `{generation, folder, states}`: every frame up-to-date, stale or missing in the output folder |
 //!
 //! A request whose `Host` is not this server's bound name is refused (403); a bad
@@ -17,16 +19,11 @@
 
 use super::frames::{Drawn, Encoding, Frames};
 use super::live::{Live, Loaded};
-use crate::frames::status::states;
 use crate::project::Animation;
 use serde_json::{json, Value};
 use std::net::SocketAddr;
 use std::sync::Arc;
 use std::time::Duration;
-
-const INDEX: &str = include_str!("assets/index.html");
-const SCRIPT: &str = include_str!("assets/app.js");
-const STYLE: &str = include_str!("assets/app.css");
 
 /// How long `/api/wait` holds a request when nothing changes.
 pub const WAIT: Duration = Duration::from_secs(20);
@@ -46,7 +43,7 @@ pub struct Reply {
 }
 
 impl Reply {
-    fn bytes(status: u16, content_type: &'static str, body: Vec<u8>) -> Reply {
+    pub(super) fn bytes(status: u16, content_type: &'static str, body: Vec<u8>) -> Reply {
         Reply {
             status,
             content_type,
@@ -54,7 +51,7 @@ impl Reply {
             headers: Vec::new(),
         }
     }
-    fn json(status: u16, v: Value) -> Reply {
+    pub(super) fn json(status: u16, v: Value) -> Reply {
         Reply::bytes(status, "application/json", v.to_string().into_bytes())
     }
     /// `{"error": why}` with `status`.
@@ -131,7 +128,7 @@ pub fn cross_site(
 }
 
 /// The query's value of `key` (the last one given).
-fn param<'q>(query: &'q str, key: &str) -> Option<&'q str> {
+pub(super) fn param<'q>(query: &'q str, key: &str) -> Option<&'q str> {
     query
         .split('&')
         .filter_map(|kv| kv.split_once('=').or(Some((kv, ""))))
@@ -141,7 +138,13 @@ fn param<'q>(query: &'q str, key: &str) -> Option<&'q str> {
 }
 
 /// An integer parameter in `lo..=hi`, or the 400 reason.
-fn number(query: &str, key: &str, lo: u32, hi: u32, default: Option<u32>) -> Result<u32, Reply> {
+pub(super) fn number(
+    query: &str,
+    key: &str,
+    lo: u32,
+    hi: u32,
+    default: Option<u32>,
+) -> Result<u32, Reply> {
     let Some(text) = param(query, key) else {
         return default.ok_or_else(|| Reply::error(400, format!("missing parameter `{key}`")));
     };
@@ -196,10 +199,10 @@ pub fn answer(ctx: &Context, method: &str, target: &str, host: Option<&str>) -> 
         return Reply::error(405, format!("{method} is not served: GET only"));
     }
     let (path, query) = target.split_once('?').unwrap_or((target, ""));
+    if let Some(a) = super::assets::find(path) {
+        return Reply::bytes(200, a.content_type, a.text.into());
+    }
     match path {
-        "/" | "/index.html" => Reply::bytes(200, "text/html; charset=utf-8", INDEX.into()),
-        "/app.js" => Reply::bytes(200, "text/javascript; charset=utf-8", SCRIPT.into()),
-        "/app.css" => Reply::bytes(200, "text/css; charset=utf-8", STYLE.into()),
         "/api/state" => Reply::json(200, state(&ctx.live.current(), &ctx.live)),
         "/api/wait" => match number(query, "since", 0, u32::MAX, Some(0)) {
             Ok(since) => Reply::json(
@@ -210,13 +213,15 @@ pub fn answer(ctx: &Context, method: &str, target: &str, host: Option<&str>) -> 
         },
         "/api/frame" => frame(ctx, query).unwrap_or_else(|r| r),
         "/api/pick" => pick(ctx, query).unwrap_or_else(|r| r),
-        "/api/status" => strip(ctx),
+        "/api/status" => super::strip::strip(ctx),
+        "/api/camera" => super::direct::camera(ctx, query).unwrap_or_else(|r| r),
+        "/api/paths" => super::direct::paths(ctx, query).unwrap_or_else(|r| r),
         _ => Reply::error(404, format!("no route {path:?}")),
     }
 }
 
 /// The live project, or 503 when none ever loaded.
-fn project(ctx: &Context) -> Result<(Loaded, Arc<crate::Project>), Reply> {
+pub(super) fn project(ctx: &Context) -> Result<(Loaded, Arc<crate::Project>), Reply> {
     let l = ctx.live.current();
     match l.project.clone() {
         Some(p) => Ok((l, p)),
@@ -292,63 +297,6 @@ fn pick(ctx: &Context, query: &str) -> Result<Reply, Reply> {
         200,
         json!({ "frame": n, "x": x, "y": y, "hit": hit }),
     ))
-}
-
-fn strip(ctx: &Context) -> Reply {
-    let (loaded, p) = match project(ctx) {
-        Ok(v) => v,
-        Err(r) => return r,
-    };
-    let anim = match Animation::new(&p) {
-        Ok(a) => a,
-        Err(e) => return Reply::error(422, format!("animate: {e}")),
-    };
-    let dir = &p.manifest.output.dir;
-    // The states hash every RAW frame: computed again only when the project or a file of
-    // the folder (its name, size or time) changed since the last answer.
-    let key = (loaded.generation, folder_fingerprint(dir));
-    if let Ok(cached) = ctx.status.lock() {
-        if let Some((_, body)) = cached.as_ref().filter(|(k, _)| *k == key) {
-            return Reply::bytes(200, "application/json", body.to_vec());
-        }
-    }
-    let frames: Vec<u32> = (0..p.manifest.frames).collect();
-    let states = ctx.pool.install(|| states(&anim, dir, &frames, false));
-    let reply = Reply::json(
-        200,
-        json!({"generation": loaded.generation, "folder": dir.display().to_string(),
-               "states": states}),
-    );
-    if let Ok(mut cached) = ctx.status.lock() {
-        *cached = Some((key, reply.body.to_vec()));
-    }
-    reply
-}
-
-/// A hash of the names, sizes and modification times of the files of `dir` and of its
-/// RAW records: it changes whenever a frame is written, replaced or removed.
-fn folder_fingerprint(dir: &std::path::Path) -> u64 {
-    use std::hash::{Hash, Hasher};
-    let mut h = std::collections::hash_map::DefaultHasher::new();
-    for d in [
-        dir.to_path_buf(),
-        dir.join(crate::frames::provenance::RAW_RECORDS),
-    ] {
-        let mut entries: Vec<(std::ffi::OsString, u64, Option<std::time::SystemTime>)> =
-            std::fs::read_dir(&d)
-                .into_iter()
-                .flatten()
-                .flatten()
-                .map(|e| {
-                    let meta = e.metadata().ok();
-                    let len = meta.as_ref().map_or(0, |m| m.len());
-                    (e.file_name(), len, meta.and_then(|m| m.modified().ok()))
-                })
-                .collect();
-        entries.sort();
-        entries.hash(&mut h);
-    }
-    h.finish()
 }
 
 #[cfg(test)]

@@ -1,10 +1,13 @@
 // animate view: the page. It asks the server for frames (a quarter size first, then the
 // whole frame), follows the manifest through a long poll (/api/wait), shows the folder's
-// state and names what a click hits (and asks again after each reload). No library, no network beyond this server.
+// state and names what a click hits (and asks again after each reload). No library, no
+// network beyond this server. direct.js (paths, camera key) and ab.js (the A/B wipe)
+// follow it and hang on `view.hooks`: each is told of every picture shown.
 "use strict";
 const $ = (id) => document.getElementById(id);
 const client = "p" + Math.random().toString(36).slice(2, 12);
-const view = { state: null, gen: 0, cur: 0, token: 0, playing: false, log: [], shownGen: 0 };
+const view = { state: null, gen: 0, cur: 0, token: 0, playing: false, log: [], shownGen: 0,
+  hooks: [], shown: null };
 window.view = view;
 
 function note(kind, extra) {
@@ -40,7 +43,9 @@ function put(img, got, n, scale) {
         $("drawn").textContent = `frame ${n} drawn in ${(got.secs * 1000).toFixed(0)} ms`;
         document.body.dataset.drawn = `${n}:${got.secs}`;
       }
+      view.shown = { blob: got.blob, gen: got.gen, n, scale };
       note("shown", { gen: got.gen, n, scale });
+      for (const hook of view.hooks) hook(n, scale, got.gen);
       resolve();
     };
     const loader = new Image();
@@ -233,17 +238,18 @@ $("next").onclick = () => step(1);
 $("frame").addEventListener("click", pickAt);
 window.addEventListener("resize", placeMarker);
 document.addEventListener("keydown", (e) => {
-  if (e.target === $("frameNo")) return;
+  if (e.target === $("frameNo") || e.target.tagName === "TEXTAREA") return; // the key field
   if (e.key === "ArrowLeft") { step(-1); e.preventDefault(); }
   else if (e.key === "ArrowRight") { step(1); e.preventDefault(); }
   else if (e.key === " ") { view.playing ? pause() : play(); e.preventDefault(); }
 });
 
-(async () => {
+// Started once every script is in (they add their hooks first).
+document.addEventListener("DOMContentLoaded", async () => {
   const s = await (await fetch("/api/state")).json();
   applyState(s);
   if (s.frames != null) show(0);
   refreshStrip();
   setInterval(refreshStrip, 2000);
   follow();
-})();
+});
