@@ -35,6 +35,7 @@ mod degenerate_geometry;
 mod directing;
 mod docs_commands;
 mod docs_examples;
+mod embree_rays;
 mod exit_status;
 mod exr_frames;
 mod exr_manifest;
