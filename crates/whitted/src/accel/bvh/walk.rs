@@ -6,13 +6,13 @@
 
 use super::node4::{WideNode, LEAF};
 use super::raybox::{limit32, RayBox};
-use super::STACK;
 use crate::optics::Ray;
 
 /// Calls `visit` on the primitives of every leaf whose box the ray meets within the
-/// limit, as `Bvh::traverse` says (`nodes` non-empty, root at 0).
+/// limit, as `Bvh::traverse` says (`nodes` non-empty, root at 0). `STACK` is at least
+/// three entries per level of the tree: each node stacks at most three children.
 #[inline(never)]
-pub(super) fn walk<P, const ORDERED: bool>(
+pub(super) fn walk<P, const ORDERED: bool, const STACK: usize>(
     nodes: &[WideNode],
     prims: &[P],
     scale: f64,
