@@ -30,7 +30,8 @@ pub use tiles::{Hint, TileView};
 use crate::mesh::Mesh;
 use crate::object::Object;
 use crate::optics::{Ray, T_MIN};
-use crate::shapes::Shape;
+use crate::shapes::{Shape, Triangle};
+use glam::DVec3;
 use std::sync::Arc;
 
 /// Up to this many transparent objects, shadow rays test them all in order after the
@@ -51,6 +52,10 @@ pub struct Accel {
     shapes: Bvh<ShapePrim>,
     /// The shapes `shapes`' solo primitives name (`ShapePrim::part`).
     solo: Vec<Shape>,
+    /// The triangles its `TRI` primitives name: corner A, then B − A and C − A, as
+    /// `Triangle` holds them (the same test on the same numbers, without going through
+    /// `Shape`: 72 bytes a triangle, read in the tree's leaves).
+    tris: Vec<[DVec3; 3]>,
     /// The scene's meshes (`Scene::meshes`; `ShapePrim::mesh` and `MeshRef::id` index it).
     meshes: Vec<Arc<Mesh>>,
     /// The scene's epsilon, given to the shadow rays (`Scene::t_min`).
@@ -111,6 +116,7 @@ impl Accel {
     /// `meshes`; a mesh object whose id is past them hits nothing).
     pub fn with_meshes(objects: &[Object], meshes: &[Arc<Mesh>], t_min: f64) -> Accel {
         let mut solo = Vec::new();
+        let mut tris = Vec::new();
         let mut shapes: Vec<ShapePrim> = Vec::new();
         for (i, o) in objects.iter().enumerate() {
             let prim = |part: u32, mesh: u32| ShapePrim {
@@ -125,6 +131,10 @@ impl Accel {
                 Shape::Mesh(m) => {
                     let count = meshes.get(m.id as usize).map_or(0, |m| m.triangles.len());
                     shapes.extend((0..count as u32).map(|k| prim(k, m.id)));
+                }
+                Shape::Triangle(t) => {
+                    shapes.push(prim(tris.len() as u32, ShapePrim::TRI));
+                    tris.push([t.a, t.e1, t.e2]);
                 }
                 shape if shape.is_bounded() => {
                     shapes.push(prim(solo.len() as u32, ShapePrim::SOLO));
@@ -159,6 +169,10 @@ impl Accel {
                 solo[p.part as usize]
                     .bounds()
                     .expect("solo shapes are bounded")
+            } else if p.mesh == ShapePrim::TRI {
+                let [a, e1, e2] = tris[p.part as usize];
+                let (b, c) = (a + e1, a + e2);
+                (a.min(b).min(c), a.max(b).max(c))
             } else {
                 meshes[p.mesh as usize].bounds(p.part)
             };
@@ -168,6 +182,7 @@ impl Accel {
             tree: Bvh::build(prims, Prim::bounds),
             shapes,
             solo,
+            tris,
             meshes: meshes.to_vec(),
             t_min,
             unbounded: unbounded(&|_| true),
@@ -185,7 +200,11 @@ impl Accel {
     /// The hit of a shapes' tree primitive with ray.t_min < t < t_max, if any.
     #[inline(always)]
     fn shape_hit(&self, prim: &ShapePrim, ray: &Ray, t_max: f64) -> Option<f64> {
-        if prim.mesh == ShapePrim::SOLO {
+        if prim.mesh == ShapePrim::TRI {
+            let [a, e1, e2] = self.tris[prim.part as usize];
+            let (_, _, t) = Triangle::uvt_of(a, e1, e2, ray)?;
+            (t > ray.t_min && t < t_max).then_some(t)
+        } else if prim.mesh == ShapePrim::SOLO {
             self.solo[prim.part as usize].hit(ray, t_max)
         } else {
             self.meshes[prim.mesh as usize].hit(prim.part, ray, t_max)
@@ -230,11 +249,7 @@ impl Accel {
         if !self.shapes.is_empty() {
             self.shapes.traverse(ray, best_t, |prim, limit| {
                 if let Some(t) = self.shape_hit(prim, ray, f64::INFINITY) {
-                    let part = if prim.mesh == ShapePrim::SOLO {
-                        NO_PART
-                    } else {
-                        prim.part
-                    };
+                    let part = if prim.is_own() { NO_PART } else { prim.part };
                     if t < best_t || (t == best_t && (prim.index, part) < (best_i, best_part)) {
                         best_t = t;
                         best_i = prim.index;

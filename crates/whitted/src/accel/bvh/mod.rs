@@ -65,7 +65,8 @@ pub struct ShapePrim {
     pub index: u32,
     /// The slot of its shape, or its triangle in the mesh.
     pub part: u32,
-    /// `SOLO` for a shape of its own, else the slot of its mesh.
+    /// `SOLO` for a shape of its own, `TRI` for a triangle of its own (`part` then
+    /// indexes the accelerator's compact triangles), else the slot of its mesh.
     pub mesh: u32,
     /// Kt > 0: shadow rays cross it.
     pub glass: bool,
@@ -76,6 +77,14 @@ pub struct ShapePrim {
 impl ShapePrim {
     /// `mesh` of a primitive that is a shape of its own.
     pub const SOLO: u32 = u32::MAX;
+    /// `mesh` of a primitive that is a triangle of its own (an NFF polygon's).
+    pub const TRI: u32 = u32::MAX - 1;
+
+    /// Whether it is a shape of its own (no mesh's triangle).
+    #[inline(always)]
+    pub fn is_own(&self) -> bool {
+        self.mesh >= ShapePrim::TRI
+    }
 }
 
 /// What the tree needs of a primitive besides its box: whether it is glass.
