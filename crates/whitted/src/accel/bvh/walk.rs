@@ -55,18 +55,20 @@ pub(super) fn walk<P, const ORDERED: bool, const STACK: usize>(
                 // The slots hit; by entry parameter when ordered (insertion into four).
                 let mut order = [0usize; 4];
                 let mut k = 0;
-                for s in 0..4 {
-                    if mask & (1 << s) != 0 {
-                        let mut j = k;
-                        if ORDERED {
-                            while j > 0 && t[order[j - 1]] > t[s] {
-                                order[j] = order[j - 1];
-                                j -= 1;
-                            }
+                let mut bits = mask;
+                while bits != 0 {
+                    // The set bits, lowest first.
+                    let s = bits.trailing_zeros() as usize;
+                    bits &= bits - 1;
+                    let mut j = k;
+                    if ORDERED {
+                        while j > 0 && t[order[j - 1]] > t[s] {
+                            order[j] = order[j - 1];
+                            j -= 1;
                         }
-                        order[j] = s;
-                        k += 1;
                     }
+                    order[j] = s;
+                    k += 1;
                 }
                 for &s in order[1..k].iter().rev() {
                     stack_ref[sp] = n.child[s];
