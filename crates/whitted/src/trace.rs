@@ -372,7 +372,9 @@ impl Occluders for Tracer<'_> {
             .transmission(light, objects, p, to, to_light, dist)
         {
             Some(c) => c,
-            None => Tracer::transmission(self, p, to_light, dist),
+            None => self
+                .accel
+                .transmission_to(objects, light, p, to_light, dist),
         }
     }
 }

@@ -20,6 +20,7 @@ mod bvh;
 mod dirgrid;
 mod lightbuf;
 mod shadow;
+mod shadow_cache;
 mod tiles;
 
 pub use bvh::{Bounded, Bvh, Prim, ShapePrim};
@@ -68,6 +69,11 @@ pub struct Accel {
     glass_all: Vec<u32>,
     /// Whether one of them is a mesh.
     glass_mesh: bool,
+    /// This build's name in the threads' shadow caches (`shadow_cache`; 0 for none).
+    id: u64,
+    /// Whether shadow rays walk a tree (not only flat lists), where the shadow cache
+    /// is worth its look-up.
+    cached: bool,
 }
 
 /// A nearest hit: its t, its object and, on a mesh, the triangle (`NO_PART` elsewhere).
@@ -178,8 +184,11 @@ impl Accel {
             };
             (lo, hi, 0.5 * (lo + hi))
         });
+        let tree = Bvh::build(prims, Prim::bounds);
         Accel {
-            tree: Bvh::build(prims, Prim::bounds),
+            id: shadow_cache::new_id(),
+            cached: !tree.is_flat() || !shapes.is_flat(),
+            tree,
             shapes,
             solo,
             tris,

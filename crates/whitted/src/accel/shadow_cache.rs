@@ -1,0 +1,157 @@
+//! The shadow cache (Haines and Greenberg's "last blocker", 1986): for each thread and
+//! each of the scene's point lights, the opaque primitive that stopped the thread's last
+//! shadow ray towards that light. The next shadow ray to the same light tests it first,
+//! and when it blocks again the walk through the tree is skipped.
+//!
+//! Exactness. A shadow ray's answer is black as soon as any opaque object meets it
+//! within (ε, dist), whichever one it is (`shading::transmission`): the cached
+//! primitive's own exact test, the same one the tree's walk would run on it, proves
+//! that, so the cache changes which work is done and never the answer. What a thread
+//! holds depends on the rows it drew (so on the thread count), which the answers never
+//! do: the bytes stay the same on any thread count.
+//!
+//! The entries name the accelerator that filled them (`Accel::id`, unique per build and
+//! shared by its clones, which hold the same primitives): an entry of another scene's
+//! accelerator is ignored, so a thread that moves between the frames of an animation
+//! never tests a primitive of another scene.
+
+use super::{Prim, ShapePrim};
+use std::cell::Cell;
+use std::sync::atomic::{AtomicU64, Ordering};
+
+/// Lights with a slot of their own; light k uses slot k mod `SLOTS`.
+const SLOTS: usize = 8;
+
+/// The primitive that blocked: a sphere of the spheres' tree, or a primitive of the
+/// shapes' tree.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Blocker {
+    /// Nothing cached.
+    None,
+    /// A sphere (a copy: its test needs nothing else).
+    Sphere(Prim),
+    /// A triangle, a shape or a mesh triangle (tested through its accelerator's tables).
+    Shape(ShapePrim),
+}
+
+#[derive(Clone, Copy, Debug)]
+struct Entry {
+    /// The `Accel::id` that filled it (0: none).
+    owner: u64,
+    blocker: Blocker,
+}
+
+const EMPTY: Entry = Entry {
+    owner: 0,
+    blocker: Blocker::None,
+};
+
+thread_local! {
+    static LAST: [Cell<Entry>; SLOTS] = const { [const { Cell::new(EMPTY) }; SLOTS] };
+}
+
+static NEXT_ID: AtomicU64 = AtomicU64::new(1);
+
+/// A new accelerator's id (never 0).
+pub(super) fn new_id() -> u64 {
+    NEXT_ID.fetch_add(1, Ordering::Relaxed)
+}
+
+/// The blocker this thread last cached for `light` in accelerator `owner`.
+#[inline(always)]
+pub(super) fn get(owner: u64, light: usize) -> Blocker {
+    let e = LAST.with(|l| l[light % SLOTS].get());
+    if e.owner == owner {
+        e.blocker
+    } else {
+        Blocker::None
+    }
+}
+
+/// Caches `blocker` as the last for `light` in accelerator `owner`.
+#[inline(always)]
+pub(super) fn put(owner: u64, light: usize, blocker: Blocker) {
+    LAST.with(|l| l[light % SLOTS].set(Entry { owner, blocker }));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::tests::{bits, scene, Rng};
+    use super::super::Accel;
+    use super::*;
+    use crate::optics::Ray;
+    use crate::shading;
+    use crate::shapes::Sphere;
+    use crate::texture::Color;
+    use glam::DVec3;
+
+    fn sphere_prim(index: u32) -> Prim {
+        Prim {
+            sphere: Sphere::new(DVec3::ZERO, 1.0),
+            index,
+            glass: false,
+            opaque: true,
+        }
+    }
+
+    #[test]
+    fn an_entry_is_read_back_by_its_owner_only() {
+        let (a, b) = (new_id(), new_id());
+        assert_ne!(a, b);
+        assert_ne!(a, 0);
+        put(a, 3, Blocker::Sphere(sphere_prim(7)));
+        assert!(matches!(get(a, 3), Blocker::Sphere(p) if p.index == 7));
+        assert!(matches!(get(b, 3), Blocker::None));
+        // Another light's slot is its own; light 3 + SLOTS shares light 3's.
+        assert!(matches!(get(a, 4), Blocker::None));
+        assert!(matches!(get(a, 3 + SLOTS), Blocker::Sphere(_)));
+        put(b, 3, Blocker::None);
+        assert!(matches!(get(a, 3), Blocker::None));
+    }
+
+    #[test]
+    fn each_thread_has_its_own_cache() {
+        let a = new_id();
+        put(a, 0, Blocker::Sphere(sphere_prim(1)));
+        std::thread::spawn(move || assert!(matches!(get(a, 0), Blocker::None)))
+            .join()
+            .unwrap();
+        assert!(matches!(get(a, 0), Blocker::Sphere(_)));
+    }
+
+    #[test]
+    fn cached_answers_are_the_linear_scans() {
+        // Two scenes' accelerators used in turn by one thread, three lights each: shadow
+        // rays from the points the camera-like rays meet, towards each light, as a
+        // frame casts them (neighbours in turn, so the cache has something to reuse).
+        let mut rng = Rng(0x5eed_0fca_11ab_1e57);
+        let scenes: Vec<_> = [300, 700].map(|n| scene(&mut rng, n)).into();
+        let accels: Vec<_> = scenes.iter().map(|o| Accel::new(o)).collect();
+        assert!(accels.iter().all(|a| a.cached));
+        let lights = [rng.vec(4.0), rng.vec(4.0), DVec3::new(0.0, 30.0, 0.0)];
+        let (mut tried, mut shadowed) = (0, 0);
+        for k in 0..60_000 {
+            let which = k / 50 % 2;
+            let (objects, accel) = (&scenes[which], &accels[which]);
+            let (u, v) = (
+                (k % 250) as f64 / 125.0 - 1.0,
+                (k / 250) as f64 / 120.0 - 1.0,
+            );
+            let eye = DVec3::new(0.0, 0.0, 20.0);
+            let ray = Ray::new(eye, DVec3::new(u, v, -2.0).normalize());
+            let Some((t, _)) = accel.nearest(&ray) else {
+                continue;
+            };
+            let p = eye + ray.dir * t;
+            for (light, &at) in lights.iter().enumerate() {
+                let (to, dist) = ((at - p).normalize(), (at - p).length());
+                tried += !matches!(get(accel.id, light), Blocker::None) as usize;
+                let want = shading::transmission(objects, p, to, dist);
+                let got = accel.transmission_to(objects, light, p, to, dist);
+                assert_eq!(bits(got), bits(want), "{k} {light} {p:?}");
+                shadowed += (want == Color::ZERO) as usize;
+            }
+        }
+        assert!(tried > 10_000 && shadowed > 10_000, "{tried} {shadowed}");
+    }
+}
