@@ -7,6 +7,7 @@ use super::{Item, Node, BINS, BLANK, LEAF_MAX, MAX_DEPTH};
 /// Subtrees over more primitives than this are built in parallel (below it a task costs
 /// more than it saves).
 const PAR_MIN: usize = 8192;
+const TRAVERSE_COST: f64 = 0.5;
 use glam::DVec3;
 
 fn surface_area(lo: DVec3, hi: DVec3) -> f64 {
@@ -136,55 +137,43 @@ fn split<P>(
         return None;
     }
     let extent = chi - clo;
-    let axis = if extent.x >= extent.y && extent.x >= extent.z {
+    let widest = if extent.x >= extent.y && extent.x >= extent.z {
         0
     } else if extent.y >= extent.z {
         1
     } else {
         2
     };
-    let mid = if extent[axis] > 0.0 {
-        // Binned SAH along the widest axis of the centres.
-        let k = BINS as f64 / extent[axis];
-        let bin_of = |c: f64| (((c - clo[axis]) * k) as usize).min(BINS - 1);
-        let mut bins = [(DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize); BINS];
-        for it in items.iter() {
-            let b = &mut bins[bin_of(it.centre[axis])];
-            b.0 = b.0.min(it.lo);
-            b.1 = b.1.max(it.hi);
-            b.2 += 1;
-        }
-        // Costs of splitting after bin i: sweep from the right, then from the left.
-        let mut right = [0.0f64; BINS];
-        let (mut rlo, mut rhi, mut rn) = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize);
-        for i in (1..BINS).rev() {
-            rlo = rlo.min(bins[i].0);
-            rhi = rhi.max(bins[i].1);
-            rn += bins[i].2;
-            right[i - 1] = surface_area(rlo, rhi) * rn as f64;
-        }
-        let (mut llo, mut lhi, mut ln) = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize);
-        let mut best = (f64::INFINITY, 0usize);
-        for i in 0..BINS - 1 {
-            llo = llo.min(bins[i].0);
-            lhi = lhi.max(bins[i].1);
-            ln += bins[i].2;
-            if ln == 0 || ln == n {
-                continue;
-            }
-            let cost = surface_area(llo, lhi) * ln as f64 + right[i];
-            if cost < best.0 {
-                best = (cost, i);
+    // Binned SAH over the three axes of the centres: the cheapest split, the lower axis
+    // on a tie.
+    let mut best: Option<(f64, usize, usize)> = None;
+    for axis in 0..3 {
+        if extent[axis] > 0.0 {
+            if let Some((cost, bin)) = sah_axis(items, axis, clo[axis], extent[axis]) {
+                if best.is_none_or(|b| cost < b.0) {
+                    best = Some((cost, axis, bin));
+                }
             }
         }
-        if best.0.is_finite() {
-            let split = best.1;
-            partition(items, |it| bin_of(it.centre[axis]) <= split)
-        } else {
-            n / 2
+    }
+    if let Some((cost, _, _)) = best {
+        let area = surface_area(lo, hi);
+        if n <= 4 && n as f64 * area <= TRAVERSE_COST * area + cost {
+            nodes[index].first = offset as u32;
+            nodes[index].count = n as u32;
+            return None;
         }
-    } else {
-        n / 2
+    }
+    let axis = best.map_or(widest, |b| b.1);
+    let mid = match best {
+        Some((_, axis, split)) => {
+            let k = BINS as f64 / extent[axis];
+            let (c0, last) = (clo[axis], BINS - 1);
+            partition(items, |it| {
+                ((((it.centre[axis] - c0) * k) as usize).min(last)) <= split
+            })
+        }
+        None => n / 2,
     };
     if mid == 0 || mid == n {
         // All centres in one bin (or all equal): split at the median.
@@ -192,6 +181,44 @@ fn split<P>(
         return Some(n / 2);
     }
     Some(mid)
+}
+
+/// The cheapest binned SAH split of `items` along `axis` (centres from `c0` over
+/// `extent` > 0): (cost, last bin on the left), if some split leaves both sides non-empty.
+fn sah_axis<P>(items: &[Item<P>], axis: usize, c0: f64, extent: f64) -> Option<(f64, usize)> {
+    let n = items.len();
+    let k = BINS as f64 / extent;
+    let mut bins = [(DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize); BINS];
+    for it in items.iter() {
+        let b = &mut bins[(((it.centre[axis] - c0) * k) as usize).min(BINS - 1)];
+        b.0 = b.0.min(it.lo);
+        b.1 = b.1.max(it.hi);
+        b.2 += 1;
+    }
+    // Costs of splitting after bin i: sweep from the right, then from the left.
+    let mut right = [0.0f64; BINS];
+    let (mut rlo, mut rhi, mut rn) = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize);
+    for i in (1..BINS).rev() {
+        rlo = rlo.min(bins[i].0);
+        rhi = rhi.max(bins[i].1);
+        rn += bins[i].2;
+        right[i - 1] = surface_area(rlo, rhi) * rn as f64;
+    }
+    let (mut llo, mut lhi, mut ln) = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize);
+    let mut best: Option<(f64, usize)> = None;
+    for i in 0..BINS - 1 {
+        llo = llo.min(bins[i].0);
+        lhi = lhi.max(bins[i].1);
+        ln += bins[i].2;
+        if ln == 0 || ln == n {
+            continue;
+        }
+        let cost = surface_area(llo, lhi) * ln as f64 + right[i];
+        if cost.is_finite() && best.is_none_or(|b| cost < b.0) {
+            best = Some((cost, i));
+        }
+    }
+    best
 }
 
 /// Moves the items satisfying `pred` to the front; returns how many there are.

@@ -25,7 +25,7 @@ use glam::DVec3;
 use node4::{WideNode, LEAF};
 
 /// Leaves hold at most this many spheres (unless the build runs out of depth).
-const LEAF_MAX: usize = 4;
+const LEAF_MAX: usize = 2;
 /// Up to this many spheres there is no tree: every query tests them all, in order (fewer
 /// instructions than box tests for so few; see docs/performance.md).
 pub const FLAT_MAX: usize = 12;
