@@ -1,13 +1,13 @@
-//! Building the tree: binned SAH splits along the widest axis of the primitives'
-//! centres, down to leaves of `LEAF_MAX` (or `MAX_DEPTH` levels); big subtrees in
-//! parallel (`build_tree`), to the same tree on any thread count.
+//! Building the tree: binned SAH splits over the three axes of the primitives'
+//! centres, down to leaves of `LEAF_MAX` (or `MAX_DEPTH` levels), a node of up to
+//! `LEAF_SAH_MAX` kept whole where the SAH prefers a leaf; big subtrees in parallel
+//! (`build_tree`), to the same tree on any thread count.
 
-use super::{Item, Node, BINS, BLANK, LEAF_MAX, MAX_DEPTH};
+use super::{Item, Node, BINS, BLANK, LEAF_MAX, LEAF_SAH_MAX, MAX_DEPTH, TRAVERSE_COST};
 
 /// Subtrees over more primitives than this are built in parallel (below it a task costs
 /// more than it saves).
 const PAR_MIN: usize = 8192;
-const TRAVERSE_COST: f64 = 0.5;
 use glam::DVec3;
 
 fn surface_area(lo: DVec3, hi: DVec3) -> f64 {
@@ -158,7 +158,7 @@ fn split<P>(
     }
     if let Some((cost, _, _)) = best {
         let area = surface_area(lo, hi);
-        if n <= 4 && n as f64 * area <= TRAVERSE_COST * area + cost {
+        if n <= LEAF_SAH_MAX && n as f64 * area <= TRAVERSE_COST * area + cost {
             nodes[index].first = offset as u32;
             nodes[index].count = n as u32;
             return None;
@@ -168,10 +168,7 @@ fn split<P>(
     let mid = match best {
         Some((_, axis, split)) => {
             let k = BINS as f64 / extent[axis];
-            let (c0, last) = (clo[axis], BINS - 1);
-            partition(items, |it| {
-                ((((it.centre[axis] - c0) * k) as usize).min(last)) <= split
-            })
+            partition(items, |it| bin(it.centre[axis], clo[axis], k) <= split)
         }
         None => n / 2,
     };
@@ -183,6 +180,12 @@ fn split<P>(
     Some(mid)
 }
 
+/// The bin of a centre coordinate `c`: bins of width 1/k from `c0`, the last one closed.
+#[inline]
+fn bin(c: f64, c0: f64, k: f64) -> usize {
+    (((c - c0) * k) as usize).min(BINS - 1)
+}
+
 /// The cheapest binned SAH split of `items` along `axis` (centres from `c0` over
 /// `extent` > 0): (cost, last bin on the left), if some split leaves both sides non-empty.
 fn sah_axis<P>(items: &[Item<P>], axis: usize, c0: f64, extent: f64) -> Option<(f64, usize)> {
@@ -190,7 +193,7 @@ fn sah_axis<P>(items: &[Item<P>], axis: usize, c0: f64, extent: f64) -> Option<(
     let k = BINS as f64 / extent;
     let mut bins = [(DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize); BINS];
     for it in items.iter() {
-        let b = &mut bins[(((it.centre[axis] - c0) * k) as usize).min(BINS - 1)];
+        let b = &mut bins[bin(it.centre[axis], c0, k)];
         b.0 = b.0.min(it.lo);
         b.1 = b.1.max(it.hi);
         b.2 += 1;

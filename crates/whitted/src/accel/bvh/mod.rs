@@ -24,8 +24,15 @@ use crate::shapes::Sphere;
 use glam::DVec3;
 use node4::{WideNode, LEAF};
 
-/// Leaves hold at most this many spheres (unless the build runs out of depth).
+/// The build splits every node of more primitives than this (unless it runs out of
+/// depth) ...
 const LEAF_MAX: usize = 2;
+/// ... except one of at most this many that the SAH finds cheaper as a leaf: so leaves
+/// hold at most `LEAF_SAH_MAX` primitives.
+const LEAF_SAH_MAX: usize = 4;
+/// A node's traversal cost in the SAH, in primitive tests (0.25, 1 and 2 counted more
+/// instructions on the SPD; docs/performance.md).
+const TRAVERSE_COST: f64 = 0.5;
 /// Up to this many spheres there is no tree: every query tests them all, in order (fewer
 /// instructions than box tests for so few; see docs/performance.md).
 pub const FLAT_MAX: usize = 12;

@@ -50,7 +50,7 @@ fn the_collapse_keeps_every_primitive_once() {
     assert_eq!(seen, (0..1000).collect::<Vec<u32>>());
     // The other way round, the leaves farthest first (a leaf's spheres in its order).
     let mut back = offered(&bvh, &Ray::new(DVec3::new(3005.0, 0.0, 0.0), -DVec3::X));
-    assert!(back[0] >= 1000 - LEAF_MAX as u32 && back[999] < LEAF_MAX as u32);
+    assert!(back[0] >= 1000 - LEAF_SAH_MAX as u32 && back[999] < LEAF_SAH_MAX as u32);
     back.sort();
     assert_eq!(back, (0..1000).collect::<Vec<u32>>());
 }
