@@ -26,7 +26,9 @@ for deg in 0 45 110 180 250 320; do
   scenes+=("$work/orbit_$deg.txt")
 done
 for s in "$here"/scenes/*.txt; do cp "$s" "$work/"; scenes+=("$work/$(basename "$s")"); done
-# The project's own scenes, when there are some (read, never changed).
+# The project's own scenes, when there are some (read, never changed), with the folders
+# their meshes and images are read from beside them.
+for d in "$here"/../scenes/*/; do [ -d "$d" ] && ln -s "$d" "$work/$(basename "$d")"; done
 for s in "$here"/../scenes/*.txt; do
   [ -e "$s" ] || continue
   cp "$s" "$work/proj-$(basename "$s")"; scenes+=("$work/proj-$(basename "$s")")

@@ -8,22 +8,21 @@ use crate::object::Object;
 use crate::optics::Ray;
 use crate::shapes::Shape;
 use crate::texture::Color;
+use arrayvec::ArrayVec;
 use glam::DVec3;
 
 /// The transparent crossings of one shadow ray: (object, t), at most `CROSSINGS_MAX`.
+/// An `ArrayVec`, so that no buffer is zeroed per ray (a zeroed array of 32 cost gears
+/// 1.8 % of its instructions).
 struct Crossings {
-    buf: [(u32, f64); CROSSINGS_MAX],
-    n: usize,
+    buf: ArrayVec<(u32, f64), CROSSINGS_MAX>,
     overflow: bool,
 }
 
 impl Crossings {
     #[inline]
     fn push(&mut self, i: u32, t: f64) {
-        if self.n < CROSSINGS_MAX {
-            self.buf[self.n] = (i, t);
-            self.n += 1;
-        } else {
+        if self.buf.try_push((i, t)).is_err() {
             self.overflow = true;
         }
     }
@@ -164,8 +163,7 @@ impl Accel {
         dist: f64,
     ) -> Color {
         let mut found = Crossings {
-            buf: [(0, 0.0); CROSSINGS_MAX],
-            n: 0,
+            buf: ArrayVec::new(),
             overflow: false,
         };
         for &i in &self.unbounded_glass {
@@ -191,17 +189,22 @@ impl Accel {
             return Color::ZERO;
         }
         if !self.shapes.is_empty() {
-            self.shapes.traverse_any(ray, dist, |prim, limit| {
-                if prim.opaque {
-                    if self.shape_hit(prim, ray, dist).is_some() {
-                        blocker = Blocker::Shape(*prim);
-                        return None;
+            self.shapes.traverse_any(
+                ray,
+                dist,
+                #[inline(always)]
+                |prim, limit| {
+                    if prim.opaque {
+                        if self.shape_hit(prim, ray, dist).is_some() {
+                            blocker = Blocker::Shape(*prim);
+                            return None;
+                        }
+                    } else if prim.glass && !found.overflow {
+                        self.shape_crossings(prim, ray, dist, &mut found);
                     }
-                } else if prim.glass && !found.overflow {
-                    self.shape_crossings(prim, ray, dist, &mut found);
-                }
-                Some(limit)
-            });
+                    Some(limit)
+                },
+            );
             if self.blocked(light, blocker) {
                 return Color::ZERO;
             }
@@ -209,7 +212,7 @@ impl Accel {
         if found.overflow {
             return self.glass_linear(objects, ray, dist);
         }
-        let crossings = &mut found.buf[..found.n];
+        let crossings = &mut found.buf[..];
         // Insertion sort by object, then t: a mesh's triangles are met in the tree's
         // order; any other object's crossings come in t order already.
         let after = |a: &(u32, f64), b: &(u32, f64)| a.0 > b.0 || (a.0 == b.0 && a.1 > b.1);
@@ -235,6 +238,11 @@ impl Accel {
             for t in self.solo[prim.part as usize].crossings(ray, dist) {
                 found.push(prim.index, t);
             }
+        } else if prim.mesh == ShapePrim::SPHERE {
+            let roots = self.spheres[prim.part as usize].roots(ray);
+            for t in roots.crossings(ray.t_min, dist) {
+                found.push(prim.index, t);
+            }
         } else if let Some(t) = self.shape_hit(prim, ray, dist) {
             found.push(prim.index, t);
         }
@@ -244,13 +252,18 @@ impl Accel {
     #[inline(never)]
     fn shapes_blocker(&self, ray: &Ray, dist: f64) -> Blocker {
         let mut blocker = Blocker::None;
-        self.shapes.traverse_any(ray, dist, |prim, limit| {
-            if prim.opaque && self.shape_hit(prim, ray, dist).is_some() {
-                blocker = Blocker::Shape(*prim);
-                return None;
-            }
-            Some(limit)
-        });
+        self.shapes.traverse_any(
+            ray,
+            dist,
+            #[inline(always)]
+            |prim, limit| {
+                if prim.opaque && self.shape_hit(prim, ray, dist).is_some() {
+                    blocker = Blocker::Shape(*prim);
+                    return None;
+                }
+                Some(limit)
+            },
+        );
         blocker
     }
 

@@ -272,11 +272,25 @@ fn equal_t_keeps_the_first_object_in_file_order() {
 
 #[test]
 fn same_answers_as_the_linear_scans_with_triangles_and_cones() {
-    // An NFF's shapes in the second tree beside spheres in the first: triangles (some
-    // sharing edges, some duplicated: ties), smooth triangles and cones, a third glass.
-    let mut rng = Rng(0x0bad_cafe_1234_5678);
-    let mut objects = scene(&mut rng, 60);
-    for i in 0..400 {
+    // An NFF's shapes beside spheres: triangles (some sharing edges, some duplicated:
+    // ties), smooth triangles and cones, a third glass. With 400 of them the spheres
+    // join their tree (`shares_tree`); with 8, the spheres keep a tree of their own and
+    // the shapes are a flat list.
+    for (shapes, shared) in [(400, true), (8, false)] {
+        let mut rng = Rng(0x0bad_cafe_1234_5678);
+        let objects = with_shapes(scene(&mut rng, 60), &mut rng, shapes);
+        let accel = Accel::new(&objects);
+        assert_eq!(accel.tree.is_empty(), shared);
+        assert_eq!(accel.spheres.is_empty(), !shared);
+        assert_eq!(accel.shapes.is_flat(), !shared);
+        let (hits, shadowed) = check(&objects, &mut rng, 20_000);
+        assert!(hits > 5000 && shadowed > 2000, "{hits} {shadowed}");
+    }
+}
+
+/// `objects` and `n` random triangles, smooth triangles and cones after them.
+fn with_shapes(mut objects: Vec<Object>, rng: &mut Rng, n: usize) -> Vec<Object> {
+    for i in 0..n {
         let a = rng.vec(6.0);
         let (b, c) = (a + rng.vec(1.5), a + rng.vec(1.5));
         let kt = if i % 3 == 0 { 0.6 } else { 0.0 };
@@ -297,8 +311,5 @@ fn same_answers_as_the_linear_scans_with_triangles_and_cones() {
             }
         }
     }
-    let accel = Accel::new(&objects);
-    assert!(!accel.shapes.is_flat() && accel.shapes.len() > 300);
-    let (hits, shadowed) = check(&objects, &mut rng, 20_000);
-    assert!(hits > 5000 && shadowed > 2000, "{hits} {shadowed}");
+    objects
 }

@@ -42,10 +42,6 @@ const BINS: usize = 16;
 /// is no deeper, and its traversal stacks at most three children per level.
 const MAX_DEPTH: usize = 32;
 const STACK: usize = 3 * (MAX_DEPTH + 2);
-/// Four-wide trees at most this deep (36,000 triangles make 9 levels) are walked with a
-/// stack of `3 * SHALLOW_DEPTH` entries, which is zeroed on every query: the deepest
-/// stack cost gears 3 % of its instructions in memset alone (callgrind).
-const SHALLOW_DEPTH: usize = 12;
 /// Relative box margin: δ = PAD · (|origin|∞ + scale + 1), see `RayBox::new`.
 const PAD: f64 = 1e-5;
 
@@ -73,7 +69,8 @@ pub struct ShapePrim {
     /// The slot of its shape, or its triangle in the mesh.
     pub part: u32,
     /// `SOLO` for a shape of its own, `TRI` for a triangle of its own (`part` then
-    /// indexes the accelerator's compact triangles), else the slot of its mesh.
+    /// indexes the accelerator's compact triangles), `SPHERE` for a sphere (`part`
+    /// indexes the accelerator's spheres), else the slot of its mesh.
     pub mesh: u32,
     /// Kt > 0: shadow rays cross it.
     pub glass: bool,
@@ -86,11 +83,13 @@ impl ShapePrim {
     pub const SOLO: u32 = u32::MAX;
     /// `mesh` of a primitive that is a triangle of its own (an NFF polygon's).
     pub const TRI: u32 = u32::MAX - 1;
+    /// `mesh` of a primitive that is a sphere (when the spheres share this tree).
+    pub const SPHERE: u32 = u32::MAX - 2;
 
     /// Whether it is a shape of its own (no mesh's triangle).
     #[inline(always)]
     pub fn is_own(&self) -> bool {
-        self.mesh >= ShapePrim::TRI
+        self.mesh >= ShapePrim::SPHERE
     }
 }
 
@@ -149,8 +148,6 @@ pub struct Bvh<P = Prim> {
     scale: f64,
     /// In a flat list, how many opaque primitives come first.
     flat_opaque: usize,
-    /// The four-wide tree is at most `SHALLOW_DEPTH` deep.
-    shallow: bool,
 }
 
 struct Item<P> {
@@ -167,7 +164,6 @@ impl<P> Default for Bvh<P> {
             prims: Vec::new(),
             scale: 0.0,
             flat_opaque: 0,
-            shallow: false,
         }
     }
 }
@@ -208,9 +204,14 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
             return bvh;
         }
         bvh.nodes = node4::collapse(&build::build_tree(&mut items));
-        bvh.shallow = bvh.depth() <= SHALLOW_DEPTH;
         bvh.prims = items.into_iter().map(|it| it.prim).collect();
         bvh
+    }
+
+    /// The primitives in the tree's order (a leaf's are neighbours), to be changed in
+    /// place without moving them.
+    pub fn prims_mut(&mut self) -> &mut [P] {
+        &mut self.prims
     }
 
     /// True when the tree holds no sphere.
@@ -270,11 +271,7 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
             return;
         }
         let (nodes, prims, scale) = (&self.nodes[..], &self.prims[..], self.scale);
-        if self.shallow {
-            walk::walk::<P, ORDERED, { 3 * SHALLOW_DEPTH }>(nodes, prims, scale, ray, limit, visit)
-        } else {
-            walk::walk::<P, ORDERED, STACK>(nodes, prims, scale, ray, limit, visit)
-        }
+        walk::walk::<P, ORDERED, STACK>(nodes, prims, scale, ray, limit, visit)
     }
 
     /// The depth of the four-wide tree (1 for a root whose children are all leaves;

@@ -7,6 +7,7 @@
 use super::node4::{WideNode, LEAF};
 use super::raybox::{limit32, RayBox};
 use crate::optics::Ray;
+use arrayvec::ArrayVec;
 
 /// Calls `visit` on the primitives of every leaf whose box the ray meets within the
 /// limit, as `Bvh::traverse` says (`nodes` non-empty, root at 0). `STACK` is at least
@@ -31,11 +32,9 @@ pub(super) fn walk<P, const ORDERED: bool, const STACK: usize>(
         return;
     };
     let mut lim = limit32(limit);
-    // Three plain arrays: cheaper to zero than an array of triples.
-    let mut stack_ref = [0u32; STACK];
-    let mut stack_count = [0u32; STACK];
-    let mut stack_t = [0.0f32; STACK];
-    let mut sp = 0usize;
+    // The subtrees still to visit: (reference, count, entry t). An `ArrayVec`, never
+    // zeroed (zeroing plain arrays per query cost gears 1.3 % of its instructions).
+    let mut stack = ArrayVec::<(u32, u32, f32), STACK>::new();
     // The root, an interior node.
     let (mut cur, mut count) = (0u32, 0u32);
     loop {
@@ -51,8 +50,22 @@ pub(super) fn walk<P, const ORDERED: bool, const STACK: usize>(
         } else {
             let n = &nodes[cur as usize];
             let (mask, t) = rb.enter4(n, lim);
+            if mask != 0 && !ORDERED {
+                // Any order: the lowest slot hit next, the others stacked highest first
+                // (so they come off the stack in slot order).
+                let first = mask.trailing_zeros() as usize;
+                let mut bits = mask & (mask - 1);
+                while bits != 0 {
+                    let s = 31 - bits.leading_zeros() as usize;
+                    bits &= !(1 << s);
+                    stack.push((n.child[s], n.count[s], 0.0));
+                }
+                cur = n.child[first];
+                count = n.count[first];
+                continue;
+            }
             if mask != 0 {
-                // The slots hit; by entry parameter when ordered (insertion into four).
+                // The slots hit, by entry parameter (insertion into four).
                 let mut order = [0usize; 4];
                 let mut k = 0;
                 let mut bits = mask;
@@ -61,20 +74,15 @@ pub(super) fn walk<P, const ORDERED: bool, const STACK: usize>(
                     let s = bits.trailing_zeros() as usize;
                     bits &= bits - 1;
                     let mut j = k;
-                    if ORDERED {
-                        while j > 0 && t[order[j - 1]] > t[s] {
-                            order[j] = order[j - 1];
-                            j -= 1;
-                        }
+                    while j > 0 && t[order[j - 1]] > t[s] {
+                        order[j] = order[j - 1];
+                        j -= 1;
                     }
                     order[j] = s;
                     k += 1;
                 }
                 for &s in order[1..k].iter().rev() {
-                    stack_ref[sp] = n.child[s];
-                    stack_count[sp] = n.count[s];
-                    stack_t[sp] = t[s];
-                    sp += 1;
+                    stack.push((n.child[s], n.count[s], t[s]));
                 }
                 cur = n.child[order[0]];
                 count = n.count[order[0]];
@@ -83,13 +91,11 @@ pub(super) fn walk<P, const ORDERED: bool, const STACK: usize>(
         }
         // Next subtree from the stack whose entry is still within the limit.
         loop {
-            if sp == 0 {
+            let Some((r, c, t)) = stack.pop() else {
                 return;
-            }
-            sp -= 1;
-            if !ORDERED || stack_t[sp] <= lim {
-                cur = stack_ref[sp];
-                count = stack_count[sp];
+            };
+            if !ORDERED || t <= lim {
+                (cur, count) = (r, c);
                 break;
             }
         }
