@@ -54,8 +54,9 @@ pub struct Accel {
     /// The shapes `shapes`' solo primitives name (`ShapePrim::part`).
     solo: Vec<Shape>,
     /// The triangles its `TRI` primitives name, in the tree's order (`in_tree_order`):
-    /// corner A, then B − A and C − A, as `Triangle` holds them (the same test on the same numbers, without going through
-    /// `Shape`: 72 bytes a triangle, read in the tree's leaves).
+    /// corner A, then B − A and C − A, as `Triangle` holds them (the same test on the
+    /// same numbers, without going through `Shape`: 72 bytes a triangle, read in the
+    /// tree's leaves).
     tris: Vec<[DVec3; 3]>,
     /// The spheres its `SPHERE` primitives name, in the tree's order (`shares_tree`:
     /// empty when the spheres have a tree of their own).
@@ -125,20 +126,21 @@ fn in_tree_order<T: Copy>(shapes: &mut Bvh<ShapePrim>, kind: u32, table: &[T]) -
 /// triangles, counted 3 % more in one tree; a report scene (a flat list of spheres, no
 /// other bounded shape) keeps its own path.
 fn shares_tree(objects: &[Object]) -> bool {
-    let spheres = objects
-        .iter()
-        .filter(|o| matches!(o.shape, Shape::Sphere(_)))
-        .count();
-    let others = objects
-        .iter()
-        .filter(|o| !matches!(o.shape, Shape::Sphere(_)) && o.shape.is_bounded())
-        .count();
+    let (mut spheres, mut others) = (0, 0);
+    for o in objects {
+        match o.shape {
+            Shape::Sphere(_) => spheres += 1,
+            ref shape if shape.is_bounded() => others += 1,
+            _ => {}
+        }
+    }
     spheres > bvh::FLAT_MAX && others > bvh::FLAT_MAX
 }
 
 impl Accel {
-    /// Builds the accelerator over `objects` (a BVH over the spheres from 13 spheres up, the
-    /// unbounded shapes in a flat list), for rays with the report's epsilon.
+    /// Builds the accelerator over `objects` (a BVH over the spheres from 13 spheres up,
+    /// shared with the other bounded shapes when those are many too; the unbounded
+    /// shapes in a flat list), for rays with the report's epsilon.
     pub fn new(objects: &[Object]) -> Accel {
         Accel::with_t_min(objects, T_MIN)
     }
@@ -212,7 +214,7 @@ impl Accel {
                 .map(|(i, o)| (i as u32, o.shape.clone()))
                 .collect()
         };
-        let shapes = Bvh::build(shapes, |p| {
+        let mut shapes = Bvh::build(shapes, |p| {
             let (lo, hi) = if p.mesh == ShapePrim::SOLO {
                 solo[p.part as usize]
                     .bounds()
@@ -222,15 +224,12 @@ impl Accel {
                 let (b, c) = (a + e1, a + e2);
                 (a.min(b).min(c), a.max(b).max(c))
             } else if p.mesh == ShapePrim::SPHERE {
-                let s: Sphere = spheres[p.part as usize];
-                let r = DVec3::splat(s.radius);
-                (s.center - r, s.center + r)
+                spheres[p.part as usize].bounds()
             } else {
                 meshes[p.mesh as usize].bounds(p.part)
             };
             (lo, hi, 0.5 * (lo + hi))
         });
-        let mut shapes = shapes;
         let tris = in_tree_order(&mut shapes, ShapePrim::TRI, &tris);
         let spheres = in_tree_order(&mut shapes, ShapePrim::SPHERE, &spheres);
         let tree = Bvh::build(prims, Prim::bounds);

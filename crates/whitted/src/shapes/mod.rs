@@ -201,10 +201,7 @@ impl Shape {
     /// infinite ones.
     pub fn bounds(&self) -> Option<(DVec3, DVec3)> {
         match self {
-            Shape::Sphere(s) => Some((
-                s.center - DVec3::splat(s.radius),
-                s.center + DVec3::splat(s.radius),
-            )),
+            Shape::Sphere(s) => Some(s.bounds()),
             Shape::Plane(_) | Shape::Quadric(_) => None,
             Shape::Triangle(t) => Some(t.bounds()),
             Shape::Smooth(t) => Some(t.flat.bounds()),

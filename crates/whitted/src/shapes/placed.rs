@@ -55,10 +55,7 @@ impl Local {
     /// A box around the shape, in object space.
     pub fn bounds(&self) -> (DVec3, DVec3) {
         match self {
-            Local::Sphere(s) => (
-                s.center - DVec3::splat(s.radius),
-                s.center + DVec3::splat(s.radius),
-            ),
+            Local::Sphere(s) => s.bounds(),
             Local::Box(b) => b.bounds(),
             Local::Capped(c) => c.bounds(),
             Local::Disc(c) => c.bounds(),

@@ -80,6 +80,13 @@ impl Sphere {
     pub fn normal(&self, p: DVec3) -> DVec3 {
         (p - self.center) * self.inv_radius
     }
+
+    /// The smallest box around the sphere: its low and high corners, C ∓ (R, R, R).
+    #[inline]
+    pub fn bounds(&self) -> (DVec3, DVec3) {
+        let r = DVec3::splat(self.radius);
+        (self.center - r, self.center + r)
+    }
 }
 
 #[cfg(test)]

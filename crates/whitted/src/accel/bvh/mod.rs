@@ -115,9 +115,8 @@ impl Prim {
     /// The box of its sphere, and its centre.
     #[inline]
     pub fn bounds(&self) -> (DVec3, DVec3, DVec3) {
-        let s: Sphere = self.sphere;
-        let r = DVec3::splat(s.radius);
-        (s.center - r, s.center + r, s.center)
+        let (lo, hi) = self.sphere.bounds();
+        (lo, hi, self.sphere.center)
     }
 }
 
