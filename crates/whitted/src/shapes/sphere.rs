@@ -98,6 +98,16 @@ mod tests {
     }
 
     #[test]
+    fn bounds_by_hand() {
+        // Centre (0, 0, −5), radius 2: from (−2, −2, −7) to (2, 2, −3).
+        let (lo, hi) = sphere().bounds();
+        assert_eq!(
+            (lo, hi),
+            (DVec3::new(-2.0, -2.0, -7.0), DVec3::new(2.0, 2.0, -3.0))
+        );
+    }
+
+    #[test]
     fn head_on_hit() {
         // OC = (0,0,−5), D = −z: OH = 5, CH² = 0, roots 5 ∓ 2.
         let r = Ray::new(DVec3::ZERO, -DVec3::Z);
