@@ -59,6 +59,7 @@
 #![warn(missing_docs)]
 
 pub mod accel;
+pub mod base;
 pub mod bump;
 pub mod camera;
 pub mod display;
@@ -85,7 +86,8 @@ pub mod still;
 pub mod texture;
 pub mod trace;
 
+pub use base::{Color, Frame};
 pub use camera::Camera;
 pub use fileloc::FileLoc;
-pub use render::{render, Frame};
+pub use render::render;
 pub use scene::{Scene, SceneError};

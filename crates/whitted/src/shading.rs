@@ -11,7 +11,7 @@
 //! - a light with N·L ≤ 0 adds nothing; a light seen through objects is filtered by
 //!   `Kt·C_obj` per surface crossing, and blocked by any opaque crossing.
 
-use crate::lights::{Light, LightSource};
+use crate::lights::{Light, LightSource, Occluders};
 use crate::object::{Highlight, Material, Object};
 use crate::optics::Ray;
 use crate::record::{NoRecord, Record};
@@ -41,29 +41,6 @@ pub fn transmission(objects: &[Object], p: DVec3, to_light: DVec3, dist: f64) ->
         }
     }
     through
-}
-
-/// What stands between a point and a light: answers `transmission` queries.
-pub trait Occluders {
-    /// What a shadow ray from `p` along the unit `to_light` lets through over a distance
-    /// `dist`, as the free function `transmission` defines it.
-    fn transmission(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color;
-
-    /// The same, knowing that the ray goes to light number `light` of the scene along
-    /// `to` = `to_light`·`dist` before normalisation (an implementation may keep
-    /// per-light structures); by default, `transmission`.
-    #[inline]
-    fn transmission_to(
-        &self,
-        light: usize,
-        p: DVec3,
-        to: DVec3,
-        to_light: DVec3,
-        dist: f64,
-    ) -> Color {
-        let _ = (light, to);
-        self.transmission(p, to_light, dist)
-    }
 }
 
 /// The reference: a linear scan over the objects.

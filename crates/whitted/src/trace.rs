@@ -28,12 +28,13 @@ pub use rules::Rules;
 pub use surface::{facing, surface_at};
 
 use crate::accel::{Accel, Hint, Hit, LightBuffer, NO_PART};
+use crate::lights::Occluders;
 use crate::lights::{self, SceneLight};
 use crate::object::Object;
 use crate::optics::{reflect, refract, Ray};
 pub use crate::record::{NoRecord, Record};
 use crate::scene::Scene;
-use crate::shading::{self, Occluders};
+use crate::shading;
 use crate::texture::Color;
 use glam::DVec3;
 use std::sync::Arc;

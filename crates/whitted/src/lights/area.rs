@@ -5,8 +5,8 @@
 //! shadows, the same on every run. Each point costs one shadow ray.
 
 use super::point::towards;
+use super::Occluders;
 use super::{Incident, LightSource};
-use crate::shading::Occluders;
 use crate::texture::Color;
 use glam::DVec3;
 

@@ -15,17 +15,18 @@
 pub mod area;
 pub mod directional;
 pub mod fade;
+mod occluders;
 pub mod point;
 pub mod spot;
 
 pub use area::Area;
 pub use directional::Directional;
 pub use fade::Fade;
+pub use occluders::Occluders;
 pub use point::Light;
 pub use spot::Spot;
 
 use crate::scene::ext::{Extension, LightKind};
-use crate::shading::Occluders;
 use crate::texture::Color;
 use glam::DVec3;
 

@@ -2,8 +2,8 @@
 //! in every direction, its shadow ray bounded by the distance to it. The extension's
 //! `point` record is the same light with an optional `fade` (`Faded`).
 
+use super::Occluders;
 use super::{Incident, LightSource};
-use crate::shading::Occluders;
 use crate::texture::Color;
 use glam::DVec3;
 

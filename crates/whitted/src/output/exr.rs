@@ -198,41 +198,11 @@ pub(super) type Stored = (u32, u32, Vec<[f32; 3]>, Colour);
 
 /// The beauty of the EXR file `bytes` as stored (RGB, rows top to bottom), with its size
 /// and its encoding: its `whitted:colour`, or `Linear` when the header has no such
-/// attribute (frames written before it held the values as they are). `read` reads the
-/// file.
+/// attribute (frames written before it held the values as they are).
 pub(super) fn read_beauty(bytes: &[u8]) -> Result<Stored, String> {
-    let image = read()
-        .no_deep_data()
-        .largest_resolution_level()
-        .all_channels()
-        .first_valid_layer()
-        .all_attributes()
-        .from_buffered(std::io::Cursor::new(bytes))
-        .map_err(|e| e.to_string())?;
-    let layer = &image.layer_data;
-    let find = |name: &str| {
-        layer
-            .channel_data
-            .list
-            .iter()
-            .find(|c| c.name.eq(name))
-            .map(|c| c.sample_data.values_as_f32().collect::<Vec<f32>>())
-            .ok_or_else(|| format!("no {name} channel"))
-    };
-    let (r, g, b) = (find("R")?, find("G")?, find("B")?);
-    let (w, h) = (layer.size.width() as u32, layer.size.height() as u32);
-    let encoding = match layer.attributes.other.get(&text(colour::ATTRIBUTE)) {
-        Some(AttributeValue::Text(t)) => Colour::from_name(&t.to_string())
-            .ok_or_else(|| format!("unknown {} {t}", colour::ATTRIBUTE))?,
-        _ => Colour::Linear,
-    };
-    let pixels = r
-        .into_iter()
-        .zip(g)
-        .zip(b)
-        .map(|((r, g), b)| [r, g, b])
-        .collect();
-    Ok((w, h, pixels, encoding))
+    let stored = super::exr_read::read_rgb_layer(bytes)?;
+    let colour = stored.colour.unwrap_or(Colour::Linear);
+    Ok((stored.width, stored.height, stored.pixels, colour))
 }
 
 /// The string attributes of the header of the EXR file `file` reads, of `width`×`height`,

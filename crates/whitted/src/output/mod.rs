@@ -20,6 +20,7 @@
 pub mod colour;
 pub mod exr;
 mod exr_offsets;
+pub mod exr_read;
 mod jpeg;
 pub(crate) mod png;
 mod ppm;

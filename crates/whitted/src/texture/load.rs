@@ -8,8 +8,8 @@
 //! within `MAX_TEXTURE_SIDE` and `MAX_TEXTURE_PIXELS` before anything is decoded.
 
 use super::image::Pixels;
+use crate::base::srgb::{encode, Colour};
 use crate::limits::{MAX_TEXTURE_BYTES, MAX_TEXTURE_PIXELS, MAX_TEXTURE_SIDE};
-use crate::output::colour::{encode, ATTRIBUTE};
 use std::path::Path;
 
 /// The pixels of the image file `path`, or why it gives none (one line, for a located
@@ -68,45 +68,24 @@ fn picture_pixels(bytes: &[u8]) -> Result<Pixels, String> {
 
 /// An OpenEXR's first part: its R, G, B channels (Y for a grey image), sRGB-encoded.
 fn exr_pixels(bytes: &[u8]) -> Result<Pixels, String> {
-    use exr::prelude::*;
     let meta = exr::meta::MetaData::read_from_buffered(std::io::Cursor::new(bytes), false)
         .map_err(|e| e.to_string())?;
     let header = meta.headers.first().ok_or("it has no part")?;
     let size = header.layer_size;
     check_size(size.width() as u64, size.height() as u64)?;
-    let image = read()
-        .no_deep_data()
-        .largest_resolution_level()
-        .all_channels()
-        .first_valid_layer()
-        .all_attributes()
-        .from_buffered(std::io::Cursor::new(bytes))
-        .map_err(|e| e.to_string())?;
-    let layer = &image.layer_data;
-    let find = |name: &str| {
-        let list = &layer.channel_data.list;
-        let found = list.iter().find(|c| c.name.eq(name));
-        found.map(|c| c.sample_data.values_as_f32().collect::<Vec<f32>>())
-    };
-    let (r, g, b) = match (find("R"), find("G"), find("B"), find("Y")) {
-        (Some(r), Some(g), Some(b), _) => (r, g, b),
-        (_, _, _, Some(y)) => (y.clone(), y.clone(), y),
-        _ => return Err("it has neither R, G, B nor Y channels".to_string()),
-    };
-    let raw = matches!(
-        layer.attributes.other.get(&Text::from(ATTRIBUTE)),
-        Some(AttributeValue::Text(t)) if t.eq("linear")
-    );
+    let stored = crate::output::exr_read::read_rgb_layer(bytes)?;
+    // A texture without the attribute is linear light, as EXRs are (§12).
+    let raw = stored.colour == Some(Colour::Linear);
     let shown = |v: f32| {
         let v = f64::from(v);
         let v = if raw { v } else { encode(v) };
         // NaN (or −0) maps to 0, like `to_byte`.
         v.clamp(0.0, 1.0).max(0.0) as f32
     };
-    let data = (r.into_iter().zip(g).zip(b))
-        .map(|((r, g), b)| [shown(r), shown(g), shown(b)])
+    let data = (stored.pixels.into_iter())
+        .map(|[r, g, b]| [shown(r), shown(g), shown(b)])
         .collect();
-    let (w, h) = (layer.size.width() as u32, layer.size.height() as u32);
+    let (w, h) = (stored.width, stored.height);
     Pixels::new(w, h, data).ok_or_else(|| "it holds no pixels".to_string())
 }
 

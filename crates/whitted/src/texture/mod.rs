@@ -31,8 +31,7 @@ use crate::noise::{floor, noise};
 use glam::DVec3;
 use std::sync::Arc;
 
-/// An RGB colour, channels nominally in 0..1.
-pub type Color = DVec3;
+pub use crate::base::Color;
 
 /// Offset that keeps the plane y = 0 from flickering between checker squares.
 pub const CHECKER_OFFSET: f64 = 1e-4;

@@ -1,0 +1,29 @@
+//! What a light's shadow rays ask of the scene: `Occluders`, the interface every light
+//! kind calls (`LightSource::shadow`) and that the tracer's acceleration structures
+//! (`trace::Tracer`) and the reference linear scan (`shading`) implement.
+
+use crate::base::Color;
+use glam::DVec3;
+
+/// What stands between a point and a light: answers `transmission` queries.
+pub trait Occluders {
+    /// What a shadow ray from `p` along the unit `to_light` lets through over a distance
+    /// `dist`, as the free function `transmission` defines it.
+    fn transmission(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color;
+
+    /// The same, knowing that the ray goes to light number `light` of the scene along
+    /// `to` = `to_light`·`dist` before normalisation (an implementation may keep
+    /// per-light structures); by default, `transmission`.
+    #[inline]
+    fn transmission_to(
+        &self,
+        light: usize,
+        p: DVec3,
+        to: DVec3,
+        to_light: DVec3,
+        dist: f64,
+    ) -> Color {
+        let _ = (light, to);
+        self.transmission(p, to_light, dist)
+    }
+}
