@@ -1,17 +1,10 @@
 //! Every `animate` and `raytrace` command line that the README, farm/README.md and docs/
 //! quote (in code blocks and inline code) parses with the binaries' own clap definitions,
-//! included here from src/bin/. Synopses (`[-o DIR]`, `…`) are grammar, not commands,
+//! from the package's library (src/lib.rs). Synopses (`[-o DIR]`, `…`) are grammar, not commands,
 //! and are left out; shell variables and xargs' `{}` are given a sample value.
 
-#[allow(dead_code)]
-#[path = "../../src/bin/animate/cli.rs"]
-mod cli;
-#[allow(dead_code)]
-#[path = "../../src/bin/raytrace/cli.rs"]
-mod raytrace_cli;
-#[allow(dead_code)]
-#[path = "../../src/bin/animate/report.rs"]
-mod report;
+use whitted_cli::animate::cli;
+use whitted_cli::raytrace::cli as raytrace_cli;
 
 use clap::Parser;
 use std::path::{Path, PathBuf};

@@ -51,6 +51,7 @@ mod golden_frames;
 mod image_povray;
 mod image_textures;
 mod interrupt;
+mod lean_build;
 mod light_names;
 mod lights_povray;
 mod malformed_scenes;

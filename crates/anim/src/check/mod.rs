@@ -260,7 +260,7 @@ pub fn bless(
                 layers.alpha = None;
                 let exr = ImageFormat::Exr(whitted::output::ExrOptions {
                     depth: whitted::output::ExrDepth::Float,
-                    colour: whitted::output::colour::Colour::Linear,
+                    colour: whitted::base::Colour::Linear,
                     ..Default::default()
                 });
                 whitted::output::write_atomic_layers(&path, layers, exr, &record)

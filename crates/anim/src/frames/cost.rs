@@ -134,7 +134,7 @@ impl Meter {
         let flight = self.in_flight.fetch_add(1, Ordering::SeqCst) + 1;
         Measuring {
             start: Instant::now(),
-            cpu: crate::stats::cpu_seconds(),
+            cpu: whitted_cmd::stats::cpu_seconds(),
             flight,
         }
     }
@@ -143,7 +143,7 @@ impl Meter {
     pub fn finish(&self, m: Measuring, frame: u32, digest: String, rays: &RayCount) -> FrameCost {
         let wall_s = m.start.elapsed().as_secs_f64();
         let flight_end = self.in_flight.fetch_sub(1, Ordering::SeqCst);
-        let cpu_s = match (m.cpu, crate::stats::cpu_seconds()) {
+        let cpu_s = match (m.cpu, whitted_cmd::stats::cpu_seconds()) {
             (Some(a), Some(b)) => Some(share(b - a, m.flight, flight_end)),
             _ => None,
         };

@@ -13,13 +13,13 @@ use super::policy::Policy;
 use super::status::{ranges, status};
 use super::video::{check_target, Ffmpeg};
 use crate::error::AnimError;
-use crate::process::stopped;
 use crate::project::Animation;
 use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::AtomicUsize;
 use std::time::Instant;
 use whitted::output::read_rgb;
+use whitted_cmd::process::stopped;
 
 /// The video `encode` makes of `dir` when none is named: `dir` + `.mp4`.
 pub fn default_video(dir: &Path) -> PathBuf {

@@ -27,7 +27,6 @@ use super::policy::Policy;
 use super::provenance::{self, raw_record_path, Inspection};
 use super::status;
 use crate::error::AnimError;
-use crate::process::stopped;
 use crate::project::Animation;
 use rayon::prelude::*;
 use std::io::Write;
@@ -39,6 +38,7 @@ use whitted::output::{
     encode, temp_beside, write_atomic_layers, write_atomic_with, ImageFormat, OutputError,
 };
 use whitted::trace::RayCount;
+use whitted_cmd::process::stopped;
 
 pub use crate::project::FRAME_MEMORY;
 

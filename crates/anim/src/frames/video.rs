@@ -26,7 +26,6 @@ use super::events::Reporter;
 use super::pipeline::{render_to_stream, Summary};
 use super::policy::{Encoding, Policy};
 use crate::error::AnimError;
-use crate::process::{after_stop, stopped};
 use crate::project::Animation;
 use std::io::Read;
 use std::path::Path;
@@ -36,6 +35,7 @@ use std::sync::Mutex;
 use std::thread::JoinHandle;
 use std::time::Duration;
 use whitted::output::ImageFormat;
+use whitted_cmd::process::{after_stop, stopped};
 
 /// How long a stop signal waits for the frames to stop flowing before ffmpeg is killed
 /// (a stopped or stalled ffmpeg would otherwise hold the run forever).

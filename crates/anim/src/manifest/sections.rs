@@ -36,8 +36,8 @@ use crate::select::SelectError;
 use std::collections::HashSet;
 use std::path::Path;
 use toml::Spanned;
+use whitted::base::Colour;
 use whitted::limits::{MAX_PIXELS, MAX_SAMPLES, MAX_SIDE};
-use whitted::output::colour::Colour;
 use whitted::output::{ExrCompression, ExrDepth, ExrOptions, ImageFormat};
 use whitted::passes::{Pass, PassSet};
 

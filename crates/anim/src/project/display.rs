@@ -10,8 +10,8 @@
 
 use super::{Animation, FrameObserver};
 use std::sync::Arc;
+use whitted::base::Colour;
 use whitted::display::{Display, Tev};
-use whitted::output::colour::Colour;
 use whitted::output::ImageFormat;
 
 impl<'p> Animation<'p> {

@@ -187,7 +187,7 @@ mod tests {
     }
 
     fn service() -> Frames {
-        Frames::new(Arc::new(crate::process::pool(Some(1)).unwrap()))
+        Frames::new(Arc::new(whitted_cmd::process::pool(Some(1)).unwrap()))
     }
 
     fn frame(frames: &Frames, live: &Live) -> Arc<Vec<u8>> {

@@ -164,7 +164,7 @@ pub fn serve(
         })?;
     // Requests are answered on threads of their own; their drawing runs on this pool
     // (`--threads`), not on rayon's global one.
-    let pool = Arc::new(crate::process::pool(options.threads)?);
+    let pool = Arc::new(whitted_cmd::process::pool(options.threads)?);
     live::watch(Arc::clone(&live))?;
     let ctx = Arc::new(Context {
         live,

@@ -13,7 +13,7 @@
 
 pub mod packet;
 
-use crate::output::colour::Colour;
+use crate::base::Colour;
 use std::io::Write;
 use std::net::{SocketAddr, TcpStream, ToSocketAddrs};
 use std::sync::Mutex;
@@ -61,9 +61,14 @@ impl Tev {
     /// Connects to tev at `addr` (within a second); a failure is one warning through
     /// `warn` and a `Tev` that sends nothing.
     pub fn connect(addr: &str, warn: Box<dyn Fn(&str) + Send + Sync>) -> Tev {
+        #[cfg(feature = "display")]
         let conn = resolve(addr).and_then(|a| {
             TcpStream::connect_timeout(&a, Duration::from_secs(1)).map_err(|e| e.to_string())
         });
+        // A lean build (without the tracer's `display` feature) opens no connection.
+        #[cfg(not(feature = "display"))]
+        let conn: Result<TcpStream, String> =
+            Err("this build has no viewer client: the tracer's `display` feature".into());
         let conn = match conn {
             Ok(s) => {
                 let _ = s.set_nodelay(true);
@@ -178,6 +183,7 @@ fn write_within(s: &mut TcpStream, mut buf: &[u8], limit: Duration) -> std::io::
     Ok(())
 }
 
+#[cfg(feature = "display")]
 fn resolve(addr: &str) -> Result<SocketAddr, String> {
     addr.to_socket_addrs()
         .map_err(|e| e.to_string())?

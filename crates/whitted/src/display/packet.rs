@@ -34,7 +34,7 @@ pub mod kind {
     pub const UPDATE_IMAGE_V3: u8 = 6;
 }
 
-use crate::output::colour::Colour;
+use crate::base::Colour;
 
 /// The float tev receives for byte `b` under `colour`: `colour.store(b/255)`.
 pub fn byte_to_float(b: u8, colour: Colour) -> f32 {

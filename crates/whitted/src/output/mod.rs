@@ -17,11 +17,21 @@
 //! `write_atomic` writes to a temporary file in the destination folder and renames it into
 //! place, so a file under its final name is always complete.
 
+#[cfg(feature = "exr")]
 pub mod colour;
+#[cfg(feature = "exr")]
 pub mod exr;
+#[cfg(feature = "exr")]
 mod exr_offsets;
+#[cfg(feature = "exr")]
 pub mod exr_read;
+#[cfg(feature = "jpeg")]
 mod jpeg;
+mod unbuilt;
+#[cfg(not(feature = "exr"))]
+pub use unbuilt::exr;
+#[cfg(not(feature = "jpeg"))]
+use unbuilt::jpeg;
 pub(crate) mod png;
 mod ppm;
 mod raw;
@@ -66,7 +76,7 @@ pub struct ExrOptions {
     /// The passes beside the beauty.
     pub passes: PassSet,
     /// How the beauty's colours are stored (`[output] colour`).
-    pub colour: colour::Colour,
+    pub colour: crate::base::Colour,
 }
 
 /// The beauty's sample type in an EXR frame.
@@ -161,6 +171,14 @@ pub enum OutputError {
     /// Writing to a stream (standard output, a pipe) failed.
     #[error("cannot write the image: {0}")]
     Stream(#[from] std::io::Error),
+    /// The format is one this build of the tracer leaves out (bad input).
+    #[error("this build writes no .{format} images (the tracer's `{feature}` feature)")]
+    NotBuilt {
+        /// The format's extension.
+        format: &'static str,
+        /// The cargo feature that brings it.
+        feature: &'static str,
+    },
 }
 
 impl OutputError {
@@ -168,9 +186,9 @@ impl OutputError {
     /// found before anything renders; a failure while writing is a failed run.
     pub fn outcome(&self) -> crate::exit::Outcome {
         match self {
-            OutputError::UnknownExtension { .. } | OutputError::Target { .. } => {
-                crate::exit::Outcome::BadInput
-            }
+            OutputError::UnknownExtension { .. }
+            | OutputError::Target { .. }
+            | OutputError::NotBuilt { .. } => crate::exit::Outcome::BadInput,
             _ => crate::exit::Outcome::Failed,
         }
     }
@@ -201,12 +219,29 @@ pub fn check_target(path: &Path) -> Result<(), OutputError> {
 impl ImageFormat {
     /// The format named by a path's extension (case-insensitive).
     pub fn from_path(path: &Path) -> Result<ImageFormat, OutputError> {
-        path.extension()
+        let format = path
+            .extension()
             .and_then(|e| e.to_str())
             .and_then(ImageFormat::from_name)
             .ok_or_else(|| OutputError::UnknownExtension {
                 path: path.to_path_buf(),
-            })
+            })?;
+        match format.feature() {
+            Some(feature) => Err(OutputError::NotBuilt {
+                format: format.extension(),
+                feature,
+            }),
+            None => Ok(format),
+        }
+    }
+
+    /// The tracer's cargo feature this format needs when this build leaves it out.
+    pub fn feature(&self) -> Option<&'static str> {
+        match self {
+            ImageFormat::Exr(_) if cfg!(not(feature = "exr")) => Some("exr"),
+            ImageFormat::Jpeg { .. } if cfg!(not(feature = "jpeg")) => Some("jpeg"),
+            _ => None,
+        }
     }
 
     /// The names a manifest or `--stdout` accepts, in the order messages list them.

@@ -142,7 +142,7 @@ fn read_stored(
     path: &Path,
     width: u32,
     height: u32,
-) -> Result<(Vec<[f32; 3]>, super::colour::Colour), ReadError> {
+) -> Result<(Vec<[f32; 3]>, crate::base::Colour), ReadError> {
     let bytes = read_regular(path, MAX_FRAME_BYTES, "frame")?;
     // The header first: a picture of another size is never decoded (an 8192² reference
     // would take gigabytes).

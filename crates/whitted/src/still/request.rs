@@ -11,10 +11,10 @@
 //! ```
 
 use super::Still;
+use crate::base::Colour;
 use crate::camera::{Lens, NonSquare};
 use crate::display::Display;
 use crate::exit::Outcome;
-use crate::output::colour::Colour;
 use crate::output::{
     check_target, write_atomic, write_atomic_layers, ExrDepth, ImageFormat, OutputError,
 };

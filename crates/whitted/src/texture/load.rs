@@ -8,6 +8,7 @@
 //! within `MAX_TEXTURE_SIDE` and `MAX_TEXTURE_PIXELS` before anything is decoded.
 
 use super::image::Pixels;
+#[cfg(feature = "exr")]
 use crate::base::srgb::{encode, Colour};
 use crate::limits::{MAX_TEXTURE_BYTES, MAX_TEXTURE_PIXELS, MAX_TEXTURE_SIDE};
 use std::path::Path;
@@ -66,7 +67,14 @@ fn picture_pixels(bytes: &[u8]) -> Result<Pixels, String> {
     Pixels::new(w, h, data).ok_or_else(|| "it holds no pixels".to_string())
 }
 
+/// An OpenEXR in a build without the tracer's `exr` feature.
+#[cfg(not(feature = "exr"))]
+fn exr_pixels(_bytes: &[u8]) -> Result<Pixels, String> {
+    Err("it is an OpenEXR, which this build does not read (the tracer's `exr` feature)".into())
+}
+
 /// An OpenEXR's first part: its R, G, B channels (Y for a grey image), sRGB-encoded.
+#[cfg(feature = "exr")]
 fn exr_pixels(bytes: &[u8]) -> Result<Pixels, String> {
     let meta = exr::meta::MetaData::read_from_buffered(std::io::Cursor::new(bytes), false)
         .map_err(|e| e.to_string())?;

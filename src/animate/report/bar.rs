@@ -7,8 +7,8 @@ use indicatif::{ProgressBar, ProgressState, ProgressStyle};
 use std::io::IsTerminal;
 use std::sync::Arc;
 use whitted::render::control;
-use whitted_anim::progress::{RowPoller, Weighted};
 use whitted_anim::{Event, Reporter};
+use whitted_cmd::progress::{RowPoller, Weighted};
 
 /// The progress bar: frames done (skipped ones count as done), frames/s, ETA.
 pub struct Bar(ProgressBar);

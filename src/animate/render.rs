@@ -13,8 +13,8 @@ use whitted_anim::frames::balance;
 use whitted_anim::frames::hooked::{FramePath, Hooked, Tally};
 use whitted_anim::frames::hooks::HookRun;
 use whitted_anim::frames::run::{self, Destination};
-use whitted_anim::progress::Weighted;
 use whitted_anim::{AnimError, Animation, Reporter};
+use whitted_cmd::progress::Weighted;
 
 /// What an interrupted stream or video says (`--resume` does not apply to them): its two
 /// lines, whether the run stopped by itself or was ended stuck on a write.
@@ -68,7 +68,7 @@ fn failed_if(outcome: Outcome, failed: bool) -> Outcome {
 /// The render itself; `tally` gets what the run did, however it ends.
 fn render_frames(args: RenderArgs, tally: &mut Tally) -> anyhow::Result<Outcome> {
     let c = &args.common;
-    if args.stdout.is_some() && whitted_anim::process::stdout_closed() {
+    if args.stdout.is_some() && whitted_cmd::process::stdout_closed() {
         return Err(AnimError::StdoutClosed.into());
     }
     let project = c.load_draft(&args.draft)?;
@@ -84,10 +84,10 @@ fn render_frames(args: RenderArgs, tally: &mut Tally) -> anyhow::Result<Outcome>
     if !c.quiet {
         report::announce(&anim, frames.len(), args.stdout == Some(ImageFormat::Raw));
     }
-    let stop = whitted_anim::process::watch_signals("animate");
+    let stop = whitted_cmd::process::watch_signals("animate");
     if matches!(destination, Destination::Stream(_)) {
         // A reader that stops reading would hold a write, and the run, forever.
-        whitted_anim::process::exit_when_stuck(stop.clone(), stream_stopped);
+        whitted_cmd::process::exit_when_stuck(stop.clone(), stream_stopped);
     }
     if !c.quiet {
         report::warn_if_non_square(&anim);

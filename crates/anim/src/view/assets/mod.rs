@@ -23,32 +23,32 @@ pub const ASSETS: [Asset; 6] = [
     Asset {
         path: "/",
         content_type: HTML,
-        text: include_str!("assets/index.html"),
+        text: include_str!("index.html"),
     },
     Asset {
         path: "/index.html",
         content_type: HTML,
-        text: include_str!("assets/index.html"),
+        text: include_str!("index.html"),
     },
     Asset {
         path: "/app.js",
         content_type: JS,
-        text: include_str!("assets/app.js"),
+        text: include_str!("app.js"),
     },
     Asset {
         path: "/direct.js",
         content_type: JS,
-        text: include_str!("assets/direct.js"),
+        text: include_str!("direct.js"),
     },
     Asset {
         path: "/ab.js",
         content_type: JS,
-        text: include_str!("assets/ab.js"),
+        text: include_str!("ab.js"),
     },
     Asset {
         path: "/app.css",
         content_type: CSS,
-        text: include_str!("assets/app.css"),
+        text: include_str!("app.css"),
     },
 ];
 

@@ -13,7 +13,6 @@ use whitted_anim::preview::{PreviewError, PreviewSummary};
 use whitted_anim::select::SelectError;
 use whitted_anim::{AnimError, Animation, Event, Reporter};
 
-#[path = "report/bar.rs"]
 pub mod bar;
 
 /// One JSON object a line on standard error, per event.

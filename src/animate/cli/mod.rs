@@ -8,14 +8,11 @@ use std::path::{Path, PathBuf};
 use whitted::render::Adaptive;
 use whitted_anim::project::draft::Draft;
 use whitted_anim::{AnimError, Project};
+use whitted_cmd::size::parse_size;
 
-#[path = "cli/checks.rs"]
 mod checks;
-#[path = "cli/farm.rs"]
 mod farm;
-#[path = "cli/folder.rs"]
 mod folder;
-#[path = "cli/render.rs"]
 mod render;
 
 pub use checks::{BlessArgs, CheckArgs};
@@ -156,13 +153,4 @@ impl DraftArgs {
             aa: self.aa,
         }
     }
-}
-
-fn parse_size(s: &str) -> Result<(u32, u32), String> {
-    let bad = || format!("expected WIDTHxHEIGHT within 16384 a side and 2^26 pixels, found {s:?}");
-    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
-    let (w, h): (u32, u32) = (w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
-    whitted::limits::size_ok(w.into(), h.into())
-        .then_some((w, h))
-        .ok_or_else(bad)
 }

@@ -4,13 +4,14 @@
 
 use clap::Parser;
 use std::path::PathBuf;
+use whitted::base::Colour;
 use whitted::camera::Lens;
 use whitted::display::Display;
-use whitted::output::colour::Colour;
 use whitted::output::ExrDepth;
 use whitted::passes::{Pass, PassSet};
 use whitted::render::Adaptive;
 use whitted::still::Request;
+use whitted_cmd::size::parse_size;
 
 const AFTER_HELP: &str = "\
 Formats, by OUT's extension: .png, .jpg/.jpeg (quality 90), .ppm (binary P6), .raw (the
@@ -120,15 +121,6 @@ impl Args {
             spd: self.spd,
         }
     }
-}
-
-fn parse_size(s: &str) -> Result<(u32, u32), String> {
-    let bad = || format!("expected WIDTHxHEIGHT within 16384 a side and 2^26 pixels, found {s:?}");
-    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
-    let (w, h): (u32, u32) = (w.parse().map_err(|_| bad())?, h.parse().map_err(|_| bad())?);
-    whitted::limits::size_ok(w.into(), h.into())
-        .then_some((w, h))
-        .ok_or_else(bad)
 }
 
 fn parse_fov(s: &str) -> Result<f64, String> {
