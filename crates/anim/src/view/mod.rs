@@ -6,6 +6,8 @@
 //! - `live`: the project, reloaded when the manifest or scene changes on disk (`notify`);
 //! - `frames`: frames at 1/scale, one render per client at a time, newer requests
 //!   superseding older ones, a bounded cache;
+//! - `context`: what the routes share (the `Context`, the `Reply`, reading a query and
+//!   the live project), below `routes`, `strip` and `direct`;
 //! - `routes`: the HTTP routes, the Host check and the 400 reasons;
 //! - `strip`: the output folder's state of every frame (`/api/status`);
 //! - `direct`: the directing aids' routes: `paths` (the camera's and tracks' paths over
@@ -23,6 +25,7 @@
 
 pub mod assets;
 pub mod camera_key;
+pub mod context;
 pub mod direct;
 pub mod frames;
 pub mod live;
@@ -30,7 +33,8 @@ pub mod paths;
 pub mod routes;
 pub mod strip;
 
-use routes::{answer, Context, Reply};
+use context::{Context, Reply};
+use routes::answer;
 use std::io::Write;
 use std::net::{IpAddr, SocketAddr};
 use std::path::PathBuf;
