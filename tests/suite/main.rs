@@ -89,5 +89,6 @@ mod texture_scale;
 mod view_browser;
 mod view_direct;
 mod view_direct_browser;
+mod view_limits;
 mod view_server;
 mod wide_frames;

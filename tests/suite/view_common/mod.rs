@@ -110,6 +110,11 @@ impl Viewer {
         self.proc_status("VmRSS:")
     }
 
+    /// The server's peak resident memory so far in KiB (Linux).
+    pub fn peak_rss_kib(&self) -> u64 {
+        self.proc_status("VmHWM:")
+    }
+
     /// The server's threads (Linux).
     pub fn threads(&self) -> u64 {
         self.proc_status("Threads:")

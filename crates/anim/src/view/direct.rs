@@ -4,7 +4,7 @@
 //! with the same `Animation` that draws the frames; a bad parameter is a 400 as on every
 //! route, a camera on the point it looks at a 422 with the command line's message.
 
-use super::routes::{number, project, Context, Reply};
+use super::context::{number, project, Context, Reply};
 use crate::project::Animation;
 use serde_json::json;
 

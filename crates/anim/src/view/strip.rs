@@ -2,7 +2,7 @@
 //! missing), as the page's strip shows it. The states hash every RAW frame, so an answer
 //! is kept and given again while neither the project nor the folder changed.
 
-use super::routes::{project, Context, Reply};
+use super::context::{project, Context, Reply};
 use crate::frames::status::states;
 use crate::project::Animation;
 use serde_json::json;
