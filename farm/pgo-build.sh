@@ -28,7 +28,7 @@ if [ -n "${PGO_BUILD_FLAG:-}" ]; then
   rustc=$1
   shift
   case " $* " in
-    *" --crate-name whitted "* | *" --crate-name whitted_anim "* | *" --crate-name raytrace "* | *" --crate-name animate "*)
+    *" --crate-name whitted "* | *" --crate-name whitted_cmd "* | *" --crate-name whitted_anim "* | *" --crate-name whitted_cli "* | *" --crate-name raytrace "* | *" --crate-name animate "*)
       exec "$rustc" "$@" "$PGO_BUILD_FLAG" ;;
   esac
   exec "$rustc" "$@"
@@ -67,7 +67,7 @@ render() { # bin-dir, out-dir
 profiles="$out/profiles"
 rm -rf "$profiles" "$out/train" "$out/check" "$out/raytrace" "$out/animate"
 echo "pgo-build: 1/4 instrumented build" >&2
-cargo clean --release --quiet -p whitted -p whitted-anim -p whitted-cli --target-dir "$out/build"
+cargo clean --release --quiet -p whitted -p whitted-cmd -p whitted-anim -p whitted-cli --target-dir "$out/build"
 build "-Cprofile-generate=$profiles"
 
 echo "pgo-build: 2/4 training" >&2
@@ -78,7 +78,7 @@ render "$bin" "$out/train"
 "$profdata" merge -o "$out/merged.profdata" "$profiles"
 
 echo "pgo-build: 3/4 optimised build" >&2
-cargo clean --release --quiet -p whitted -p whitted-anim -p whitted-cli --target-dir "$out/build"
+cargo clean --release --quiet -p whitted -p whitted-cmd -p whitted-anim -p whitted-cli --target-dir "$out/build"
 build "-Cprofile-use=$out/merged.profdata"
 
 echo "pgo-build: 4/4 same bytes as the plain release build" >&2
