@@ -7,9 +7,7 @@
 //! our frame and moved to the map frame's origin. Bound: under 1 % of the pixels more
 //! than 6 levels apart on a channel. Skips without POV-Ray (fails under CI).
 
-use crate::nff_povray::share_apart;
-use crate::skip;
-use whitted::trace::Tracer;
+use crate::support::povray::{against_povray, assert_close, povray};
 use whitted::Scene;
 
 const W: u32 = 160;
@@ -51,36 +49,24 @@ pub(crate) fn texture_picture() -> image::RgbImage {
 
 /// Renders both; the share of pixels apart, or none without POV-Ray.
 fn compare(ours_interp: &str, pov_interp: &str) -> Option<f64> {
-    let povray = skip::which("povray", &["/usr/bin/povray"])?;
+    povray()?;
     let dir = tempfile::tempdir().unwrap();
     texture_picture().save(dir.path().join("tex.png")).unwrap();
     let scene_path = dir.path().join("scene.txt");
     std::fs::write(&scene_path, SCENE.replace("{I}", ours_interp)).unwrap();
     let scene = Scene::load(&scene_path).unwrap();
-    let tracer = Tracer::new(&scene);
-    let (frame, _) = whitted::render(&tracer, &scene.camera(), W, H, 1);
-    let ours = dir.path().join("ours.png");
-    image::RgbImage::from_raw(W, H, frame.pixels)
-        .unwrap()
-        .save(&ours)
-        .unwrap();
     let pov = dir.path().join("scene.pov");
     std::fs::write(&pov, POV.replace("{I}", pov_interp)).unwrap();
-    let theirs = crate::nff_povray::povray_png(&povray, dir.path(), &pov, W, H);
-    if let Some(keep) = std::env::var_os("IMAGE_POVRAY_KEEP") {
-        let keep = std::path::Path::new(&keep);
-        std::fs::copy(&ours, keep.join(format!("ours-{ours_interp}.png"))).unwrap();
-        std::fs::copy(&theirs, keep.join(format!("pov-{ours_interp}.png"))).unwrap();
-    }
-    Some(share_apart(&ours, &theirs, 6))
+    let keep = ("IMAGE_POVRAY_KEEP", ours_interp);
+    Some(against_povray(&scene, &pov, (W, H), keep))
 }
 
 #[test]
 fn nearest_maps_match_image_map_without_interpolation() {
-    crate::nff_povray::assert_close(compare("nearest", ""));
+    assert_close(compare("nearest", ""));
 }
 
 #[test]
 fn bilinear_maps_match_image_map_interpolate_2() {
-    crate::nff_povray::assert_close(compare("bilinear", "interpolate 2"));
+    assert_close(compare("bilinear", "interpolate 2"));
 }

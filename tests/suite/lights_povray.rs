@@ -7,11 +7,9 @@
 //! left-handed). Bound: under 1 % of the pixels more than 6 levels apart on a channel.
 //! Skips without POV-Ray (fails under CI).
 
-use crate::nff_povray::share_apart;
-use crate::skip;
+use crate::support::povray::{against_povray, assert_close, povray};
 use glam::DVec3;
 use whitted::scene::ext::{ExtLight, LightKind, Modifiers};
-use whitted::trace::Tracer;
 use whitted::Scene;
 
 const W: u32 = 160;
@@ -51,26 +49,18 @@ fn light(kind: LightKind, color: [f64; 3], intensity: f64, fade: Option<(f64, f6
 /// Draws `lights` on the base scene with us and `pov_light` with POV-Ray; the share of
 /// pixels apart, or none when POV-Ray is missing.
 fn compare(lights: Vec<ExtLight>, pov_light: &str) -> Option<f64> {
-    let povray = skip::which("povray", &["/usr/bin/povray"])?;
+    povray()?;
     let dir = tempfile::tempdir().unwrap();
     let mut scene = Scene::parse(BASE, "lights.txt").unwrap();
     scene.ext.lights = lights;
-    let tracer = Tracer::new(&scene);
-    let (frame, _) = whitted::render(&tracer, &scene.camera(), W, H, 1);
-    let ours = dir.path().join("ours.png");
-    image::RgbImage::from_raw(W, H, frame.pixels)
-        .unwrap()
-        .save(&ours)
-        .unwrap();
     let pov = dir.path().join("scene.pov");
     std::fs::write(&pov, format!("{POV_BASE}{pov_light}\n")).unwrap();
-    let theirs = crate::nff_povray::povray_png(&povray, dir.path(), &pov, W, H);
-    if let Some(keep) = std::env::var_os("LIGHTS_POVRAY_KEEP") {
-        let keep = std::path::Path::new(&keep);
-        std::fs::copy(&ours, keep.join("ours.png")).unwrap();
-        std::fs::copy(&theirs, keep.join("pov.png")).unwrap();
-    }
-    Some(share_apart(&ours, &theirs, 6))
+    Some(against_povray(
+        &scene,
+        &pov,
+        (W, H),
+        ("LIGHTS_POVRAY_KEEP", "light"),
+    ))
 }
 
 #[test]
@@ -85,7 +75,7 @@ fn directional_matches_parallel() {
         0.8,
         None,
     );
-    crate::nff_povray::assert_close(compare(
+    assert_close(compare(
         vec![d],
         "light_source { <100, 200, -150> color rgb <1, 0.9, 0.8> * 0.8 parallel point_at <0, 0, 0> }",
     ));
@@ -105,7 +95,7 @@ fn spot_matches_spotlight() {
         1.0,
         None,
     );
-    crate::nff_povray::assert_close(compare(
+    assert_close(compare(
         vec![s],
         "light_source { <3, 6, -2> color rgb 1 spotlight point_at <-0.5, 0, 0> \
          radius 12 falloff 25 tightness 4 }",
@@ -122,7 +112,7 @@ fn faded_point_matches_fade_distance_and_power() {
         1.0,
         Some((2.5, 2.0)),
     );
-    crate::nff_povray::assert_close(compare(
+    assert_close(compare(
         vec![p],
         "light_source { <2, 3, -2> color rgb <1, 1, 0.9> fade_distance 2.5 fade_power 2 }",
     ));
@@ -143,7 +133,7 @@ fn area_matches_area_light() {
         0.9,
         None,
     );
-    crate::nff_povray::assert_close(compare(
+    assert_close(compare(
         vec![a],
         "light_source { <1, 6, -1> color rgb 0.9 area_light <3, 0, 0>, <0, 0, -3>, 4, 4 }",
     ));

@@ -6,8 +6,8 @@
 //! negated: POV-Ray is left-handed). Bound: under 1 % of the pixels more than 6 levels
 //! apart on a channel. Skips without POV-Ray (fails under CI).
 
-use crate::nff_povray::share_apart;
 use crate::skip;
+use crate::support::povray::share_apart;
 use whitted::trace::Tracer;
 use whitted::Scene;
 
@@ -167,7 +167,7 @@ fn compare(files: &[(&str, String)], records: &str, pov: &str) -> Option<f64> {
         .unwrap();
     let pov_file = dir.path().join("scene.pov");
     std::fs::write(&pov_file, format!("{POV_BASE}{pov}")).unwrap();
-    let theirs = crate::nff_povray::povray_png(&povray, dir.path(), &pov_file, W, H);
+    let theirs = crate::support::povray::povray_png(&povray, dir.path(), &pov_file, W, H);
     if let Some(keep) = std::env::var_os("MESH_POVRAY_KEEP") {
         let keep = std::path::Path::new(&keep);
         std::fs::copy(&ours, keep.join("ours.png")).unwrap();
@@ -184,7 +184,7 @@ const POV_BLUE: &str = "pigment { color rgb <0.2, 0.5, 0.9> } Fin(0.7)";
 #[test]
 fn smooth_icosphere_matches_mesh2() {
     let ico = icosphere();
-    crate::nff_povray::assert_close(compare(
+    crate::support::povray::assert_close(compare(
         &[("ball.obj", obj(&ico, true))],
         &format!("mesh \"ball.obj\" {RED} scale 0.9 0.9 0.9 translate 0 0.9 0\n"),
         &mesh2(
@@ -198,7 +198,7 @@ fn smooth_icosphere_matches_mesh2() {
 #[test]
 fn flat_icosphere_and_quad_cube_match_mesh2() {
     let (ico, cube) = (icosphere(), cube());
-    crate::nff_povray::assert_close(compare(
+    crate::support::povray::assert_close(compare(
         &[
             ("gem.obj", obj(&ico, false)),
             ("cube.obj", obj(&cube, false)),

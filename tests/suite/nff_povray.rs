@@ -6,14 +6,13 @@
 //! a channel. Skips without POV-Ray (fails under CI).
 
 use crate::shipped;
-use crate::skip;
-use crate::support::{pixels, raytrace};
-use std::path::{Path, PathBuf};
+use crate::support::povray::{povray, povray_png, share_apart};
+use crate::support::raytrace;
 
 /// Renders `name`.nff with `raytrace` and `name`.pov with POV-Ray (no anti-aliasing, no
 /// gamma, at the NFF's 160 × 120) and returns the share of pixels more than 6 apart.
 fn compare(name: &str) -> Option<f64> {
-    let povray = skip::which("povray", &["/usr/bin/povray"])?;
+    let povray = povray()?;
     let data = shipped::root().join("tests/data/nff");
     let dir = tempfile::tempdir().unwrap();
     let ours = dir.path().join("ours.png");
@@ -27,51 +26,6 @@ fn compare(name: &str) -> Option<f64> {
     let pov = data.join(format!("{name}.pov"));
     let theirs = povray_png(&povray, dir.path(), &pov, 160, 120);
     Some(share_apart(&ours, &theirs, 6))
-}
-
-/// The share of pixels whose channels differ by more than `levels` somewhere.
-/// POV-Ray's picture of `pov` at w × h (one ray a pixel, linear output, no alpha) as
-/// DIR/pov.png, as every comparison with POV-Ray renders it; POV-Ray failing fails the
-/// test with its messages.
-pub(crate) fn povray_png(povray: &Path, dir: &Path, pov: &Path, w: u32, h: u32) -> PathBuf {
-    let theirs = dir.join("pov.png");
-    let out = std::process::Command::new(povray)
-        .current_dir(dir)
-        .arg(format!("+I{}", pov.display()))
-        .arg(format!("+O{}", theirs.display()))
-        .args([&format!("+W{w}"), &format!("+H{h}"), "-A", "-D", "+FN8"])
-        .args(["File_Gamma=1.0", "Output_Alpha=off", "-V", "-GA"])
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success() && theirs.exists(),
-        "povray failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    theirs
-}
-
-/// The bound of every comparison with POV-Ray: under 1 % of the pixels more than 6
-/// levels apart (`share` from `share_apart`; none where POV-Ray is missing).
-pub(crate) fn assert_close(share: Option<f64>) {
-    if let Some(share) = share {
-        assert!(
-            share < 0.01,
-            "{:.2} % of the pixels are apart",
-            share * 100.0
-        );
-    }
-}
-
-pub(crate) fn share_apart(a: &Path, b: &Path, levels: u8) -> f64 {
-    let (a, b) = (pixels(a), pixels(b));
-    assert_eq!(a.len(), b.len(), "the two pictures differ in size");
-    let apart = a
-        .chunks(3)
-        .zip(b.chunks(3))
-        .filter(|(p, q)| p.iter().zip(*q).any(|(x, y)| x.abs_diff(*y) > levels))
-        .count();
-    apart as f64 / (a.len() / 3) as f64
 }
 
 #[test]

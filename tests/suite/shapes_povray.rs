@@ -6,10 +6,8 @@
 //! and in POV-Ray's language. Bound: under 1 % of the pixels more than 6 levels apart on
 //! a channel. Skips without POV-Ray (fails under CI).
 
-use crate::nff_povray::share_apart;
 use crate::povray_objects::{framed, obj, v, Kind, Obj};
-use crate::skip;
-use whitted::trace::Tracer;
+use crate::support::povray::{against_povray, assert_close, povray};
 use whitted::Scene;
 
 const W: u32 = 160;
@@ -34,30 +32,25 @@ light_source { <5, 8, -6> color rgb 1 }
 /// Draws `objects` on the base scene with us and with POV-Ray; the share of pixels
 /// apart, or none when POV-Ray is missing.
 fn compare(objects: &[Obj], keep: &str) -> Option<f64> {
-    let povray = skip::which("povray", &["/usr/bin/povray"])?;
+    povray()?;
     let dir = tempfile::tempdir().unwrap();
     let records: Vec<String> = objects.iter().map(Obj::ours).collect();
     let src = format!("{BASE}{}\n", records.join("\n"));
     let scene = Scene::parse(&src, "shapes.txt").unwrap_or_else(|e| panic!("{e}\n{src}"));
-    let tracer = Tracer::new(&scene);
-    let (frame, _) = whitted::render(&tracer, &scene.camera(), W, H, 1);
-    let ours = dir.path().join("ours.png");
-    image::RgbImage::from_raw(W, H, frame.pixels)
-        .unwrap()
-        .save(&ours)
-        .unwrap();
     let pov = dir.path().join("scene.pov");
     let pov_objects: Vec<String> = objects.iter().map(Obj::pov).collect();
     std::fs::write(&pov, format!("{POV_BASE}{}\n", pov_objects.join("\n"))).unwrap();
-    let theirs = crate::nff_povray::povray_png(&povray, dir.path(), &pov, W, H);
     if let Some(to) = std::env::var_os("SHAPES_POVRAY_KEEP") {
         let to = std::path::Path::new(&to);
-        std::fs::copy(&ours, to.join(format!("{keep}-ours.png"))).unwrap();
-        std::fs::copy(&theirs, to.join(format!("{keep}-pov.png"))).unwrap();
         std::fs::copy(&pov, to.join(format!("{keep}.pov"))).unwrap();
         std::fs::write(to.join(format!("{keep}.txt")), &src).unwrap();
     }
-    Some(share_apart(&ours, &theirs, 6))
+    Some(against_povray(
+        &scene,
+        &pov,
+        (W, H),
+        ("SHAPES_POVRAY_KEEP", keep),
+    ))
 }
 
 const RED: [f64; 3] = [0.9, 0.2, 0.2];
@@ -96,7 +89,7 @@ fn every_shape_matches_povray() {
             YELLOW,
         ),
     ];
-    crate::nff_povray::assert_close(compare(&objects, "shapes"));
+    assert_close(compare(&objects, "shapes"));
 }
 
 #[test]
@@ -146,7 +139,7 @@ fn framed_shapes_match_povray() {
             [-1.6, 1.6, -1.8],
         ),
     ];
-    crate::nff_povray::assert_close(compare(&objects, "framed"));
+    assert_close(compare(&objects, "framed"));
 }
 
 #[test]
@@ -233,5 +226,5 @@ fn csg_matches_povray() {
             [2.5, 0.8, -1.2],
         ),
     ];
-    crate::nff_povray::assert_close(compare(&objects, "csg"));
+    assert_close(compare(&objects, "csg"));
 }

@@ -6,6 +6,7 @@
 #![allow(dead_code)]
 
 pub mod media;
+pub mod povray;
 pub mod process;
 #[allow(unused_imports)]
 pub use media::*;
