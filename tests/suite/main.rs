@@ -30,6 +30,7 @@ mod check_bounded;
 mod check_browser;
 mod check_reports;
 mod colour_tags;
+mod csg_depth;
 mod csg_properties;
 mod degenerate_geometry;
 mod directing;

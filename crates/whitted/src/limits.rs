@@ -37,6 +37,10 @@ pub const MAX_MESH_BYTES: u64 = 256 << 20;
 /// a million-triangle model four times over; the tree's build needs about 150 bytes a
 /// triangle at its peak, so the largest mesh stays under a gigabyte.
 pub const MAX_MESH_TRIANGLES: u64 = 1 << 22;
+/// The deepest CSG blocks nest (the outermost block is level 1): 1,000 levels, far past
+/// any modelled object, few enough that a tree of alternating operations (which does not
+/// flatten) stays a short walk on a worker thread's stack.
+pub const MAX_CSG_DEPTH: usize = 1000;
 /// The largest manifest file read: 16 MiB.
 pub const MAX_MANIFEST_BYTES: u64 = 16 << 20;
 /// The largest frame file read by `status`, `--resume` and `encode`: the RGB bytes of

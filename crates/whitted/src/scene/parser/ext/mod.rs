@@ -26,13 +26,14 @@
 //! read, and an error points at the field to blame. Records are numbered per kind after
 //! the report's of the same kind (`sphere 5`, `light 3`, `csg 1`) in error contexts.
 
+mod csg;
 pub(super) mod keywords;
 mod records;
 #[cfg(test)]
 mod tests;
 
 use super::super::ext::check::Violation;
-use super::super::ext::{CsgOp, ExtItem, Extension};
+use super::super::ext::{ExtItem, Extension};
 use super::super::lexer::Token;
 use super::{Parser, Result};
 use crate::fileloc::FileLoc;
@@ -87,8 +88,8 @@ impl<'a> Ext<'_, 'a> {
         if let Some(keyword) = keywords::find(keywords::SHAPES, word) {
             let object = self.shape(tok, keyword, None)?;
             self.out.objects.push(ExtItem::Shape(object));
-        } else if let Some(op) = csg_op(word) {
-            let csg = self.csg(tok, op, None)?;
+        } else if let Some(op) = csg::op(word) {
+            let csg = self.csg(tok, op)?;
             self.out.objects.push(ExtItem::Csg(csg));
         } else if let Some(keyword) = keywords::find(keywords::LIGHTS, word) {
             let light = self.light(tok, keyword)?;
@@ -155,71 +156,6 @@ impl<'a> Ext<'_, 'a> {
         self.p.error(&tok, v.message, v.field)
     }
 
-    /// A CSG block: `op` read at `tok`, children until `end`, then its modifiers.
-    fn csg(
-        &mut self,
-        tok: Token<'a>,
-        op: CsgOp,
-        within: Option<u64>,
-    ) -> Result<super::super::ext::Csg> {
-        let n = within.is_none().then(|| self.number("csg"));
-        let me = within.or(n);
-        let mut children = Vec::new();
-        loop {
-            self.enter(op.keyword(), n, within);
-            let Some(child) = self.p.next() else {
-                let (line, column) = self.p.lexer.position();
-                let msg = format!(
-                    "the {} block of line {} has no 'end' (the file ends inside it)",
-                    op.keyword(),
-                    tok.line
-                );
-                return Err(self.p.error_at(line, column, msg, ""));
-            };
-            if child.text == "end" {
-                break;
-            }
-            if let Some(keyword) = keywords::find(keywords::SHAPES, child.text) {
-                let object = self.shape(child, keyword, me)?;
-                if !object.shape.is_solid(object.mods.open) {
-                    let what = if object.mods.open { "an open " } else { "a " };
-                    let msg = format!(
-                        "{what}{} is not a solid: CSG takes spheres, planes, boxes, capped cylinders and cones, and tori",
-                        child.text
-                    );
-                    return Err(self.p.error(&child, msg, ""));
-                }
-                children.push(ExtItem::Shape(object));
-            } else if let Some(inner) = csg_op(child.text) {
-                children.push(ExtItem::Csg(self.csg(child, inner, me)?));
-            } else {
-                let msg = format!(
-                    "expected a solid, a CSG block or 'end' in the {} block of line {}, found '{}'",
-                    op.keyword(),
-                    tok.line,
-                    quote(child.text)
-                );
-                return Err(self.p.error(&child, msg, ""));
-            }
-        }
-        if children.len() < 2 {
-            let msg = format!(
-                "a {} block needs two or more objects, found {}",
-                op.keyword(),
-                children.len()
-            );
-            return Err(self.p.error(&tok, msg, ""));
-        }
-        self.enter(op.keyword(), n, within);
-        let mods = self.modifiers(&["name", "scale", "rotate", "translate"], within.is_some())?;
-        Ok(super::super::ext::Csg {
-            op,
-            children,
-            mods,
-            loc: self.loc(&tok),
-        })
-    }
-
     /// An unknown keyword, with the nearest one suggested.
     fn unknown(&mut self, tok: &Token) -> super::super::SceneError {
         self.enter("after the last light", None, None);
@@ -235,15 +171,6 @@ impl<'a> Ext<'_, 'a> {
             msg += " (extension records start with sphere, plane, box, cylinder, cone, disc, torus, triangle, mesh, union, intersection, difference, directional, spot, point, area or focus)";
         }
         self.p.error(tok, msg, "")
-    }
-}
-
-fn csg_op(word: &str) -> Option<CsgOp> {
-    match word {
-        "union" => Some(CsgOp::Union),
-        "intersection" => Some(CsgOp::Intersection),
-        "difference" => Some(CsgOp::Difference),
-        _ => None,
     }
 }
 
