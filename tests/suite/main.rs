@@ -86,6 +86,7 @@ mod skip_visible;
 mod spd_table;
 mod tev_stream;
 mod texture_scale;
+mod tile_faces;
 mod view_browser;
 mod view_direct;
 mod view_direct_browser;
