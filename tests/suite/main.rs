@@ -33,6 +33,7 @@ mod colour_tags;
 mod csg_depth;
 mod csg_properties;
 mod degenerate_geometry;
+mod degenerate_work;
 mod directing;
 mod docs_commands;
 mod docs_examples;
