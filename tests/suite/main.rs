@@ -88,6 +88,7 @@ mod spd_table;
 mod tev_stream;
 mod texture_scale;
 mod tile_faces;
+mod tracer_limits;
 mod view_browser;
 mod view_direct;
 mod view_direct_browser;

@@ -72,6 +72,7 @@ impl<'a> Ext<'_, 'a> {
                     None => return Ok(block),
                 }
             } else if let Some(keyword) = keywords::find(keywords::SHAPES, child.text) {
+                self.count_object(&child)?;
                 let object = self.shape(child, keyword, Some(n))?;
                 if !object.shape.is_solid(object.mods.open) {
                     let what = if object.mods.open { "an open " } else { "a " };

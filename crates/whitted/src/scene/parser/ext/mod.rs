@@ -38,6 +38,7 @@ use super::super::lexer::Token;
 use super::{Parser, Result};
 use crate::fileloc::FileLoc;
 use crate::input::quote;
+use crate::limits::MAX_SCENE_OBJECTS;
 use std::path::PathBuf;
 
 /// The extension reader's state over the report's parser.
@@ -51,6 +52,8 @@ pub(super) struct Ext<'p, 'a> {
     counters: Vec<(&'static str, u64)>,
     /// The scene file's folder, against which mesh paths are resolved.
     base: PathBuf,
+    /// Objects so far, the report's included (a CSG block's solids count one each).
+    objects: u64,
     out: Extension,
 }
 
@@ -73,6 +76,7 @@ pub(super) fn read(p: &mut Parser<'_>, report: [u64; 4]) -> Result<Extension> {
         names: Vec::new(),
         counters,
         base,
+        objects: report[0] + report[1] + report[2],
         out: Extension::default(),
     };
     while let Some(tok) = ext.p.next() {
@@ -86,6 +90,7 @@ impl<'a> Ext<'_, 'a> {
     fn record(&mut self, tok: Token<'a>) -> Result<()> {
         let word = tok.text;
         if let Some(keyword) = keywords::find(keywords::SHAPES, word) {
+            self.count_object(&tok)?;
             let object = self.shape(tok, keyword, None)?;
             self.out.objects.push(ExtItem::Shape(object));
         } else if let Some(op) = csg::op(word) {
@@ -98,6 +103,18 @@ impl<'a> Ext<'_, 'a> {
             self.focus(tok)?;
         } else {
             return Err(self.unknown(&tok));
+        }
+        Ok(())
+    }
+
+    /// One more object at `tok`, refused past the scene's budget.
+    fn count_object(&mut self, tok: &Token) -> Result<()> {
+        self.objects += 1;
+        if self.objects > MAX_SCENE_OBJECTS {
+            let msg = format!(
+                "one object too many: a scene may have {MAX_SCENE_OBJECTS} objects in all (the report's, the extension's and each solid of a CSG block)"
+            );
+            return Err(self.p.error(tok, msg, ""));
         }
         Ok(())
     }
@@ -160,7 +177,14 @@ impl<'a> Ext<'_, 'a> {
     fn unknown(&mut self, tok: &Token) -> super::super::SceneError {
         self.enter("after the last light", None, None);
         let mut msg = format!("unknown keyword '{}'", quote(tok.text));
-        if let Some(k) = keywords::nearest(tok.text, keywords::all()) {
+        if tok.text == "end" {
+            msg = "'end' with no CSG block open (a block starts with union, intersection or difference; one 'end' too many?)".to_string();
+        } else if keywords::find(keywords::MODIFIERS, tok.text).is_some() {
+            msg = format!(
+                "'{}' is a modifier, and here it follows no record that takes it (given twice, or after a record that does not take it?)",
+                tok.text
+            );
+        } else if let Some(k) = keywords::nearest(tok.text, keywords::all()) {
             msg += &format!(" (did you mean '{k}'?)");
         } else if tok.text.parse::<f64>().is_ok() {
             msg = format!(
