@@ -45,7 +45,8 @@ pub(super) fn settle(
     };
     let c = f.value / size;
     let k = c.round();
-    if !((c - k).abs() <= ON_BOUNDARY * k.abs().max(1.0)) {
+    let on_boundary = (c - k).abs() <= ON_BOUNDARY * k.abs().max(1.0);
+    if !on_boundary {
         return uv;
     }
     // A face facing +axis has its solid below: the top of the tile under the boundary.
@@ -66,7 +67,7 @@ fn flat(map: MapKind, shape: &Shape, p: DVec3) -> Option<Flat> {
         (MapKind::Spherical, _) => None,
         (MapKind::Cylindrical, Shape::Plane(pl)) => {
             let n = pl.normal();
-            (n.x == 0.0 && n.z == 0.0).then(|| Flat {
+            (n.x == 0.0 && n.z == 0.0).then_some(Flat {
                 axis: 1,
                 value: pl.point.y,
                 outward: n.y,
