@@ -3,7 +3,7 @@
 //! the same t (`Mesh::line_hit` reads nothing else), and the nearest-hit rule then keeps
 //! the one first in the file; a shadow ray stops at any of them. So the later copies can
 //! never answer a query, and the tree leaves them out: a mesh of a million copies of one
-//! triangle (issue 57, point 4) is one triangle to the tree, where all million shared one
+//! triangle (reliability round four) is one triangle to the tree, where all million shared one
 //! box, could not be split, and were all tested by every ray that met it. A glass mesh
 //! keeps its copies (each crossing of a shadow ray multiplies the light through it).
 

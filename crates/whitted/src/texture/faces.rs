@@ -1,4 +1,4 @@
-//! Faces that lie on a tile boundary of an image map (issue 57, point 8). Over a flat face
+//! Faces that lie on a tile boundary of an image map. Over a flat face
 //! perpendicular to one of the map frame's axes, that coordinate is constant: a box's
 //! faces, a capped cylinder's or cone's caps (along its axis under `cylindrical`, and
 //! under `planar` when the axis is the object frame's x or y), a horizontal plane under
