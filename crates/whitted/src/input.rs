@@ -20,7 +20,10 @@ fn refusal(path: &Path, limit: u64, what: &str) -> Result<u64, Error> {
         };
         return Err(Error::new(
             ErrorKind::InvalidInput,
-            format!("not a regular file ({is}); a {what} must be a regular file"),
+            format!(
+                "not a regular file ({is}); {} must be a regular file",
+                a(what)
+            ),
         ));
     }
     if meta.len() > limit {
@@ -32,8 +35,14 @@ fn refusal(path: &Path, limit: u64, what: &str) -> Result<u64, Error> {
 fn too_large(limit: u64, what: &str) -> Error {
     Error::new(
         ErrorKind::InvalidData,
-        format!("larger than the limit of {} for a {what}", size(limit)),
+        format!("larger than the limit of {} for {}", size(limit), a(what)),
     )
+}
+
+/// `what` with its article: "a scene", "an image".
+fn a(what: &str) -> String {
+    let vowel = what.starts_with(['a', 'e', 'i', 'o', 'u', 'A', 'E', 'I', 'O', 'U']);
+    format!("{} {what}", if vowel { "an" } else { "a" })
 }
 
 /// A byte count for people: `256 MiB`, `12 KiB`, `300 bytes`.
@@ -56,7 +65,7 @@ pub fn open_regular(path: &Path, limit: u64, what: &str) -> Result<(File, u64), 
     if !meta.is_file() {
         return Err(Error::new(
             ErrorKind::InvalidInput,
-            format!("not a regular file; a {what} must be a regular file"),
+            format!("not a regular file; {} must be a regular file", a(what)),
         ));
     }
     Ok((file, len.max(meta.len())))

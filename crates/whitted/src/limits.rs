@@ -37,6 +37,10 @@ pub const MAX_MESH_BYTES: u64 = 256 << 20;
 /// a million-triangle model four times over; the tree's build needs about 150 bytes a
 /// triangle at its peak, so the largest mesh stays under a gigabyte.
 pub const MAX_MESH_TRIANGLES: u64 = 1 << 22;
+/// The deepest CSG blocks nest (the outermost block is level 1): 1,000 levels, far past
+/// any modelled object, few enough that a tree of alternating operations (which does not
+/// flatten) stays a short walk on a worker thread's stack.
+pub const MAX_CSG_DEPTH: usize = 1000;
 /// The largest manifest file read: 16 MiB.
 pub const MAX_MANIFEST_BYTES: u64 = 16 << 20;
 /// The largest frame file read by `status`, `--resume` and `encode`: the RGB bytes of
@@ -70,6 +74,18 @@ pub const MAX_LENS_SAMPLES: u64 = 32;
 pub const MAX_TEXTURE_SIDE: u32 = 16384;
 /// The most pixels an image texture may have (2^24: 4096 × 4096, 201 MB as floats).
 pub const MAX_TEXTURE_PIXELS: u64 = 1 << 24;
+/// The most pixels all the image textures of one scene may hold together: 2^24, what the
+/// largest one may hold (201 MB as floats), so that a scene's images stay within it
+/// however many files it names (25 files of 16384 × 1024 took 3.8 GB).
+pub const MAX_SCENE_TEXTURE_PIXELS: u64 = MAX_TEXTURE_PIXELS;
+/// The most objects one scene may have, of every kind together (Scene.txt's records,
+/// extension shapes and CSG blocks, NFF's spheres, cones and polygons' triangles): as many
+/// as Scene.txt allows of one kind. A mesh is one object; its triangles have their own
+/// budget.
+pub const MAX_SCENE_OBJECTS: u64 = MAX_COUNT;
+/// The most triangles all the meshes of one scene may have together: what one mesh may
+/// have.
+pub const MAX_SCENE_TRIANGLES: u64 = MAX_MESH_TRIANGLES;
 /// The largest image texture file read: 256 MiB.
 pub const MAX_TEXTURE_BYTES: u64 = 256 << 20;
 

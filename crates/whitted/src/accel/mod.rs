@@ -22,6 +22,7 @@ mod lightbuf;
 mod shadow;
 mod shadow_cache;
 mod tiles;
+mod unique;
 
 pub use bvh::{Bounded, Bvh, Prim, ShapePrim};
 pub use dirgrid::DirGrid;
@@ -178,8 +179,16 @@ impl Accel {
                 }
                 Shape::Sphere(_) => {}
                 Shape::Mesh(m) => {
-                    let count = meshes.get(m.id as usize).map_or(0, |m| m.triangles.len());
-                    shapes.extend((0..count as u32).map(|k| prim(k, m.id)));
+                    let Some(mesh) = meshes.get(m.id as usize) else {
+                        continue;
+                    };
+                    // A glass mesh keeps its copies: each crossing of a shadow ray counts.
+                    let parts = if is_glass(o) {
+                        (0..mesh.triangles.len() as u32).collect()
+                    } else {
+                        unique::triangles(mesh)
+                    };
+                    shapes.extend(parts.into_iter().map(|k| prim(k, m.id)));
                 }
                 // A smooth triangle is hit as its flat one (`SmoothTriangle::hit`).
                 Shape::Triangle(t) | Shape::Smooth(SmoothTriangle { flat: t, .. }) => {

@@ -84,6 +84,11 @@ impl Pixels {
         (self.width, self.height)
     }
 
+    /// How many pixels it holds.
+    pub fn count(&self) -> u64 {
+        u64::from(self.width) * u64::from(self.height)
+    }
+
     /// The pixel at column `i`, row `j` (both wrapped into the image).
     fn at(&self, i: i64, j: i64) -> Color {
         let i = i.rem_euclid(i64::from(self.width)) as usize;

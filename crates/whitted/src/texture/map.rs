@@ -12,7 +12,8 @@
 //!   x = normalize(up × y) with up as for planes, z = x × y; u as spherical's from x and
 //!   z, v = y/Size. Other shapes use their object frame (y up).
 //!
-//! The frames are read from the drawn shape, so an animated shape carries its image.
+//! The frames are read from the drawn shape, so an animated shape carries its image. A
+//! flat face on a tile boundary reads the tile on its solid's side (`faces`).
 
 use crate::shapes::{Local, Shape};
 use glam::DVec3;
@@ -96,8 +97,16 @@ fn turn(x: f64, z: f64) -> f64 {
     theta / TAU
 }
 
-/// (u, v) of the world point `p` of `shape` under `map`, before wrapping.
+/// (u, v) of the world point `p` of `shape` under `map`, before wrapping; on a face
+/// that lies on a tile boundary, the coordinate it holds constant is read just inside
+/// the solid's tile (`faces`).
 pub fn uv(map: MapKind, size: f64, shape: &Shape, p: DVec3) -> (f64, f64) {
+    let uv = unsettled(map, size, shape, p);
+    super::faces::settle(map, size, shape, p, uv)
+}
+
+/// (u, v) as the formulas above give them.
+fn unsettled(map: MapKind, size: f64, shape: &Shape, p: DVec3) -> (f64, f64) {
     match map {
         MapKind::Planar => {
             let q = match shape {

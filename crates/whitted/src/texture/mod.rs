@@ -19,6 +19,7 @@
 //! (`image`, `map`, `load`): it needs the object's shape, so `Object::color_at` is what
 //! the tracer asks.
 
+mod faces;
 mod image;
 mod load;
 pub mod map;

@@ -9,6 +9,7 @@
 //! becomes one object (`csg`), its children drawn in the block's frame.
 
 use super::{ExtItem, ExtObject, ExtShape, Extension, Modifiers};
+use crate::limits::MAX_SCENE_TRIANGLES;
 use crate::mesh::Mesh;
 use crate::object::Object;
 use crate::scene::{FileLoc, Scene, SceneError, ShapeSpec};
@@ -49,6 +50,15 @@ pub fn objects(ext: &Extension) -> Result<Drawn, SceneError> {
                 let (shape, anchor) = match &o.shape {
                     ExtShape::Mesh { path, .. } => {
                         let (handle, mesh) = mesh(o, path, out.meshes.len())?;
+                        let before: u64 = out.meshes.iter().map(|m| m.triangles.len() as u64).sum();
+                        let total = before + mesh.triangles.len() as u64;
+                        if total > MAX_SCENE_TRIANGLES {
+                            let why = format!(
+                                "its {} triangles and the {before} of the meshes before it make {total}: a scene's meshes may have {MAX_SCENE_TRIANGLES} triangles in all",
+                                mesh.triangles.len()
+                            );
+                            return Err(refused(&o.loc, "mesh", &why));
+                        }
                         out.meshes.push(Arc::new(mesh));
                         (Shape::Mesh(handle), 0.5 * (handle.lo + handle.hi))
                     }

@@ -16,7 +16,7 @@ use std::sync::Arc;
 /// The object of a block and the point a camera looks at for it (the centre of its
 /// bounding box, or where its first solid's anchor went for an unbounded block).
 pub fn object(block: &Block) -> Result<(Object, DVec3), SceneError> {
-    let (tree, first) = build(block, &Frame::IDENTITY)?;
+    let (tree, first) = build(block)?;
     let lead = tree.first_leaf();
     let (texture, material) = (lead.texture.clone(), lead.material);
     let look = tree.bounds().map_or(first, |(lo, hi)| 0.5 * (lo + hi));
@@ -28,50 +28,108 @@ pub fn object(block: &Block) -> Result<(Object, DVec3), SceneError> {
     Ok((object, look))
 }
 
-/// The tree of `block` inside frames `outer`, with its first solid's anchor.
-fn build(block: &Block, outer: &Frame) -> Result<(Csg, DVec3), SceneError> {
-    let word = block.op.keyword();
-    let singular = || {
-        refused(
-            &block.loc,
-            word,
-            "the scale, rotate and translate make a singular frame",
-        )
-    };
-    let own = frame(&block.mods).ok_or_else(singular)?;
-    let f = own.then(outer).ok_or_else(singular)?;
-    let mut children = Vec::with_capacity(block.children.len());
+/// A block being walked: the block, its frame in the world, its next child, and whether
+/// it opened a node of its own (false when its children join its parent's node).
+struct Walk<'b> {
+    block: &'b Block,
+    frame: Frame,
+    next: usize,
+    opens: bool,
+}
+
+/// A node being built: its operation and the children gathered so far.
+type Gather = (Op, Vec<Node>);
+
+/// The tree of `block`, with its first solid's anchor. The blocks are walked with a
+/// stack of their own (depth first, in file order), and a chain of one operation is
+/// flattened: a block whose operation is its parent's joins its parent's node (for a
+/// difference, only as the node's first child), so a union of unions is one union of
+/// all their solids. The surface, the inside and the bounds of the tree are the nested
+/// blocks' own (the operations are associative; a difference's first child is what the
+/// others are taken from), and the solids keep their order, so ties go to the same one.
+fn build(block: &Block) -> Result<(Csg, DVec3), SceneError> {
+    let mut walk = vec![Walk {
+        block,
+        frame: block_frame(block, &Frame::IDENTITY)?,
+        next: 0,
+        opens: true,
+    }];
+    let mut nodes: Vec<Gather> = vec![(op(block.op), Vec::new())];
     let mut first = None;
-    for child in &block.children {
-        let (node, look) = match child {
+    while let Some(top) = walk.last_mut() {
+        let Some(child) = top.block.children.get(top.next) else {
+            let done = walk.pop().expect("a block is walked");
+            if !done.opens {
+                continue;
+            }
+            let (op, children) = nodes.pop().expect("a node is open");
+            let word = done.block.op.keyword();
+            let tree = Csg::new(op, children).ok_or_else(|| {
+                refused(
+                    &done.block.loc,
+                    word,
+                    "a CSG block needs two or more solids",
+                )
+            })?;
+            match nodes.last_mut() {
+                Some((_, siblings)) => siblings.push(Node::Csg(tree)),
+                None => return Ok((tree, first.unwrap_or(DVec3::ZERO))),
+            }
+            continue;
+        };
+        top.next += 1;
+        let outer = top.frame;
+        let (node_op, gathered) = nodes.last_mut().expect("a node is open");
+        match child {
             ExtItem::Shape(o) => {
-                let shape = shape_in(o, &f)?;
+                let shape = shape_in(o, &outer)?;
                 if !csg::is_solid(&shape) {
                     let why = "a CSG block takes solids only (sphere, plane, box, capped cylinder or cone, torus)";
                     return Err(refused(&o.loc, o.shape.keyword(), why));
                 }
-                let look = f.point_to_world(anchor(&o.shape, &o.mods));
-                let leaf = Object {
+                first.get_or_insert_with(|| outer.point_to_world(anchor(&o.shape, &o.mods)));
+                gathered.push(Node::Leaf(Object {
                     shape,
                     texture: o.texture.clone(),
                     material: o.material,
-                };
-                (Node::Leaf(leaf), look)
+                }));
             }
             ExtItem::Csg(inner) => {
-                let (tree, look) = build(inner, &f)?;
-                (Node::Csg(tree), look)
+                let inner_op = op(inner.op);
+                let joins =
+                    inner_op == *node_op && (inner_op != Op::Difference || gathered.is_empty());
+                if !joins {
+                    nodes.push((inner_op, Vec::new()));
+                }
+                walk.push(Walk {
+                    block: inner,
+                    frame: block_frame(inner, &outer)?,
+                    next: 0,
+                    opens: !joins,
+                });
             }
-        };
-        first.get_or_insert(look);
-        children.push(node);
+        }
     }
-    let op = match block.op {
+    unreachable!("the outermost block returns its tree when its walk ends")
+}
+
+/// The frame of `block` inside frames `outer`: its own modifiers, then `outer`'s.
+fn block_frame(block: &Block, outer: &Frame) -> Result<Frame, SceneError> {
+    let singular = || {
+        refused(
+            &block.loc,
+            block.op.keyword(),
+            "the scale, rotate and translate make a singular frame",
+        )
+    };
+    let own = frame(&block.mods).ok_or_else(singular)?;
+    own.then(outer).ok_or_else(singular)
+}
+
+fn op(op: CsgOp) -> Op {
+    match op {
         CsgOp::Union => Op::Union,
         CsgOp::Intersection => Op::Intersection,
         CsgOp::Difference => Op::Difference,
-    };
-    let tree = Csg::new(op, children)
-        .ok_or_else(|| refused(&block.loc, word, "a CSG block needs two or more solids"))?;
-    Ok((tree, first.unwrap_or(DVec3::ZERO)))
+    }
 }

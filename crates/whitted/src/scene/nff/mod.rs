@@ -28,8 +28,9 @@
 //! with one, that colour at intensity 1. A polygon becomes n − 2 triangles
 //! (`polygon`), a patch a fan of smooth triangles, each an object of its own ("triangle
 //! N", "patch N"). Hits count past `epsilon`. Errors: an unknown record, a polygon short
-//! of vertices, an object before any `f`, no `v`, `nan` or `inf`, degenerate shapes, all
-//! located at file:line:column.
+//! of vertices, an object before any `f`, no `v`, `nan` or `inf`, a negative colour,
+//! degenerate shapes, more than `MAX_SCENE_OBJECTS` objects (a polygon's triangles count
+//! one each), all located at file:line:column.
 
 pub mod polygon;
 mod reader;
@@ -37,6 +38,7 @@ mod reader;
 use super::{Scene, SceneError, ShapeSpec, MAX_PIXELS, MAX_SIDE};
 use crate::camera::Lens;
 use crate::fog::Fog;
+use crate::limits::MAX_SCENE_OBJECTS;
 use crate::object::{Highlight, Light, Material, Object};
 use crate::shapes::{Cone, SmoothTriangle, Triangle};
 use crate::texture::{Color, Texture};
@@ -92,6 +94,12 @@ struct Built {
 
 impl Built {
     fn push(&mut self, spec: ShapeSpec, r: &Reader, start: (usize, usize)) -> Result<()> {
+        if self.objects.len() as u64 >= MAX_SCENE_OBJECTS {
+            let msg = format!(
+                "one object too many: a scene may have {MAX_SCENE_OBJECTS} objects in all (a polygon's triangles count one each)"
+            );
+            return Err(r.error_at(start, msg));
+        }
         let Some((texture, material)) = self.material.clone() else {
             let msg = "an object before any 'f' record: its material is unknown".to_string();
             return Err(r.error_at(start, msg));
@@ -198,9 +206,20 @@ pub fn parse(src: &str, file: &str) -> std::result::Result<Scene, SceneError> {
     })
 }
 
+/// A colour: three numbers, none negative (as Scene.txt's colours; above 1 is taken, as
+/// the SPD's files may brighten a light).
 fn color(r: &mut Reader, field: &str) -> Result<Color> {
-    let c = r.vector(field)?;
-    Ok(c)
+    let mut c = [0.0; 3];
+    for (k, name) in ['x', 'y', 'z'].into_iter().enumerate() {
+        let at = r.peek().map(|t| (t.line, t.column));
+        let v = r.number(format_args!("{field} {name}"))?;
+        if v < 0.0 {
+            let msg = format!("a negative {field} component ({v}): colours are 0 or more");
+            return Err(r.error_at(at.unwrap_or_else(|| r.end()), msg));
+        }
+        c[k] = v;
+    }
+    Ok(Color::from_array(c))
 }
 
 fn read_view(r: &mut Reader, at: (usize, usize)) -> Result<View> {

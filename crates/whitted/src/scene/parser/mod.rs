@@ -18,6 +18,7 @@ use crate::bump::Bump;
 use crate::camera::Camera;
 use crate::fog::Fog;
 use crate::input::quote;
+use crate::limits::MAX_SCENE_OBJECTS;
 use crate::object::{Light, Material, Object};
 use crate::texture::Color;
 use counts::{Counts, Record};
@@ -334,6 +335,13 @@ fn records<'a>(p: &mut Parser<'a>, src: &'a str, file: &str) -> Result<Scene> {
     let (np, p_at) = p.integer("NPlanes", 0, MAX_COUNT, &count)?;
     let (nc, c_at) = p.integer("NCylinders", 0, MAX_COUNT, &count)?;
     let (nl, l_at) = p.integer("NLights", 0, MAX_COUNT, &count)?;
+    if ns + np + nc > MAX_SCENE_OBJECTS {
+        let msg = format!(
+            "the counts announce {} objects: a scene may have {MAX_SCENE_OBJECTS} in all",
+            ns + np + nc
+        );
+        return Err(p.error(&s_at, msg, "NSpheres"));
+    }
     let counts = Counts {
         n: [ns, np, nc, nl],
         at: [s_at, p_at, c_at, l_at],

@@ -76,7 +76,8 @@ impl Parser<'_> {
         let pixels = match self.images.loaded.iter().find(|(p, _)| *p == path) {
             Some((_, pixels)) => Arc::clone(pixels),
             None => {
-                let pixels = crate::texture::load(&path).map_err(|why| {
+                let used = self.images.loaded.iter().map(|(_, p)| p.count()).sum();
+                let pixels = crate::texture::load(&path, used).map_err(|why| {
                     let msg = format!(
                         "cannot read the image '{}': {why}",
                         quote(&path.display().to_string())

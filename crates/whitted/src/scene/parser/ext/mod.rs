@@ -26,17 +26,19 @@
 //! read, and an error points at the field to blame. Records are numbered per kind after
 //! the report's of the same kind (`sphere 5`, `light 3`, `csg 1`) in error contexts.
 
+mod csg;
 pub(super) mod keywords;
 mod records;
 #[cfg(test)]
 mod tests;
 
 use super::super::ext::check::Violation;
-use super::super::ext::{CsgOp, ExtItem, Extension};
+use super::super::ext::{ExtItem, Extension};
 use super::super::lexer::Token;
 use super::{Parser, Result};
 use crate::fileloc::FileLoc;
 use crate::input::quote;
+use crate::limits::MAX_SCENE_OBJECTS;
 use std::path::PathBuf;
 
 /// The extension reader's state over the report's parser.
@@ -50,6 +52,8 @@ pub(super) struct Ext<'p, 'a> {
     counters: Vec<(&'static str, u64)>,
     /// The scene file's folder, against which mesh paths are resolved.
     base: PathBuf,
+    /// Objects so far, the report's included (a CSG block's solids count one each).
+    objects: u64,
     out: Extension,
 }
 
@@ -72,6 +76,7 @@ pub(super) fn read(p: &mut Parser<'_>, report: [u64; 4]) -> Result<Extension> {
         names: Vec::new(),
         counters,
         base,
+        objects: report[0] + report[1] + report[2],
         out: Extension::default(),
     };
     while let Some(tok) = ext.p.next() {
@@ -85,10 +90,11 @@ impl<'a> Ext<'_, 'a> {
     fn record(&mut self, tok: Token<'a>) -> Result<()> {
         let word = tok.text;
         if let Some(keyword) = keywords::find(keywords::SHAPES, word) {
+            self.count_object(&tok)?;
             let object = self.shape(tok, keyword, None)?;
             self.out.objects.push(ExtItem::Shape(object));
-        } else if let Some(op) = csg_op(word) {
-            let csg = self.csg(tok, op, None)?;
+        } else if let Some(op) = csg::op(word) {
+            let csg = self.csg(tok, op)?;
             self.out.objects.push(ExtItem::Csg(csg));
         } else if let Some(keyword) = keywords::find(keywords::LIGHTS, word) {
             let light = self.light(tok, keyword)?;
@@ -97,6 +103,18 @@ impl<'a> Ext<'_, 'a> {
             self.focus(tok)?;
         } else {
             return Err(self.unknown(&tok));
+        }
+        Ok(())
+    }
+
+    /// One more object at `tok`, refused past the scene's budget.
+    fn count_object(&mut self, tok: &Token) -> Result<()> {
+        self.objects += 1;
+        if self.objects > MAX_SCENE_OBJECTS {
+            let msg = format!(
+                "one object too many: a scene may have {MAX_SCENE_OBJECTS} objects in all (the report's, the extension's and each solid of a CSG block)"
+            );
+            return Err(self.p.error(tok, msg, ""));
         }
         Ok(())
     }
@@ -155,76 +173,18 @@ impl<'a> Ext<'_, 'a> {
         self.p.error(&tok, v.message, v.field)
     }
 
-    /// A CSG block: `op` read at `tok`, children until `end`, then its modifiers.
-    fn csg(
-        &mut self,
-        tok: Token<'a>,
-        op: CsgOp,
-        within: Option<u64>,
-    ) -> Result<super::super::ext::Csg> {
-        let n = within.is_none().then(|| self.number("csg"));
-        let me = within.or(n);
-        let mut children = Vec::new();
-        loop {
-            self.enter(op.keyword(), n, within);
-            let Some(child) = self.p.next() else {
-                let (line, column) = self.p.lexer.position();
-                let msg = format!(
-                    "the {} block of line {} has no 'end' (the file ends inside it)",
-                    op.keyword(),
-                    tok.line
-                );
-                return Err(self.p.error_at(line, column, msg, ""));
-            };
-            if child.text == "end" {
-                break;
-            }
-            if let Some(keyword) = keywords::find(keywords::SHAPES, child.text) {
-                let object = self.shape(child, keyword, me)?;
-                if !object.shape.is_solid(object.mods.open) {
-                    let what = if object.mods.open { "an open " } else { "a " };
-                    let msg = format!(
-                        "{what}{} is not a solid: CSG takes spheres, planes, boxes, capped cylinders and cones, and tori",
-                        child.text
-                    );
-                    return Err(self.p.error(&child, msg, ""));
-                }
-                children.push(ExtItem::Shape(object));
-            } else if let Some(inner) = csg_op(child.text) {
-                children.push(ExtItem::Csg(self.csg(child, inner, me)?));
-            } else {
-                let msg = format!(
-                    "expected a solid, a CSG block or 'end' in the {} block of line {}, found '{}'",
-                    op.keyword(),
-                    tok.line,
-                    quote(child.text)
-                );
-                return Err(self.p.error(&child, msg, ""));
-            }
-        }
-        if children.len() < 2 {
-            let msg = format!(
-                "a {} block needs two or more objects, found {}",
-                op.keyword(),
-                children.len()
-            );
-            return Err(self.p.error(&tok, msg, ""));
-        }
-        self.enter(op.keyword(), n, within);
-        let mods = self.modifiers(&["name", "scale", "rotate", "translate"], within.is_some())?;
-        Ok(super::super::ext::Csg {
-            op,
-            children,
-            mods,
-            loc: self.loc(&tok),
-        })
-    }
-
     /// An unknown keyword, with the nearest one suggested.
     fn unknown(&mut self, tok: &Token) -> super::super::SceneError {
         self.enter("after the last light", None, None);
         let mut msg = format!("unknown keyword '{}'", quote(tok.text));
-        if let Some(k) = keywords::nearest(tok.text, keywords::all()) {
+        if tok.text == "end" {
+            msg = "'end' with no CSG block open (a block starts with union, intersection or difference; one 'end' too many?)".to_string();
+        } else if keywords::find(keywords::MODIFIERS, tok.text).is_some() {
+            msg = format!(
+                "'{}' is a modifier, and here it follows no record that takes it (given twice, or after a record that does not take it?)",
+                tok.text
+            );
+        } else if let Some(k) = keywords::nearest(tok.text, keywords::all()) {
             msg += &format!(" (did you mean '{k}'?)");
         } else if tok.text.parse::<f64>().is_ok() {
             msg = format!(
@@ -235,15 +195,6 @@ impl<'a> Ext<'_, 'a> {
             msg += " (extension records start with sphere, plane, box, cylinder, cone, disc, torus, triangle, mesh, union, intersection, difference, directional, spot, point, area or focus)";
         }
         self.p.error(tok, msg, "")
-    }
-}
-
-fn csg_op(word: &str) -> Option<CsgOp> {
-    match word {
-        "union" => Some(CsgOp::Union),
-        "intersection" => Some(CsgOp::Intersection),
-        "difference" => Some(CsgOp::Difference),
-        _ => None,
     }
 }
 
