@@ -10,7 +10,10 @@
 //!   10,000-sphere scene;
 //! - `texture`: noise and the three noise textures;
 //! - `frame`: whole frames at 160x120 (orbit; 10 and 10,000 spheres, parse + BVH + render),
-//!   and building the tracer (the BVH) of the 10,000-sphere scene.
+//!   and building the tracer (the BVH) of the 10,000-sphere scene;
+//! - `degenerate`: what degenerate input costs: a 64x48 frame of a mesh of 400,000
+//!   copies of one triangle against 400,000 distinct ones (at most 10x), and reading a
+//!   convex NFF polygon of 40,000 and 200,000 vertices (linear: about 5x apart).
 //!
 //! The sphere scenes are generated here by the same generator as benches/gen_spheres.py
 //! (same LCG, same layout), so nothing large is stored in the repository.
@@ -221,5 +224,70 @@ fn frame(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, camera, shapes, queries, texture, frame);
+/// An OBJ of `n` copies of one triangle (`copies`) or of `n` distinct small ones over
+/// the same unit square.
+fn triangles_obj(n: usize, copies: bool) -> String {
+    use std::fmt::Write as _;
+    if copies {
+        return String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\n") + &"f 1 2 3\n".repeat(n);
+    }
+    let side = (n as f64).sqrt().ceil() as usize;
+    let h = 1.0 / side as f64;
+    let mut s = String::with_capacity(n * 60);
+    for k in 0..n {
+        let (x, y) = ((k % side) as f64 * h, (k / side) as f64 * h);
+        let _ = writeln!(s, "v {x} {y} 0\nv {} {y} 0\nv {x} {} 0", x + h, y + h);
+    }
+    for k in 0..n {
+        let _ = writeln!(s, "f {} {} {}", 3 * k + 1, 3 * k + 2, 3 * k + 3);
+    }
+    s
+}
+
+/// An NFF scene of one convex polygon of `n` vertices on a circle.
+fn polygon_nff(n: usize) -> String {
+    use std::fmt::Write as _;
+    let mut s = String::from(
+        "v\nfrom 0 0 5\nat 0 0 0\nup 0 1 0\nangle 40\nhither 1\nresolution 16 16\n\
+         l 0 0 5\nf 1 0.5 0.2 1 0 0 0 0\n",
+    );
+    let _ = writeln!(s, "p {n}");
+    for i in 0..n {
+        let a = std::f64::consts::TAU * i as f64 / n as f64;
+        let _ = writeln!(s, "{} {} 0", a.cos(), a.sin());
+    }
+    s
+}
+
+fn degenerate(c: &mut Criterion) {
+    let mut g = c.benchmark_group("degenerate");
+    g.sample_size(10).measurement_time(Duration::from_secs(20));
+    let dir = tempfile::tempdir().unwrap();
+    for (name, copies) in [("copies", true), ("distinct", false)] {
+        let obj = dir.path().join(format!("{name}.obj"));
+        std::fs::write(&obj, triangles_obj(400_000, copies)).unwrap();
+        let scene = dir.path().join(format!("{name}.txt"));
+        let text = format!(
+            "64 48\n0.3 0.3 3\n0.3 0.3 0\n0 1\n0 0 0 1\n0 1 4  1 1 1  1\n\
+             mesh \"{name}.obj\"  1 0.8 0.6 0.2  0.8 0 0 1 0 0\n"
+        );
+        std::fs::write(&scene, text).unwrap();
+        g.bench_function(BenchmarkId::new("mesh_400k_frame", name), |b| {
+            b.iter(|| {
+                let scene = Scene::load(&scene).unwrap();
+                let tracer = Tracer::new(&scene);
+                black_box(render(&tracer, &scene.camera(), 64, 48, 1))
+            })
+        });
+    }
+    for n in [40_000, 200_000] {
+        let text = polygon_nff(n);
+        g.bench_function(BenchmarkId::new("convex_polygon_read", n), |b| {
+            b.iter(|| black_box(Scene::parse(&text, "polygon.nff").unwrap()))
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, camera, shapes, queries, texture, frame, degenerate);
 criterion_main!(benches);

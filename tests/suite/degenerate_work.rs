@@ -1,29 +1,24 @@
-//! Degenerate work (issue 57, point 4), through `raytrace`: a mesh of copies of one
-//! triangle rendered about 9,000 times slower than as many distinct ones (every copy
-//! shared one box: the tree could not split them and every ray tested them all); a
-//! convex NFF polygon of N vertices was cut in time N² (40,000 vertices: 2.4 s).
-//!
-//! These compare times, which the project measures in benchmarks: each bound here is a
-//! ratio or a budget far from both sides (the old code missed them by a factor of
-//! hundreds), so that a loaded machine does not fail them. The figures themselves are
-//! in docs/reliability.md. Inputs are generated into a temporary folder.
+//! Degenerate work, through `raytrace`: a mesh of copies of one triangle (every copy
+//! shared one box, so the tree could not split them and every ray tested them all) and
+//! a convex NFF polygon of many vertices (once cut in time N²). What they cost is
+//! measured by the `degenerate` group of `cargo bench --bench tracer` (copies against
+//! distinct triangles, 40,000 against 200,000 vertices), never by a timed test; here
+//! the copies must draw what one triangle draws, and the large polygon must render.
+//! Inputs are generated into a temporary folder.
 
 use crate::common::{raytrace_in, write_file};
 use std::fmt::Write as _;
 use std::path::Path;
-use std::time::{Duration, Instant};
 
 /// Triangles in each mesh: old code took about 8 s for the copies at 64×48.
 const TRIANGLES: usize = 400_000;
 
-/// Renders `scene` in `dir` at 64×48 on one thread: its wall time.
-fn render(dir: &Path, scene: &str) -> Duration {
-    let started = Instant::now();
+/// Renders `scene` in `dir` at its size into `out.png`, on one thread.
+fn render(dir: &Path, scene: &str) {
     raytrace_in(dir)
         .args([scene, "-o", "out.png", "--quiet", "--threads", "1"])
         .assert()
         .success();
-    started.elapsed()
 }
 
 /// A scene looking at the unit square's corner triangle, holding `mesh`.
@@ -35,41 +30,17 @@ fn mesh_scene(mesh: &str) -> String {
 }
 
 #[test]
-fn copies_of_one_triangle_cost_no_more_than_ten_times_distinct_triangles() {
+fn copies_of_one_triangle_draw_one_triangle() {
     let dir = tempfile::tempdir().unwrap();
     // The copies: three vertices, TRIANGLES faces naming them.
     let mut same = String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\n");
     same += &"f 1 2 3\n".repeat(TRIANGLES);
-    // Distinct ones: a strip of small triangles over the same square, three vertices each.
-    let mut distinct = String::with_capacity(TRIANGLES * 60);
-    let side = (TRIANGLES as f64).sqrt().ceil() as usize;
-    let h = 1.0 / side as f64;
-    for k in 0..TRIANGLES {
-        let (x, y) = ((k % side) as f64 * h, (k / side) as f64 * h);
-        let _ = writeln!(
-            distinct,
-            "v {x} {y} 0\nv {} {y} 0\nv {x} {} 0",
-            x + h,
-            y + h
-        );
-    }
-    for k in 0..TRIANGLES {
-        let _ = writeln!(distinct, "f {} {} {}", 3 * k + 1, 3 * k + 2, 3 * k + 3);
-    }
     write_file(dir.path(), "same.obj", same);
-    write_file(dir.path(), "distinct.obj", distinct);
     write_file(dir.path(), "same.txt", mesh_scene("same.obj"));
-    write_file(dir.path(), "distinct.txt", mesh_scene("distinct.obj"));
     let one = String::from("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     write_file(dir.path(), "one.obj", one);
     write_file(dir.path(), "one.txt", mesh_scene("one.obj"));
-    let t_distinct = render(dir.path(), "distinct.txt");
-    let t_same = render(dir.path(), "same.txt");
-    let ratio = t_same.as_secs_f64() / t_distinct.as_secs_f64();
-    assert!(
-        ratio <= 10.0,
-        "{TRIANGLES} copies took {t_same:?}, as many distinct triangles {t_distinct:?}: {ratio:.1}x"
-    );
+    render(dir.path(), "same.txt");
     // And the copies draw exactly what one of them draws.
     let copies = std::fs::read(dir.path().join("out.png")).unwrap();
     render(dir.path(), "one.txt");
@@ -95,11 +66,14 @@ fn polygon_nff(n: usize) -> String {
 }
 
 #[test]
-fn a_convex_polygon_of_200_000_vertices_is_cut_in_linear_time() {
-    // The walk tested every remaining vertex at every corner: 200,000 vertices would
-    // take about a minute (2.4 s for 40,000, times 25). Cut as a fan: well under 5 s.
+fn a_convex_polygon_of_200_000_vertices_renders() {
+    // The walk tested every remaining vertex at every corner (about a minute for this
+    // one); cut as a fan it is read at once (`cargo bench --bench tracer degenerate`).
     let dir = tempfile::tempdir().unwrap();
     write_file(dir.path(), "big.nff", polygon_nff(200_000));
-    let took = render(dir.path(), "big.nff");
-    assert!(took < Duration::from_secs(5), "took {took:?}");
+    render(dir.path(), "big.nff");
+    let png = image::open(dir.path().join("out.png")).unwrap().to_rgb8();
+    // The disc of radius 1 at distance 5 under 40 degrees fills the centre, lit.
+    let centre = png.get_pixel(8, 8).0;
+    assert!(centre[0] > 100 && centre[2] == 0, "{centre:?}");
 }
