@@ -55,6 +55,7 @@ mod light_names;
 mod lights_povray;
 mod malformed_scenes;
 mod mesh_files;
+mod mesh_normals;
 mod mesh_povray;
 mod messages;
 mod newcomer;

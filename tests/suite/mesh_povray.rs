@@ -150,7 +150,7 @@ fn mesh2((v, faces): &(Vec<[f64; 3]>, Vec<Vec<usize>>), normals: bool, rest: &st
 
 /// Renders `records` (extension records naming files of `files`) with us and `pov` with
 /// POV-Ray; the share of pixels apart, or none when POV-Ray is missing.
-fn compare(files: &[(&str, String)], records: &str, pov: &str) -> Option<f64> {
+pub(crate) fn compare(files: &[(&str, String)], records: &str, pov: &str) -> Option<f64> {
     let povray = skip::which("povray", &["/usr/bin/povray"])?;
     let dir = tempfile::tempdir().unwrap();
     for (name, text) in files {
@@ -204,8 +204,8 @@ fn flat_icosphere_and_quad_cube_match_mesh2() {
             ("cube.obj", obj(&cube, false)),
         ],
         &format!(
-            "mesh \"gem.obj\" {RED} scale 0.7 0.7 0.7 translate -0.9 0.8 0.5\n\
-             mesh \"cube.obj\" {BLUE} scale 0.8 1.2 0.8 translate 0.9 0.75 -0.5\n"
+            "mesh \"gem.obj\" {RED} scale 0.7 0.7 0.7 translate -0.9 0.8 0.5 flat\n\
+             mesh \"cube.obj\" {BLUE} scale 0.8 1.2 0.8 translate 0.9 0.75 -0.5 flat\n"
         ),
         &format!(
             "{}{}",

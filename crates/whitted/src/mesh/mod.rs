@@ -7,14 +7,17 @@
 //! transpose), drops the triangles of zero area, and stores the rest compactly: three
 //! indices into one shared vertex array per triangle.
 //!
-//! Shading: a mesh whose file gives vertex normals is smooth (the barycentric
-//! interpolation of its corners' normals, normalised: `SmoothTriangle`), else flat. The
-//! triangles are two-sided, as every surface of the tracer is.
+//! Shading (SPEC §18): a mesh is smooth (the barycentric interpolation of its corners'
+//! normals, normalised: `SmoothTriangle`) with the file's vertex normals, or with normals
+//! computed from its faces (`normals`: `smooth Angle`, and `smooth 30` for a file without
+//! normals), or flat (`flat`: each face's own normal). The triangles are two-sided, as
+//! every surface of the tracer is.
 //!
 //! Limits: the file's bytes (`limits::MAX_MESH_BYTES`) and its triangles after fanning
 //! (`limits::MAX_MESH_TRIANGLES`). Every failure is a `MeshError` naming the mesh file
 //! (and its line where the format has lines and the crate, or `obj`'s search, finds it).
 
+pub mod normals;
 mod obj;
 mod ply;
 
@@ -72,6 +75,20 @@ pub enum MeshError {
         path: String,
     },
 }
+
+/// How a mesh record asks for its normals (SPEC §18); without either, the file's normals,
+/// or `Smooth(DEFAULT_SMOOTH)` for a file that has none.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Shading {
+    /// `flat`: each face's own normal, even where the file has normals.
+    Flat,
+    /// `smooth Angle`: normals from the faces, split where faces meet at more than Angle
+    /// degrees (0 < Angle ≤ 180).
+    Smooth(f64),
+}
+
+/// The crease angle of a mesh file without normals and without `smooth` or `flat`.
+pub const DEFAULT_SMOOTH: f64 = 30.0;
 
 /// What a loader reads: positions, per-vertex normals (empty, or one per position) and
 /// triangles (indices checked to be in range).
@@ -132,8 +149,9 @@ impl std::fmt::Debug for Mesh {
 }
 
 impl Mesh {
-    /// Reads the mesh file at `path` and places it by `frame`.
-    pub fn load(path: &Path, frame: &Frame) -> Result<Mesh, MeshError> {
+    /// Reads the mesh file at `path`, places it by `frame` and shades it as `shading` asks
+    /// (none: the file's normals, else `smooth 30`).
+    pub fn load(path: &Path, frame: &Frame, shading: Option<Shading>) -> Result<Mesh, MeshError> {
         let name = path.display().to_string();
         let ext = path
             .extension()
@@ -159,16 +177,18 @@ impl Mesh {
             let count = raw.triangles.len() as u64;
             return Err(MeshError::TooMany { path: name, count });
         }
-        let mesh = Mesh::from_raw(raw, frame).ok_or(MeshError::Degenerate { path: name })?;
+        let mesh =
+            Mesh::from_raw(raw, frame, shading).ok_or(MeshError::Degenerate { path: name })?;
         Ok(Mesh {
             source: crate::input::digest(&bytes),
             ..mesh
         })
     }
 
-    /// The mesh of `raw` placed by `frame`, its zero-area triangles dropped; `None` when
-    /// none is left.
-    pub fn from_raw(raw: Raw, frame: &Frame) -> Option<Mesh> {
+    /// The mesh of `raw` placed by `frame`, its zero-area triangles dropped, its normals
+    /// as `shading` asks (computed in the world, after the frame); `None` when no
+    /// triangle is left.
+    pub fn from_raw(raw: Raw, frame: &Frame, shading: Option<Shading>) -> Option<Mesh> {
         let vertices: Vec<DVec3> = raw
             .positions
             .iter()
@@ -195,10 +215,35 @@ impl Mesh {
             .is_some()
         });
         triangles.shrink_to_fit();
-        (!triangles.is_empty()).then_some(Mesh {
-            vertices,
-            normals,
-            triangles,
+        if triangles.is_empty() {
+            return None;
+        }
+        let angle = match (shading, normals.is_empty()) {
+            (Some(Shading::Flat), _) => None,
+            (Some(Shading::Smooth(a)), _) => Some(a),
+            (None, true) => Some(DEFAULT_SMOOTH),
+            (None, false) => {
+                return Some(Mesh {
+                    vertices,
+                    normals,
+                    triangles,
+                    source: [0; 32],
+                })
+            }
+        };
+        let Some(angle) = angle else {
+            return Some(Mesh {
+                vertices,
+                normals: Vec::new(),
+                triangles,
+                source: [0; 32],
+            });
+        };
+        let s = normals::smooth(&vertices, &triangles, angle);
+        Some(Mesh {
+            vertices: s.origin.iter().map(|&o| vertices[o as usize]).collect(),
+            normals: s.normals,
+            triangles: s.triangles,
             source: [0; 32],
         })
     }

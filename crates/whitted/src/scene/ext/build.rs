@@ -87,7 +87,7 @@ fn mesh(o: &ExtObject, path: &std::path::Path, id: usize) -> Result<(MeshRef, Me
     let bad = |why: &str| refused(&o.loc, "mesh", why);
     let f = frame(&o.mods)
         .ok_or_else(|| bad("the scale, rotate and translate make a singular frame"))?;
-    let mesh = Mesh::load(path, &f).map_err(|e| bad(&e.to_string()))?;
+    let mesh = Mesh::load(path, &f, o.mods.shading).map_err(|e| bad(&e.to_string()))?;
     let (lo, hi) = mesh.extent();
     let id = id as u32;
     Ok((MeshRef { id, lo, hi }, mesh))

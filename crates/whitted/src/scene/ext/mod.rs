@@ -72,6 +72,8 @@ pub struct Modifiers {
     pub translate: Option<DVec3>,
     /// `fade Distance Power` (lights other than directional).
     pub fade: Option<(f64, f64)>,
+    /// `smooth Angle` or `flat` (meshes; SPEC §18): none keeps the file's normals.
+    pub shading: Option<crate::mesh::Shading>,
 }
 
 impl Modifiers {
