@@ -54,6 +54,8 @@ mod interrupt;
 mod light_names;
 mod lights_povray;
 mod malformed_scenes;
+mod mesh_budgets;
+mod mesh_data;
 mod mesh_files;
 mod mesh_normals;
 mod mesh_povray;

@@ -97,7 +97,7 @@ fn prism_mesh2(rest: &str) -> String {
 #[test]
 fn a_prism_without_normals_is_smooth_30_as_povray_draws_it() {
     crate::nff_povray::assert_close(compare(
-        &[("prism.obj", prism_obj())],
+        &[("prism.obj", prism_obj().into_bytes())],
         "mesh \"prism.obj\" 1 0.9 0.3 0.2  0.7 0 0 1 0 0 scale 0.9 0.9 0.9 translate 0 0.2 0\n",
         &prism_mesh2(
             "pigment { color rgb <0.9, 0.3, 0.2> } Fin(0.7) scale 0.9 translate <0, 0.2, 0>",

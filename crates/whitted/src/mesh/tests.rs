@@ -145,9 +145,10 @@ fn errors_name_the_file_and_line() {
     assert!(e.starts_with("DIR/far.obj:4: malformed OBJ file"), "{e}");
     let e = error(
         "bad.ply",
-        b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\nq\n",
+        b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n\
+property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\nq\n",
     );
-    assert!(e.starts_with("DIR/bad.ply:6: malformed PLY file"), "{e}");
+    assert!(e.starts_with("DIR/bad.ply:10: malformed PLY file"), "{e}");
     let e = error(
         "idx.ply",
         b"ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n\
@@ -156,10 +157,13 @@ end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
     );
     assert_eq!(
         e,
-        "DIR/idx.ply: malformed PLY file: face 0: vertex index 3 out of range (3 vertices)"
+        "DIR/idx.ply:13: malformed PLY file: face 0: vertex index 3 out of range (3 vertices)"
     );
     let e = error("flat.obj", b"v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n");
-    assert_eq!(e, "DIR/flat.obj: the mesh has no triangle of non-zero area");
+    assert_eq!(
+        e,
+        "DIR/flat.obj: the mesh has no triangle of non-zero area (its 1 triangles are all degenerate)"
+    );
     let e = error("m.stl", b"solid\n");
     assert!(e.contains("unknown mesh format"), "{e}");
     let dir = tempfile::tempdir().unwrap();
