@@ -58,6 +58,7 @@ mod mesh_budgets;
 mod mesh_data;
 mod mesh_files;
 mod mesh_normals;
+mod mesh_placing;
 mod mesh_povray;
 mod messages;
 mod newcomer;

@@ -2,18 +2,63 @@
 //! in the world by the record's frame (normals by the inverse transpose), its zero-area
 //! triangles dropped, its normals as the record asks (SPEC §18: the file's, `smooth
 //! Angle` computed in the world, or `flat`), and each vertex's texture coordinates and
-//! colour carried to the copies smoothing makes of it.
+//! colour carried to the copies smoothing makes of it. `fit` and `pivot` (§18's placing)
+//! move the file's vertices first, in its own units.
 
-use super::{normals, obj, ply, Mesh, MeshError, Raw, Shading, DEFAULT_SMOOTH};
+use super::{normals, obj, ply, Mesh, MeshError, Pivot, Placing, Raw, Shading, DEFAULT_SMOOTH};
 use crate::limits::MAX_MESH_BYTES;
 use crate::shapes::{Frame, Triangle};
 use glam::DVec3;
 use std::path::Path;
 
+/// Applies `fit` and `pivot` to the file's vertices (in its own units): with f the fit's
+/// scale (1 without) and c the centre of the triangles' bounds, p becomes c + f·(p − c)
+/// without a pivot, and f·(p − q) with pivot q (c for `center`): the pivot, fitted, at
+/// the origin. `Err` when `fit` meets a mesh of no extent.
+pub fn place(raw: &mut Raw, placing: &Placing) -> Result<(), String> {
+    if *placing == Placing::default() {
+        return Ok(());
+    }
+    let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
+    for t in &raw.triangles {
+        for &i in t {
+            let p = raw.positions[i as usize];
+            (lo, hi) = (lo.min(p), hi.max(p));
+        }
+    }
+    if raw.triangles.is_empty() {
+        return Ok(());
+    }
+    let c = 0.5 * (lo + hi);
+    let side = (hi - lo).max_element();
+    let f = match placing.fit {
+        Some(size) if side > 0.0 => size / side,
+        Some(_) => return Err("fit: the mesh has no extent to scale".into()),
+        None => 1.0,
+    };
+    let moved = |p: DVec3| match placing.pivot {
+        None => c + f * (p - c),
+        Some(Pivot::Center) => f * (p - c),
+        Some(Pivot::Point(q)) => f * (p - q),
+    };
+    raw.positions.iter_mut().for_each(|p| *p = moved(*p));
+    Ok(())
+}
+
 impl Mesh {
     /// Reads the mesh file at `path`, places it by `frame` and shades it as `shading` asks
     /// (none: the file's normals, else `smooth 30`).
     pub fn load(path: &Path, frame: &Frame, shading: Option<Shading>) -> Result<Mesh, MeshError> {
+        Mesh::load_placed(path, frame, shading, &Placing::default())
+    }
+
+    /// `load`, the file's vertices first fitted and pivoted as `placing` asks.
+    pub fn load_placed(
+        path: &Path,
+        frame: &Frame,
+        shading: Option<Shading>,
+        placing: &Placing,
+    ) -> Result<Mesh, MeshError> {
         let name = path.display().to_string();
         let ext = path
             .extension()
@@ -30,12 +75,18 @@ impl Mesh {
                     source,
                 }
             })?;
-        let raw = if ext == "obj" {
+        let mut raw = if ext == "obj" {
             let dir = path.parent().unwrap_or(Path::new(""));
             obj::read(&bytes, &name, dir)?
         } else {
             ply::read(&bytes, &name)?
         };
+        place(&mut raw, placing).map_err(|message| MeshError::Malformed {
+            path: name.clone(),
+            line: None,
+            format: if ext == "obj" { "OBJ" } else { "PLY" },
+            message,
+        })?;
         if raw.over_limit() {
             let count = raw.triangles.len() as u64;
             return Err(MeshError::TooMany { path: name, count });

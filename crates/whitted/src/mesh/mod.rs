@@ -27,6 +27,7 @@ mod ply_records;
 mod raw;
 mod surface;
 
+pub use load::place;
 pub use raw::{Look, Raw, RECORD_LOOK};
 
 use crate::limits::MAX_MESH_TRIANGLES;
@@ -102,6 +103,25 @@ pub enum Shading {
     /// `smooth Angle`: normals from the faces, split where faces meet at more than Angle
     /// degrees (0 < Angle ≤ 180).
     Smooth(f64),
+}
+
+/// `pivot` (SPEC §18): the point of the file that becomes the mesh's origin.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Pivot {
+    /// `pivot center`: the centre of the mesh's bounds.
+    Center,
+    /// `pivot x y z`: a point in the file's units.
+    Point(DVec3),
+}
+
+/// `fit Size` and `pivot` of a mesh record: applied to the file's vertices before the
+/// record's `scale`, `rotate` and `translate` (`load::place`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Placing {
+    /// `fit Size`: a uniform scale about the bounds' centre making the largest side Size.
+    pub fit: Option<f64>,
+    /// `pivot`: the point moved to the origin (after `fit`).
+    pub pivot: Option<Pivot>,
 }
 
 /// The crease angle of a mesh file without normals and without `smooth` or `flat`.

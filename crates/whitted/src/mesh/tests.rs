@@ -186,3 +186,56 @@ fn the_triangle_limit_holds() {
     raw.fan(&face, 3).unwrap();
     assert!(raw.over_limit());
 }
+
+#[test]
+fn fit_and_pivot_by_hand() {
+    // A box from (10, 10, 10) to (14, 12, 11): centre (12, 11, 10.5), largest side 4.
+    let raw = || Raw {
+        positions: vec![
+            DVec3::new(10.0, 10.0, 10.0),
+            DVec3::new(14.0, 10.0, 10.0),
+            DVec3::new(14.0, 12.0, 11.0),
+        ],
+        triangles: vec![[0, 1, 2]],
+        ..Raw::default()
+    };
+    let at = |placing: Placing| {
+        let mut r = raw();
+        place(&mut r, &placing).unwrap();
+        r.positions
+    };
+    // fit 2: f = 0.5 about the centre: (10,10,10) → (12,11,10.5) + 0.5·(−2,−1,−0.5).
+    let p = at(Placing {
+        fit: Some(2.0),
+        pivot: None,
+    });
+    assert_eq!(p[0], DVec3::new(11.0, 10.5, 10.25));
+    // pivot center: the centre at the origin, then f: (10,10,10) → 0.5·(−2,−1,−0.5).
+    let p = at(Placing {
+        fit: Some(2.0),
+        pivot: Some(Pivot::Center),
+    });
+    assert_eq!(p[0], DVec3::new(-1.0, -0.5, -0.25));
+    // pivot at the bottom corner's middle (12, 10, 10), no fit: p − q.
+    let q = DVec3::new(12.0, 10.0, 10.0);
+    let p = at(Placing {
+        fit: None,
+        pivot: Some(Pivot::Point(q)),
+    });
+    assert_eq!(p[2], DVec3::new(2.0, 2.0, 1.0));
+    // Nothing asked: the file's own units, untouched.
+    assert_eq!(at(Placing::default()), raw().positions);
+    let mut flat = Raw {
+        positions: vec![DVec3::ONE; 3],
+        triangles: vec![[0, 1, 2]],
+        ..Raw::default()
+    };
+    assert!(place(
+        &mut flat,
+        &Placing {
+            fit: Some(1.0),
+            pivot: None
+        }
+    )
+    .is_err());
+}

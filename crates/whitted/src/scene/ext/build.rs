@@ -88,7 +88,8 @@ fn mesh(o: &ExtObject, path: &std::path::Path, id: usize) -> Result<(MeshRef, Me
     let bad = |why: &str| refused(&o.loc, "mesh", why);
     let f = frame(&o.mods)
         .ok_or_else(|| bad("the scale, rotate and translate make a singular frame"))?;
-    let mesh = Mesh::load(path, &f, o.mods.shading).map_err(|e| bad(&e.to_string()))?;
+    let mesh = Mesh::load_placed(path, &f, o.mods.shading, &o.mods.placing)
+        .map_err(|e| bad(&e.to_string()))?;
     let uv = matches!(&o.texture, Texture::Image(i) if i.map == MapKind::Uv);
     if uv && mesh.uvs.is_empty() {
         return Err(bad(&format!(

@@ -136,6 +136,9 @@ pub fn modifiers(m: &Modifiers) -> Result<(), Violation> {
             return fail("Angle", msg);
         }
     }
+    if let Some(size) = m.placing.fit {
+        positive(size, "Size")?;
+    }
     if let Some((distance, power)) = m.fade {
         positive(distance, "Distance")?;
         if power < 0.0 {

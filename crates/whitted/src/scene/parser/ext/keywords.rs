@@ -11,7 +11,7 @@ pub(super) const CSG: [&str; 3] = ["union", "intersection", "difference"];
 /// Light records.
 pub(super) const LIGHTS: [&str; 4] = ["directional", "spot", "point", "area"];
 /// Modifiers.
-pub(super) const MODIFIERS: [&str; 8] = [
+pub(super) const MODIFIERS: [&str; 10] = [
     "name",
     "open",
     "scale",
@@ -20,6 +20,8 @@ pub(super) const MODIFIERS: [&str; 8] = [
     "fade",
     "smooth",
     "flat",
+    "fit",
+    "pivot",
 ];
 /// Every other word of the grammar.
 pub(super) const OTHERS: [&str; 2] = ["focus", "end"];

@@ -6,7 +6,7 @@ use super::super::Result;
 use super::{keywords, Ext};
 use crate::input::quote;
 use crate::limits::{MAX_AREA_SIDE, MAX_LENS_SAMPLES};
-use crate::mesh::Shading;
+use crate::mesh::{Pivot, Shading};
 use crate::scene::lexer::Token;
 
 impl<'a> Ext<'_, 'a> {
@@ -73,7 +73,16 @@ impl<'a> Ext<'_, 'a> {
         let material = self.p.material()?;
         let allowed: &[&str] = match keyword {
             "cylinder" | "cone" => &["name", "open", "scale", "rotate", "translate"],
-            "mesh" => &["name", "scale", "rotate", "translate", "smooth", "flat"],
+            "mesh" => &[
+                "name",
+                "scale",
+                "rotate",
+                "translate",
+                "smooth",
+                "flat",
+                "fit",
+                "pivot",
+            ],
             _ => &["name", "scale", "rotate", "translate"],
         };
         let mods = self.modifiers(allowed, within.is_some())?;
@@ -244,6 +253,21 @@ impl<'a> Ext<'_, 'a> {
                 "translate" => mods.translate = Some(self.vec3("translate", ["x", "y", "z"])?),
                 "smooth" => mods.shading = Some(Shading::Smooth(self.num("Angle")?)),
                 "flat" => mods.shading = Some(Shading::Flat),
+                "fit" => mods.placing.fit = Some(self.num("Size")?),
+                "pivot" => {
+                    let center = self
+                        .p
+                        .lexer
+                        .clone()
+                        .next()
+                        .is_some_and(|t| t.text == "center");
+                    mods.placing.pivot = Some(if center {
+                        self.p.next();
+                        Pivot::Center
+                    } else {
+                        Pivot::Point(self.vec3("pivot", ["x", "y", "z"])?)
+                    });
+                }
                 _ => mods.fade = Some((self.num("Distance")?, self.num("Power")?)),
             }
         }
