@@ -145,8 +145,8 @@ impl Walker<'_, '_> {
     fn shade(&mut self, ray: &Ray, (t, index, part): (f64, usize, u32), depth: u32, weight: f64) {
         let tracer = self.tracer;
         let scene = tracer.scene();
-        let surface = tracer.surface_of(&scene.objects[index], part);
         let p = ray.at(t);
+        let surface = tracer.surface_of(&scene.objects[index], part, p);
         let v = ray.dir;
         let (obj, outward) = surface_at(&surface, ray, p);
         let m = obj.material;

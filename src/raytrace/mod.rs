@@ -45,6 +45,9 @@ fn run(args: Args) -> anyhow::Result<()> {
         if let Some(w) = job.non_square() {
             eprintln!("raytrace: warning: {w}");
         }
+        for w in job.mesh_warnings() {
+            eprintln!("raytrace: warning: {w}");
+        }
         if let Some(e) = pool.install(|| job.enormous()) {
             eprintln!("raytrace: warning: {e} (Ctrl-C stops)");
         }

@@ -122,9 +122,12 @@ fn bad_mesh_files_are_located_errors() {
     assert!(e.contains("DIR/bad.obj:3: malformed OBJ file"), "{e}");
     let e = error_of(
         "bad.ply",
-        Some(b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nend_header\nz\n"),
+        Some(
+            b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n\
+property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\nz\n",
+        ),
     );
-    assert!(e.contains("DIR/bad.ply:6: malformed PLY file"), "{e}");
+    assert!(e.contains("DIR/bad.ply:10: malformed PLY file"), "{e}");
     let e = error_of("line.obj", Some(b"v 0 0 0\nv 1 1 1\nv 2 2 2\nf 1 2 3\n"));
     assert!(
         e.contains("DIR/line.obj: the mesh has no triangle of non-zero area"),

@@ -148,9 +148,9 @@ fn mesh2((v, faces): &(Vec<[f64; 3]>, Vec<Vec<usize>>), normals: bool, rest: &st
     )
 }
 
-/// Renders `records` (extension records naming files of `files`) with us and `pov` with
-/// POV-Ray; the share of pixels apart, or none when POV-Ray is missing.
-fn compare(files: &[(&str, String)], records: &str, pov: &str) -> Option<f64> {
+/// Renders `records` (extension records naming files of `files`, written beside the scene
+/// for both) with us and `pov` with POV-Ray; the share of pixels apart, or none when POV-Ray is missing.
+pub(crate) fn compare(files: &[(&str, Vec<u8>)], records: &str, pov: &str) -> Option<f64> {
     let povray = skip::which("povray", &["/usr/bin/povray"])?;
     let dir = tempfile::tempdir().unwrap();
     for (name, text) in files {
@@ -185,7 +185,7 @@ const POV_BLUE: &str = "pigment { color rgb <0.2, 0.5, 0.9> } Fin(0.7)";
 fn smooth_icosphere_matches_mesh2() {
     let ico = icosphere();
     crate::support::povray::assert_close(compare(
-        &[("ball.obj", obj(&ico, true))],
+        &[("ball.obj", obj(&ico, true).into_bytes())],
         &format!("mesh \"ball.obj\" {RED} scale 0.9 0.9 0.9 translate 0 0.9 0\n"),
         &mesh2(
             &ico,
@@ -200,12 +200,12 @@ fn flat_icosphere_and_quad_cube_match_mesh2() {
     let (ico, cube) = (icosphere(), cube());
     crate::support::povray::assert_close(compare(
         &[
-            ("gem.obj", obj(&ico, false)),
-            ("cube.obj", obj(&cube, false)),
+            ("gem.obj", obj(&ico, false).into_bytes()),
+            ("cube.obj", obj(&cube, false).into_bytes()),
         ],
         &format!(
-            "mesh \"gem.obj\" {RED} scale 0.7 0.7 0.7 translate -0.9 0.8 0.5\n\
-             mesh \"cube.obj\" {BLUE} scale 0.8 1.2 0.8 translate 0.9 0.75 -0.5\n"
+            "mesh \"gem.obj\" {RED} scale 0.7 0.7 0.7 translate -0.9 0.8 0.5 flat\n\
+             mesh \"cube.obj\" {BLUE} scale 0.8 1.2 0.8 translate 0.9 0.75 -0.5 flat\n"
         ),
         &format!(
             "{}{}",

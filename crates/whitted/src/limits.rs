@@ -41,6 +41,10 @@ pub const MAX_MESH_TRIANGLES: u64 = 1 << 22;
 /// any modelled object, few enough that a tree of alternating operations (which does not
 /// flatten) stays a short walk on a worker thread's stack.
 pub const MAX_CSG_DEPTH: usize = 1000;
+/// The most vertices (or texture coordinates, or normals) one mesh file may list: 2^23
+/// (8,388,608), two a triangle of the triangle budget, so a file of vertices alone cannot
+/// take gigabytes before its faces are read.
+pub const MAX_MESH_VERTICES: u64 = 1 << 23;
 /// The largest manifest file read: 16 MiB.
 pub const MAX_MANIFEST_BYTES: u64 = 16 << 20;
 /// The largest frame file read by `status`, `--resume` and `encode`: the RGB bytes of

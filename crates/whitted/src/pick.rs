@@ -101,7 +101,7 @@ pub fn pick(tracer: &Tracer, camera: &Camera, x: u32, y: u32) -> Option<Pick> {
     let scene = tracer.scene();
     let obj = scene.objects.get(index)?;
     let p = ray.at(t);
-    let surface = tracer.surface_of(obj, hit.part);
+    let surface = tracer.surface_of(obj, hit.part, p);
     // A CSG block answers with the leaf the ray met (its texture, material and normal).
     let (obj, outward) = surface_at(&surface, &ray, p);
     let (normal, _) = facing(obj, outward, p, ray.dir);

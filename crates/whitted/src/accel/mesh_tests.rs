@@ -23,7 +23,7 @@ fn soup(n: usize, seed: u64) -> Mesh {
         }
         raw.triangles.push([3 * k, 3 * k + 1, 3 * k + 2]);
     }
-    Mesh::from_raw(raw, &Frame::IDENTITY).unwrap()
+    Mesh::from_raw(raw, &Frame::IDENTITY, Some(crate::mesh::Shading::Flat)).unwrap()
 }
 
 fn scene(meshes: &[Arc<Mesh>], kt: f64) -> (Vec<Object>, Accel) {

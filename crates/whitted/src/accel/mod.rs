@@ -341,14 +341,15 @@ impl Accel {
         })
     }
 
-    /// The surface a hit on `part` of mesh object `shape` is shaded as: that triangle
-    /// (smooth where its mesh has normals); `None` when `shape` is not a mesh or `part`
-    /// is `NO_PART`.
-    pub fn surface(&self, shape: &Shape, part: u32) -> Option<Shape> {
-        match shape {
+    /// The object a hit at `p` on `part` of mesh object `obj` is shaded as: that triangle
+    /// (smooth where its mesh has normals) with its texture and material
+    /// (`Mesh::surface`); `None` when `obj` is not a mesh or `part` is `NO_PART`.
+    pub fn surface(&self, obj: &Object, part: u32, p: DVec3) -> Option<Object> {
+        match &obj.shape {
             Shape::Mesh(m) if part != NO_PART => {
                 let mesh = self.meshes.get(m.id as usize)?;
-                ((part as usize) < mesh.triangles.len()).then(|| mesh.shape(part))
+                ((part as usize) < mesh.triangles.len())
+                    .then(|| mesh.surface(part, p, &obj.texture, &obj.material))
             }
             _ => None,
         }

@@ -68,10 +68,11 @@ mod tests {
         let triangles = vec![[0, 1, 2], [0, 1, 2], [1, 2, 0], [4, 1, 2], [0, 1, 3]];
         let raw = Raw {
             positions,
-            normals: Vec::new(),
             triangles,
+            ..Raw::default()
         };
-        let mesh = Mesh::from_raw(raw, &Frame::IDENTITY).unwrap();
+        let flat = Some(crate::mesh::Shading::Flat);
+        let mesh = Mesh::from_raw(raw, &Frame::IDENTITY, flat).unwrap();
         assert_eq!(super::triangles(&mesh), vec![0, 2, 4]);
     }
 }

@@ -7,22 +7,33 @@
 //! transpose), drops the triangles of zero area, and stores the rest compactly: three
 //! indices into one shared vertex array per triangle.
 //!
-//! Shading: a mesh whose file gives vertex normals is smooth (the barycentric
-//! interpolation of its corners' normals, normalised: `SmoothTriangle`), else flat. The
-//! triangles are two-sided, as every surface of the tracer is.
+//! Shading (SPEC §18): a mesh is smooth (the barycentric interpolation of its corners'
+//! normals, normalised: `SmoothTriangle`) with the file's vertex normals, or with normals
+//! computed from its faces (`normals`: `smooth Angle`, and `smooth 30` for a file without
+//! normals), or flat (`flat`: each face's own normal). The triangles are two-sided, as
+//! every surface of the tracer is.
 //!
 //! Limits: the file's bytes (`limits::MAX_MESH_BYTES`) and its triangles after fanning
 //! (`limits::MAX_MESH_TRIANGLES`). Every failure is a `MeshError` naming the mesh file
 //! (and its line where the format has lines and the crate, or `obj`'s search, finds it).
 
+mod load;
+mod mtl;
+pub mod normals;
 mod obj;
+mod obj_scan;
 mod ply;
+mod ply_records;
+mod raw;
+mod surface;
 
-use crate::limits::{MAX_MESH_BYTES, MAX_MESH_TRIANGLES};
+pub use load::place;
+pub use raw::{Look, Raw, RECORD_LOOK};
+
+use crate::limits::MAX_MESH_TRIANGLES;
 use crate::optics::Ray;
-use crate::shapes::{Frame, Shape, SmoothTriangle, Triangle};
+use crate::shapes::Triangle;
 use glam::DVec3;
-use std::path::Path;
 
 /// Why a mesh file could not be drawn; every message starts with the file's name (and
 /// `:line` where known).
@@ -65,47 +76,56 @@ pub enum MeshError {
         /// How many were counted before the loader stopped.
         count: u64,
     },
-    /// No triangle of non-zero area (or no triangle at all).
-    #[error("{path}: the mesh has no triangle of non-zero area")]
+    /// No triangle at all, and why (no faces, faces of fewer than three corners, …).
+    #[error("{path}: the mesh has no triangle: {why}")]
+    Empty {
+        /// The file.
+        path: String,
+        /// The cause, in the file's terms.
+        why: String,
+    },
+    /// Triangles, but none of non-zero area.
+    #[error("{path}: the mesh has no triangle of non-zero area (its {count} triangles are all degenerate)")]
     Degenerate {
         /// The file.
         path: String,
+        /// How many triangles the file gave.
+        count: usize,
     },
 }
 
-/// What a loader reads: positions, per-vertex normals (empty, or one per position) and
-/// triangles (indices checked to be in range).
-#[derive(Clone, Debug, Default)]
-pub struct Raw {
-    /// The vertices, in the file's own space.
-    pub positions: Vec<DVec3>,
-    /// One normal per vertex, or none.
-    pub normals: Vec<DVec3>,
-    /// The triangles, polygons fanned.
-    pub triangles: Vec<[u32; 3]>,
+/// How a mesh record asks for its normals (SPEC §18); without either, the file's normals,
+/// or `Smooth(DEFAULT_SMOOTH)` for a file that has none.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Shading {
+    /// `flat`: each face's own normal, even where the file has normals.
+    Flat,
+    /// `smooth Angle`: normals from the faces, split where faces meet at more than Angle
+    /// degrees (0 < Angle ≤ 180).
+    Smooth(f64),
 }
 
-impl Raw {
-    /// Fans the polygon `face` (vertex indices) into triangles (v0, vi, vi+1), checking
-    /// each index against `vertices` and the total against the limit. A face of fewer
-    /// than three vertices adds nothing.
-    pub fn fan(&mut self, face: &[u32], vertices: usize) -> Result<(), String> {
-        if let Some(bad) = face.iter().find(|&&i| i as usize >= vertices) {
-            return Err(format!(
-                "vertex index {bad} out of range ({vertices} vertices)"
-            ));
-        }
-        for k in 1..face.len().saturating_sub(1) {
-            self.triangles.push([face[0], face[k], face[k + 1]]);
-        }
-        Ok(())
-    }
-
-    /// True when the triangles are past the limit.
-    pub fn over_limit(&self) -> bool {
-        self.triangles.len() as u64 > MAX_MESH_TRIANGLES
-    }
+/// `pivot` (SPEC §18): the point of the file that becomes the mesh's origin.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Pivot {
+    /// `pivot center`: the centre of the mesh's bounds.
+    Center,
+    /// `pivot x y z`: a point in the file's units.
+    Point(DVec3),
 }
+
+/// `fit Size` and `pivot` of a mesh record: applied to the file's vertices before the
+/// record's `scale`, `rotate` and `translate` (`load::place`).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Placing {
+    /// `fit Size`: a uniform scale about the bounds' centre making the largest side Size.
+    pub fit: Option<f64>,
+    /// `pivot`: the point moved to the origin (after `fit`).
+    pub pivot: Option<Pivot>,
+}
+
+/// The crease angle of a mesh file without normals and without `smooth` or `flat`.
+pub const DEFAULT_SMOOTH: f64 = 30.0;
 
 /// A mesh in world space: a shared vertex array, a normal per vertex (smooth) or none
 /// (flat), and three vertex indices per triangle. (Its `Debug` gives the counts only.)
@@ -117,6 +137,16 @@ pub struct Mesh {
     pub normals: Vec<DVec3>,
     /// The triangles of non-zero area, in file order.
     pub triangles: Vec<[u32; 3]>,
+    /// One (u, v) per vertex (the file's `vt`, PLY `u v`), or none.
+    pub uvs: Vec<[f64; 2]>,
+    /// One colour per vertex (OBJ `v x y z r g b`, PLY `red green blue`), or none.
+    pub colors: Vec<DVec3>,
+    /// The file's materials (`.mtl`).
+    pub looks: Vec<Look>,
+    /// One entry of `looks` per triangle (`RECORD_LOOK`: the record's), or none.
+    pub face_looks: Vec<u32>,
+    /// What the file holds and the tracer does not use, one line per kind.
+    pub warnings: Vec<String>,
     /// The SHA-256 of the file it was read from (zeros for one made in memory).
     pub source: [u8; 32],
 }
@@ -132,77 +162,6 @@ impl std::fmt::Debug for Mesh {
 }
 
 impl Mesh {
-    /// Reads the mesh file at `path` and places it by `frame`.
-    pub fn load(path: &Path, frame: &Frame) -> Result<Mesh, MeshError> {
-        let name = path.display().to_string();
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .map(str::to_ascii_lowercase);
-        let ext = match ext.as_deref() {
-            Some(e @ ("obj" | "ply")) => e.to_string(),
-            _ => return Err(MeshError::Format { path: name }),
-        };
-        let bytes =
-            crate::input::read_regular(path, MAX_MESH_BYTES, "mesh file").map_err(|source| {
-                MeshError::Io {
-                    path: name.clone(),
-                    source,
-                }
-            })?;
-        let raw = if ext == "obj" {
-            obj::read(&bytes, &name)?
-        } else {
-            ply::read(&bytes, &name)?
-        };
-        if raw.over_limit() {
-            let count = raw.triangles.len() as u64;
-            return Err(MeshError::TooMany { path: name, count });
-        }
-        let mesh = Mesh::from_raw(raw, frame).ok_or(MeshError::Degenerate { path: name })?;
-        Ok(Mesh {
-            source: crate::input::digest(&bytes),
-            ..mesh
-        })
-    }
-
-    /// The mesh of `raw` placed by `frame`, its zero-area triangles dropped; `None` when
-    /// none is left.
-    pub fn from_raw(raw: Raw, frame: &Frame) -> Option<Mesh> {
-        let vertices: Vec<DVec3> = raw
-            .positions
-            .iter()
-            .map(|&p| frame.point_to_world(p))
-            .collect();
-        // A zero or non-finite normal makes its mesh flat: no corner is left without one.
-        let normals: Vec<DVec3> = raw
-            .normals
-            .iter()
-            .map_while(|&n| frame.normal_to_world(n).try_normalize())
-            .collect();
-        let normals = if normals.len() == vertices.len() {
-            normals
-        } else {
-            Vec::new()
-        };
-        let mut triangles = raw.triangles;
-        triangles.retain(|&[a, b, c]| {
-            Triangle::new(
-                vertices[a as usize],
-                vertices[b as usize],
-                vertices[c as usize],
-            )
-            .is_some()
-        });
-        triangles.shrink_to_fit();
-        (!triangles.is_empty()).then_some(Mesh {
-            vertices,
-            normals,
-            triangles,
-            source: [0; 32],
-        })
-    }
-
     /// The corners of triangle `k`.
     #[inline(always)]
     pub fn corners(&self, k: u32) -> [DVec3; 3] {
@@ -225,23 +184,6 @@ impl Mesh {
             .filter(|&t| t > ray.t_min && t < t_max)
     }
 
-    /// Triangle `k` as a shape of its own: smooth where the mesh has normals, flat
-    /// otherwise (what shading asks for the normal at a hit).
-    pub fn shape(&self, k: u32) -> Shape {
-        let corners = self.corners(k);
-        let flat = Triangle::new(corners[0], corners[1], corners[2])
-            .expect("Mesh::from_raw keeps only triangles of non-zero area");
-        if self.normals.is_empty() {
-            return Shape::Triangle(flat);
-        }
-        let [a, b, c] = self.triangles[k as usize];
-        let n = &self.normals;
-        Shape::Smooth(SmoothTriangle {
-            flat,
-            normals: [n[a as usize], n[b as usize], n[c as usize]],
-        })
-    }
-
     /// The box of triangle `k`.
     #[inline]
     pub fn bounds(&self, k: u32) -> (DVec3, DVec3) {
@@ -261,5 +203,7 @@ impl Mesh {
     }
 }
 
+#[cfg(test)]
+mod data_tests;
 #[cfg(test)]
 mod tests;

@@ -1,15 +1,21 @@
 //! Wavefront OBJ through `tobj`: every object and group of the file in one mesh, its
 //! polygons fanned here (tobj's `face_arities`), one index per corner (`single_index`,
-//! so positions and normals pair up), points and lines ignored, materials not read (the
-//! record's TEXTURE and MATERIAL colour the mesh). Normals count only when every vertex
-//! has one.
+//! so positions, `vt` coordinates, normals and `v x y z r g b` colours pair up); each
+//! kind counts only when every vertex has it. `mtllib` files are read beside the OBJ
+//! through tobj's `.mtl` reader (`mtl`), and each face takes its `usemtl` material.
 //!
-//! tobj names what is wrong but not where; on an error the line is found by reading
-//! ever shorter prefixes of the file (a binary search over its lines: the first prefix
-//! that fails ends at the line to blame).
+//! Before tobj allocates, one pass (`obj_scan`) counts the file's vertices and faces
+//! against the budgets and names the statements read past (one warning per kind). A
+//! UTF-8 byte-order mark is skipped. tobj names what is wrong but not where: the reader
+//! it reads from counts lines, so a line it refuses is the line just read; an index past
+//! its list, which tobj finds only at the end of an object, is found by one more pass.
 
-use super::{MeshError, Raw};
+use super::obj_scan::{self, Counts};
+use super::{mtl, MeshError, Raw};
 use glam::DVec3;
+use std::cell::RefCell;
+use std::io::{BufRead, Read};
+use std::path::Path;
 
 fn options() -> tobj::LoadOptions {
     tobj::LoadOptions {
@@ -20,68 +26,143 @@ fn options() -> tobj::LoadOptions {
     }
 }
 
-fn load(text: &[u8]) -> Result<Vec<tobj::Model>, tobj::LoadError> {
-    let mut reader = std::io::BufReader::new(text);
-    let (models, _materials) = tobj::load_obj_buf(&mut reader, &options(), |_| {
-        Err(tobj::LoadError::OpenFileFailed)
-    })?;
-    Ok(models)
+/// The file's bytes handed to tobj one line at a time, counting lines as they go.
+struct Lines<'b> {
+    bytes: &'b [u8],
+    at: usize,
+    /// The 1-based line of the last byte handed over.
+    line: usize,
 }
 
-/// The line (1-based) whose addition makes tobj fail, when the file's prefixes show it.
-fn locate(bytes: &[u8]) -> Option<usize> {
-    let ends: Vec<usize> = bytes
-        .iter()
-        .enumerate()
-        .filter(|(_, &b)| b == b'\n')
-        .map(|(i, _)| i + 1)
-        .chain((bytes.last() != Some(&b'\n')).then_some(bytes.len()))
-        .collect();
-    let fails = |lines: usize| load(&bytes[..ends[lines - 1]]).is_err();
-    // The smallest number of lines whose prefix fails.
-    let (mut lo, mut hi) = (1usize, ends.len());
-    if hi == 0 || !fails(hi) {
-        return None;
+impl Read for Lines<'_> {
+    fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
+        let n = self.fill_buf()?.len().min(out.len());
+        out[..n].copy_from_slice(&self.bytes[self.at..self.at + n]);
+        self.consume(n);
+        Ok(n)
     }
-    while lo < hi {
-        let mid = lo + (hi - lo) / 2;
-        if fails(mid) {
-            hi = mid;
-        } else {
-            lo = mid + 1;
+}
+
+impl BufRead for Lines<'_> {
+    fn fill_buf(&mut self) -> std::io::Result<&[u8]> {
+        let rest = &self.bytes[self.at..];
+        let end = rest
+            .iter()
+            .position(|&b| b == b'\n')
+            .map_or(rest.len(), |i| i + 1);
+        Ok(&rest[..end])
+    }
+
+    fn consume(&mut self, n: usize) {
+        if n > 0 && (self.at == 0 || self.bytes[self.at - 1] == b'\n') {
+            self.line += 1;
         }
+        self.at += n;
     }
-    Some(lo)
 }
 
-/// The vertices, normals and fanned triangles of an OBJ file's bytes.
-pub fn read(bytes: &[u8], path: &str) -> Result<Raw, MeshError> {
-    let models = load(bytes).map_err(|e| MeshError::Malformed {
+fn malformed(path: &str, line: Option<usize>, message: String) -> MeshError {
+    MeshError::Malformed {
         path: path.to_string(),
-        line: locate(bytes),
+        line,
         format: "OBJ",
-        message: e.to_string(),
-    })?;
+        message,
+    }
+}
+
+/// Where tobj's `error` is in the file: the line it stopped at, or for an index past its
+/// list, the face that holds it.
+fn locate(e: tobj::LoadError, bytes: &[u8], counts: &Counts, stopped: usize) -> (usize, String) {
+    use tobj::LoadError::*;
+    match e {
+        FaceVertexOutOfBounds | FaceTexCoordOutOfBounds | FaceNormalOutOfBounds => {
+            obj_scan::bad_index(bytes, counts).unwrap_or((stopped, e.to_string()))
+        }
+        FaceColorOutOfBounds => (
+            stopped,
+            "some vertices have a colour (v x y z r g b) and others not".into(),
+        ),
+        _ => (stopped, e.to_string()),
+    }
+}
+
+/// The vertices, their data, the fanned triangles and the materials of an OBJ file's
+/// bytes; `dir` is the file's folder, where its `.mtl` files are.
+pub fn read(bytes: &[u8], path: &str, dir: &Path) -> Result<Raw, MeshError> {
+    let bytes = bytes.strip_prefix(b"\xEF\xBB\xBF").unwrap_or(bytes);
+    let counts = obj_scan::count(bytes);
+    if let Some(why) = counts.over_budget() {
+        return Err(malformed(path, None, why));
+    }
+    if counts.faces == 0 {
+        let why = "the OBJ file has no faces ('f' lines)".to_string();
+        return Err(MeshError::Empty {
+            path: path.to_string(),
+            why,
+        });
+    }
+    if let Some(line) = obj_scan::non_finite(bytes) {
+        let why = "the vertex has a coordinate that is not a finite number (NaN, or past ±1.8e308)"
+            .to_string();
+        return Err(malformed(path, Some(line), why));
+    }
     let mut raw = Raw::default();
-    let mut smooth = true;
+    let mtl_warnings = RefCell::new(Vec::new());
+    let mut lines = Lines {
+        bytes,
+        at: 0,
+        line: 0,
+    };
+    let (models, materials) = tobj::load_obj_buf(&mut lines, &options(), |name| {
+        mtl::read(dir, name, path, &mut mtl_warnings.borrow_mut())
+    })
+    .map_err(|e| {
+        let (line, message) = locate(e, bytes, &counts, lines.line);
+        malformed(path, Some(line), message)
+    })?;
+    raw.warnings.extend(mtl_warnings.into_inner());
+    for (name, n, line) in &counts.unused {
+        raw.warnings.push(format!(
+            "{path}:{line}: not used: {n} '{name}' statement(s) (the tracer reads v, vt, vn, f, o, g, mtllib, usemtl)"
+        ));
+    }
+    if counts.others > 0 {
+        raw.warnings.push(format!(
+            "{path}: not used: {} 'l' and 'p' lines (lines and points are not drawn)",
+            counts.others
+        ));
+    }
+    let every = |f: &dyn Fn(&tobj::Mesh) -> bool| models.iter().all(|m| f(&m.mesh));
+    let normals = every(&|m| m.normals.len() == m.positions.len());
+    let uvs = every(&|m| m.texcoords.len() / 2 == m.positions.len() / 3);
+    let colors = every(&|m| m.vertex_color.len() == m.positions.len());
+    let materials = materials.unwrap_or_default();
+    raw.looks = mtl::looks(&materials, dir, path, uvs, &mut raw.warnings);
+    let looks = models.iter().any(|m| m.mesh.material_id.is_some()) && !raw.looks.is_empty();
     for model in &models {
         let m = &model.mesh;
         let base = raw.positions.len() as u32;
         let count = m.positions.len() / 3;
-        raw.positions.extend(
-            m.positions
-                .chunks_exact(3)
-                .map(|p| DVec3::new(p[0], p[1], p[2])),
-        );
-        if m.normals.len() == m.positions.len() {
-            raw.normals.extend(
-                m.normals
-                    .chunks_exact(3)
-                    .map(|n| DVec3::new(n[0], n[1], n[2])),
-            );
-        } else {
-            smooth = false;
+        let triples = |v: &[f64]| -> Vec<DVec3> {
+            v.chunks_exact(3)
+                .map(|p| DVec3::new(p[0], p[1], p[2]))
+                .collect()
+        };
+        raw.positions.extend(triples(&m.positions));
+        if normals {
+            raw.normals.extend(triples(&m.normals));
         }
+        if colors {
+            raw.colors.extend(triples(&m.vertex_color));
+        }
+        if uvs {
+            raw.uvs
+                .extend(m.texcoords.chunks_exact(2).map(|t| [t[0], t[1]]));
+        }
+        let look = m
+            .material_id
+            .filter(|&i| i < raw.looks.len())
+            .map_or(super::raw::RECORD_LOOK, |i| i as u32);
         let mut face = Vec::new();
         let mut start = 0usize;
         let arities: Box<dyn Iterator<Item = usize>> = if m.face_arities.is_empty() {
@@ -96,20 +177,24 @@ pub fn read(bytes: &[u8], path: &str) -> Result<Raw, MeshError> {
             start += arity;
             face.clear();
             face.extend(corners.iter().map(|&i| i + base));
+            let before = raw.triangles.len();
             raw.fan(&face, base as usize + count)
-                .map_err(|message| MeshError::Malformed {
-                    path: path.to_string(),
-                    line: None,
-                    format: "OBJ",
-                    message,
-                })?;
-            if raw.over_limit() {
-                break;
+                .map_err(|message| malformed(path, None, message))?;
+            if looks {
+                let added = raw.triangles.len() - before;
+                raw.face_looks.extend(std::iter::repeat_n(look, added));
             }
         }
     }
-    if !smooth {
-        raw.normals.clear();
+    if raw.triangles.is_empty() {
+        let why = format!(
+            "each of its {} 'f' lines has fewer than three corners",
+            counts.faces
+        );
+        return Err(MeshError::Empty {
+            path: path.to_string(),
+            why,
+        });
     }
     Ok(raw)
 }

@@ -220,6 +220,13 @@ impl Job {
         NonSquare::check(&self.lens(), self.native, size)
     }
 
+    /// The warnings of the scene's mesh files: what each holds and the tracer does not
+    /// use, a material or image it cannot read (SPEC §18), one line per kind.
+    pub fn mesh_warnings(&self) -> Vec<String> {
+        let meshes = self.scene.meshes.iter();
+        meshes.flat_map(|m| m.warnings.iter().cloned()).collect()
+    }
+
     /// The warning before an enormous request (on the current thread pool).
     pub fn enormous(&self) -> Option<Enormous> {
         self.still().enormous()

@@ -12,6 +12,9 @@
 //!   x = normalize(up × y) with up as for planes, z = x × y; u as spherical's from x and
 //!   z, v = y/Size. Other shapes use their object frame (y up).
 //!
+//! - `uv` (SPEC §18): a mesh's own (u, v), interpolated over the triangle hit, over
+//!   Size; the mesh maps them (`Mesh::surface`), here it is (0, 0).
+//!
 //! The frames are read from the drawn shape, so an animated shape carries its image. A
 //! flat face on a tile boundary reads the tile on its solid's side (`faces`).
 
@@ -28,11 +31,14 @@ pub enum MapKind {
     Spherical,
     /// Angle about the axis and height along it.
     Cylindrical,
+    /// A mesh's own texture coordinates, interpolated over the triangle (SPEC §18; the
+    /// mesh answers: `Mesh::surface`).
+    Uv,
 }
 
 impl MapKind {
     /// The keywords a TEXTURE record names them by.
-    pub const NAMES: [&'static str; 3] = ["planar", "spherical", "cylindrical"];
+    pub const NAMES: [&'static str; 4] = ["planar", "spherical", "cylindrical", "uv"];
 
     /// The kind a keyword names.
     pub fn from_name(word: &str) -> Option<MapKind> {
@@ -40,6 +46,7 @@ impl MapKind {
             "planar" => Some(MapKind::Planar),
             "spherical" => Some(MapKind::Spherical),
             "cylindrical" => Some(MapKind::Cylindrical),
+            "uv" => Some(MapKind::Uv),
             _ => None,
         }
     }
@@ -149,6 +156,8 @@ fn unsettled(map: MapKind, size: f64, shape: &Shape, p: DVec3) -> (f64, f64) {
             };
             (turn(q.x, q.z), q.y / size)
         }
+        // Only a mesh has coordinates, and it maps them itself (`Mesh::surface`).
+        MapKind::Uv => (0.0, 0.0),
     }
 }
 

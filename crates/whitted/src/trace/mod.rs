@@ -177,7 +177,7 @@ impl<'a> Tracer<'a> {
                 let obj = if part == NO_PART {
                     &objects[i]
                 } else {
-                    surface = self.surface_of(&objects[i], part);
+                    surface = self.surface_of(&objects[i], part, ray.at(t));
                     &*surface
                 };
                 count.eye_hits += 1;
@@ -245,7 +245,7 @@ impl<'a> Tracer<'a> {
         weight: f64,
         count: &mut RayCount,
     ) -> Color {
-        let surface = self.surface_of(obj, part);
+        let surface = self.surface_of(obj, part, ray.at(t));
         self.shade(ray, t, &surface, None, depth, weight, count)
     }
 

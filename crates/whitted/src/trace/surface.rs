@@ -13,16 +13,13 @@ use glam::DVec3;
 use std::borrow::Cow;
 
 impl Tracer<'_> {
-    /// The object as shading sees it at a hit on `part`: a mesh object becomes its
-    /// triangle `part` (with the mesh's texture and material); any other is itself.
+    /// The object as shading sees it at a hit at `p` on `part`: a mesh object becomes
+    /// its triangle `part` (with the texture and material there: `Mesh::surface`); any
+    /// other is itself.
     #[inline]
-    pub fn surface_of<'o>(&self, obj: &'o Object, part: u32) -> Cow<'o, Object> {
-        match self.accel.surface(&obj.shape, part) {
-            Some(shape) => Cow::Owned(Object {
-                shape,
-                texture: obj.texture.clone(),
-                material: obj.material,
-            }),
+    pub fn surface_of<'o>(&self, obj: &'o Object, part: u32, p: DVec3) -> Cow<'o, Object> {
+        match self.accel.surface(obj, part, p) {
+            Some(surface) => Cow::Owned(surface),
             None => Cow::Borrowed(obj),
         }
     }

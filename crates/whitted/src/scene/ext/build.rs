@@ -16,6 +16,7 @@ use crate::scene::{FileLoc, Scene, SceneError, ShapeSpec};
 use crate::shapes::{
     AaBox, Capped, Disc, Frame, Local, MeshRef, Placed, Plane, Shape, Sphere, Torus, Triangle,
 };
+use crate::texture::{MapKind, Texture};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -97,7 +98,15 @@ fn mesh(o: &ExtObject, path: &std::path::Path, id: usize) -> Result<(MeshRef, Me
     let bad = |why: &str| refused(&o.loc, "mesh", why);
     let f = frame(&o.mods)
         .ok_or_else(|| bad("the scale, rotate and translate make a singular frame"))?;
-    let mesh = Mesh::load(path, &f).map_err(|e| bad(&e.to_string()))?;
+    let mesh = Mesh::load_placed(path, &f, o.mods.shading, &o.mods.placing)
+        .map_err(|e| bad(&e.to_string()))?;
+    let uv = matches!(&o.texture, Texture::Image(i) if i.map == MapKind::Uv);
+    if uv && mesh.uvs.is_empty() {
+        return Err(bad(&format!(
+            "{}: the uv map needs the file's texture coordinates (OBJ vt, PLY u v), and it has none",
+            path.display()
+        )));
+    }
     let (lo, hi) = mesh.extent();
     let id = id as u32;
     Ok((MeshRef { id, lo, hi }, mesh))

@@ -129,6 +129,16 @@ pub fn modifiers(m: &Modifiers) -> Result<(), Violation> {
             );
         }
     }
+    if let Some(crate::mesh::Shading::Smooth(angle)) = m.shading {
+        if !(angle > 0.0 && angle <= 180.0) {
+            let msg =
+                format!("the smooth Angle must be above 0 and at most 180 degrees, found {angle}");
+            return fail("Angle", msg);
+        }
+    }
+    if let Some(size) = m.placing.fit {
+        positive(size, "Size")?;
+    }
     if let Some((distance, power)) = m.fade {
         positive(distance, "Distance")?;
         if power < 0.0 {

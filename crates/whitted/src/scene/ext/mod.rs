@@ -72,6 +72,10 @@ pub struct Modifiers {
     pub translate: Option<DVec3>,
     /// `fade Distance Power` (lights other than directional).
     pub fade: Option<(f64, f64)>,
+    /// `smooth Angle` or `flat` (meshes; SPEC §18): none keeps the file's normals.
+    pub shading: Option<crate::mesh::Shading>,
+    /// `fit Size` and `pivot center | x y z` (meshes; SPEC §18).
+    pub placing: crate::mesh::Placing,
 }
 
 impl Modifiers {

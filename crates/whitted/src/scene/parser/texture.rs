@@ -89,7 +89,17 @@ impl Parser<'_> {
                 pixels
             }
         };
+        let at = self.lexer.clone().next();
         let map = self.word("Map", &MapKind::NAMES, MapKind::from_name)?;
+        if let (MapKind::Uv, Some(at)) = (map, at) {
+            if self.place.record != "mesh" {
+                let msg = format!(
+                    "the uv map takes a mesh's own texture coordinates: a {} has none (use planar, spherical or cylindrical)",
+                    self.place.record
+                );
+                return Err(self.error(&at, msg, "Map"));
+            }
+        }
         let interp = self.word("Interp", &Interp::NAMES, Interp::from_name)?;
         let size = self.positive("Size")?;
         Ok(Texture::Image(Arc::new(ImageTexture {

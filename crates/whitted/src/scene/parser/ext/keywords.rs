@@ -11,7 +11,18 @@ pub(super) const CSG: [&str; 3] = ["union", "intersection", "difference"];
 /// Light records.
 pub(super) const LIGHTS: [&str; 4] = ["directional", "spot", "point", "area"];
 /// Modifiers.
-pub(super) const MODIFIERS: [&str; 6] = ["name", "open", "scale", "rotate", "translate", "fade"];
+pub(super) const MODIFIERS: [&str; 10] = [
+    "name",
+    "open",
+    "scale",
+    "rotate",
+    "translate",
+    "fade",
+    "smooth",
+    "flat",
+    "fit",
+    "pivot",
+];
 /// Every other word of the grammar.
 pub(super) const OTHERS: [&str; 2] = ["focus", "end"];
 

@@ -6,6 +6,7 @@ use super::super::Result;
 use super::{keywords, Ext};
 use crate::input::quote;
 use crate::limits::{MAX_AREA_SIDE, MAX_LENS_SAMPLES};
+use crate::mesh::{Pivot, Shading};
 use crate::scene::lexer::Token;
 
 impl<'a> Ext<'_, 'a> {
@@ -70,11 +71,19 @@ impl<'a> Ext<'_, 'a> {
         }
         let texture = self.p.texture()?;
         let material = self.p.material()?;
-        let open = matches!(keyword, "cylinder" | "cone");
-        let allowed: &[&str] = if open {
-            &["name", "open", "scale", "rotate", "translate"]
-        } else {
-            &["name", "scale", "rotate", "translate"]
+        let allowed: &[&str] = match keyword {
+            "cylinder" | "cone" => &["name", "open", "scale", "rotate", "translate"],
+            "mesh" => &[
+                "name",
+                "scale",
+                "rotate",
+                "translate",
+                "smooth",
+                "flat",
+                "fit",
+                "pivot",
+            ],
+            _ => &["name", "scale", "rotate", "translate"],
         };
         let mods = self.modifiers(allowed, within.is_some())?;
         Ok(ExtObject {
@@ -220,6 +229,14 @@ impl<'a> Ext<'_, 'a> {
                 let msg = format!("'{word}' is given twice (each modifier at most once)");
                 return Err(self.p.error(&tok, msg, word));
             }
+            if let Some(other) = [("smooth", "flat"), ("flat", "smooth")]
+                .iter()
+                .find(|(w, o)| *w == word && seen.contains(o))
+                .map(|(_, o)| *o)
+            {
+                let msg = format!("'{word}' and '{other}' exclude each other (give one)");
+                return Err(self.p.error(&tok, msg, word));
+            }
             seen.push(word);
             self.marks.push((word, tok));
             match word {
@@ -234,6 +251,23 @@ impl<'a> Ext<'_, 'a> {
                 "scale" => mods.scale = Some(self.vec3("scale", ["x", "y", "z"])?),
                 "rotate" => mods.rotate = Some(self.vec3("rotate", ["x", "y", "z"])?),
                 "translate" => mods.translate = Some(self.vec3("translate", ["x", "y", "z"])?),
+                "smooth" => mods.shading = Some(Shading::Smooth(self.num("Angle")?)),
+                "flat" => mods.shading = Some(Shading::Flat),
+                "fit" => mods.placing.fit = Some(self.num("Size")?),
+                "pivot" => {
+                    let center = self
+                        .p
+                        .lexer
+                        .clone()
+                        .next()
+                        .is_some_and(|t| t.text == "center");
+                    mods.placing.pivot = Some(if center {
+                        self.p.next();
+                        Pivot::Center
+                    } else {
+                        Pivot::Point(self.vec3("pivot", ["x", "y", "z"])?)
+                    });
+                }
                 _ => mods.fade = Some((self.num("Distance")?, self.num("Power")?)),
             }
         }
