@@ -15,7 +15,9 @@ pub mod packet;
 
 use crate::base::Colour;
 use std::io::Write;
-use std::net::{SocketAddr, TcpStream, ToSocketAddrs};
+use std::net::TcpStream;
+#[cfg(feature = "display")]
+use std::net::{SocketAddr, ToSocketAddrs};
 use std::sync::Mutex;
 use std::time::Duration;
 

@@ -5,7 +5,7 @@
 //! colour carried to the copies smoothing makes of it. `fit` and `pivot` (§18's placing)
 //! move the file's vertices first, in its own units.
 
-use super::{normals, obj, ply, Mesh, MeshError, Pivot, Placing, Raw, Shading, DEFAULT_SMOOTH};
+use super::{normals, Mesh, MeshError, Pivot, Placing, Raw, Shading, DEFAULT_SMOOTH};
 use crate::limits::MAX_MESH_BYTES;
 use crate::shapes::{Frame, Triangle};
 use glam::DVec3;
@@ -75,12 +75,7 @@ impl Mesh {
                     source,
                 }
             })?;
-        let mut raw = if ext == "obj" {
-            let dir = path.parent().unwrap_or(Path::new(""));
-            obj::read(&bytes, &name, dir)?
-        } else {
-            ply::read(&bytes, &name)?
-        };
+        let mut raw = read(&ext, &bytes, &name, path)?;
         place(&mut raw, placing).map_err(|message| MeshError::Malformed {
             path: name.clone(),
             line: None,
@@ -177,4 +172,21 @@ impl Mesh {
         mesh.triangles = triangles;
         Some(mesh)
     }
+}
+
+/// The file's own data, by its format (`ext`: `obj` or `ply`).
+#[cfg(feature = "mesh")]
+fn read(ext: &str, bytes: &[u8], name: &str, path: &Path) -> Result<Raw, MeshError> {
+    if ext == "obj" {
+        let dir = path.parent().unwrap_or(Path::new(""));
+        super::obj::read(bytes, name, dir)
+    } else {
+        super::ply::read(bytes, name)
+    }
+}
+
+/// A lean build (without the tracer's `mesh` feature) reads no mesh file.
+#[cfg(not(feature = "mesh"))]
+fn read(_ext: &str, _bytes: &[u8], name: &str, _path: &Path) -> Result<Raw, MeshError> {
+    Err(MeshError::NotBuilt { path: name.into() })
 }

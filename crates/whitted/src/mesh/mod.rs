@@ -18,11 +18,16 @@
 //! (and its line where the format has lines and the crate, or `obj`'s search, finds it).
 
 mod load;
+#[cfg(feature = "mesh")]
 mod mtl;
 pub mod normals;
+#[cfg(feature = "mesh")]
 mod obj;
+#[cfg(feature = "mesh")]
 mod obj_scan;
+#[cfg(feature = "mesh")]
 mod ply;
+#[cfg(feature = "mesh")]
 mod ply_records;
 mod raw;
 mod surface;
@@ -39,6 +44,12 @@ use glam::DVec3;
 /// `:line` where known).
 #[derive(Debug, thiserror::Error)]
 pub enum MeshError {
+    /// This build of the tracer reads no mesh files (its `mesh` feature is off).
+    #[error("{path}: this build reads no mesh files (the tracer's `mesh` feature)")]
+    NotBuilt {
+        /// The file as the record resolved it.
+        path: String,
+    },
     /// Missing, unreadable, not a regular file, or over `MAX_MESH_BYTES`.
     #[error("{path}: cannot read the mesh file: {source}")]
     Io {
@@ -203,7 +214,7 @@ impl Mesh {
     }
 }
 
-#[cfg(test)]
+#[cfg(all(test, feature = "mesh"))]
 mod data_tests;
-#[cfg(test)]
+#[cfg(all(test, feature = "mesh"))]
 mod tests;
