@@ -21,11 +21,12 @@
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion};
 use glam::DVec3;
 use std::time::Duration;
+use whitted::base::Color;
 use whitted::camera::Camera;
 use whitted::noise::noise;
 use whitted::optics::Ray;
 use whitted::shapes::{Plane, Quadric, Shape, Sphere};
-use whitted::texture::{Color, Texture};
+use whitted::texture::Texture;
 use whitted::trace::{RayCount, Tracer};
 use whitted::{render, Scene};
 

@@ -11,8 +11,8 @@
 
 use anyhow::{bail, Context};
 use std::path::Path;
+use whitted::base::Frame;
 use whitted::render::adaptive::{trace, Adaptive, BAND};
-use whitted::render::Frame;
 use whitted::{trace::Tracer, Scene};
 
 fn load(path: &str) -> anyhow::Result<Frame> {

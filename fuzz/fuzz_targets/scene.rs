@@ -14,7 +14,7 @@ use libfuzzer_sys::fuzz_target;
 use whitted::bump::Bump;
 use whitted::fog::Fog;
 use whitted::object::Object;
-use whitted::render::to_byte;
+use whitted::base::to_byte;
 use whitted::shapes::Shape;
 use whitted::texture::Texture;
 use whitted::trace::{RayCount, Tracer};

@@ -4,7 +4,7 @@
 
 use clap::Parser;
 use std::path::PathBuf;
-use whitted::base::Colour;
+use whitted::base::Transfer;
 use whitted::camera::Lens;
 use whitted::display::Display;
 use whitted::output::ExrDepth;
@@ -79,7 +79,7 @@ pub struct Args {
     /// How an .exr stores colours: `srgb` (default: the display values decoded to linear
     /// light, so a viewer's sRGB view shows the PNG's look) or `linear` (as they are).
     #[arg(long, value_name = "srgb|linear", value_parser = parse_colour)]
-    pub colour: Option<Colour>,
+    pub colour: Option<Transfer>,
     /// Print nothing on success.
     #[arg(short, long)]
     pub quiet: bool,
@@ -156,8 +156,8 @@ fn parse_passes(s: &str) -> Result<PassSet, String> {
     Ok(PassSet::of(&list?))
 }
 
-fn parse_colour(s: &str) -> Result<Colour, String> {
-    Colour::from_name(s).ok_or_else(|| format!("expected srgb or linear, found {s:?}"))
+fn parse_colour(s: &str) -> Result<Transfer, String> {
+    Transfer::from_name(s).ok_or_else(|| format!("expected srgb or linear, found {s:?}"))
 }
 
 fn parse_depth(s: &str) -> Result<ExrDepth, String> {

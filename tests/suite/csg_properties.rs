@@ -19,7 +19,7 @@ use whitted::bump::Bump;
 use whitted::object::{Highlight, Material, Object};
 use whitted::optics::{Ray, T_MIN};
 use whitted::shapes::csg::{Csg, Node, Op};
-use whitted::shapes::{AaBox, Capped, Frame, Local, Placed, Shape, Sphere, Torus};
+use whitted::shapes::{AaBox, Capped, Local, Placed, Shape, Sphere, Torus, Transform};
 use whitted::texture::Texture;
 
 /// Grid steps along the sampled stretch of the line.
@@ -48,7 +48,7 @@ fn solid(kind: u8, c: DVec3, size: DVec3, angles: DVec3) -> Solid {
                 * DMat3::from_rotation_y(r.y)
                 * DMat3::from_rotation_x(r.x);
             let m = DAffine3::from_mat3_translation(rot, c);
-            let f = Frame::from_affine(m).unwrap();
+            let f = Transform::from_affine(m).unwrap();
             let b = AaBox::new(-h, h).unwrap();
             let inv = m.inverse();
             let shape = Shape::Placed(Placed::new(Local::Box(b), f));
@@ -64,7 +64,7 @@ fn solid(kind: u8, c: DVec3, size: DVec3, angles: DVec3) -> Solid {
             // A capped cylinder of radius sx from c − (0, sy, 0) to c + (0, sy, 0).
             let (a, b) = (c - DVec3::Y * sy, c + DVec3::Y * sy);
             let cap = Capped::new(a, sx, b, sx, true).unwrap();
-            let shape = Shape::Placed(Placed::new(Local::Capped(cap), Frame::IDENTITY));
+            let shape = Shape::Placed(Placed::new(Local::Capped(cap), Transform::IDENTITY));
             (
                 shape,
                 Rc::new(move |p: DVec3| {
@@ -77,7 +77,7 @@ fn solid(kind: u8, c: DVec3, size: DVec3, angles: DVec3) -> Solid {
             // A torus about z, R = 1 + sx, r = 0.3 + sy/4.
             let (big, small) = (1.0 + sx, 0.3 + 0.25 * sy.min(2.0));
             let t = Torus::new(c, DVec3::Z, big, small).unwrap();
-            let shape = Shape::Placed(Placed::new(Local::Torus(t), Frame::IDENTITY));
+            let shape = Shape::Placed(Placed::new(Local::Torus(t), Transform::IDENTITY));
             (
                 shape,
                 Rc::new(move |p: DVec3| {

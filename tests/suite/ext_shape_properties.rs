@@ -12,7 +12,7 @@ use glam::{DAffine3, DMat3, DVec3};
 use proptest::prelude::*;
 use proptest::test_runner::TestCaseError;
 use whitted::optics::{Ray, T_MIN};
-use whitted::shapes::{AaBox, Capped, Disc, Frame, Local, Placed, Shape, Sphere, Torus};
+use whitted::shapes::{AaBox, Capped, Disc, Local, Placed, Shape, Sphere, Torus, Transform};
 
 /// Grid steps along the sampled stretch of the line.
 const STEPS: usize = 20_000;
@@ -168,7 +168,7 @@ fn ray_near(origin: DVec3, aim: DVec3, target: DVec3, inside: bool) -> Ray {
 
 fn placed(local: Local, f: Option<(DVec3, DVec3, DVec3)>) -> (Shape, DAffine3) {
     let m = affine(f);
-    let frame = Frame::from_affine(m).unwrap();
+    let frame = Transform::from_affine(m).unwrap();
     (Shape::Placed(Placed::new(local, frame)), m.inverse())
 }
 

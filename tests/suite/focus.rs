@@ -8,10 +8,10 @@
 
 use crate::support::raytrace;
 use glam::DVec3;
+use whitted::base::to_byte;
+use whitted::base::Color;
 use whitted::camera::thin_lens::concentric;
 use whitted::optics::Ray;
-use whitted::render::to_byte;
-use whitted::texture::Color;
 use whitted::trace::{RayCount, Tracer};
 use whitted::Scene;
 

@@ -5,7 +5,8 @@
 use glam::DVec3;
 use whitted::bump::Bump;
 use whitted::fog::Fog;
-use whitted::object::{Light, Material, Object};
+use whitted::lights::PointLight;
+use whitted::object::{Material, Object};
 use whitted::optics::Ray;
 use whitted::shapes::{Plane, Quadric, Shape, Sphere};
 use whitted::texture::Texture;
@@ -58,7 +59,7 @@ fn the_reports_example_sphere() {
     assert_eq!(scene.fog, Fog::None);
     assert_eq!(
         scene.lights,
-        vec![Light {
+        vec![PointLight {
             position: v(5.0, 10.0, 5.0),
             color: v(1.0, 1.0, 1.0),
             intensity: 1.0
@@ -138,12 +139,12 @@ fn every_record_kind_in_order() {
     assert_eq!(
         s.lights,
         vec![
-            Light {
+            PointLight {
                 position: v(10.0, 10.0, 10.0),
                 color: v(1.0, 1.0, 1.0),
                 intensity: 1.0
             },
-            Light {
+            PointLight {
                 position: v(-10.0, 5.0, 0.0),
                 color: v(1.0, 0.5, 0.25),
                 intensity: 0.5

@@ -8,7 +8,7 @@
 //!
 //! A primary ray that hits nothing has d = ∞: black without fog, white with it.
 
-use crate::texture::Color;
+use crate::base::Color;
 
 /// The scene's fog: type and distance D.
 #[derive(Clone, Copy, Debug, PartialEq)]

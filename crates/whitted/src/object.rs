@@ -2,9 +2,10 @@
 //! an NFF's `Kd Ks Shine T index` with its Phong highlight), objects (a shape with a
 //! texture and a material) and point lights (`Lx Ly Lz R G B Intensity`).
 
+use crate::base::Color;
 use crate::bump::Bump;
 use crate::shapes::Shape;
-use crate::texture::{Color, Texture};
+use crate::texture::Texture;
 use glam::DVec3;
 
 /// The optical coefficients of an object (report III.1, "MATERIAU").
@@ -61,6 +62,3 @@ impl Object {
         self.texture.color_at(p)
     }
 }
-
-/// The report's point light (it lives with the other lights, in `lights::point`).
-pub use crate::lights::Light;

@@ -10,9 +10,10 @@
 //! pick(&tracer, &camera, 120, 80) → Pick { object: "sphere 2", distance: 9.41, … }
 //! ```
 
+use crate::base::Color;
 use crate::camera::Camera;
 use crate::object::Object;
-use crate::texture::{Color, Texture};
+use crate::texture::Texture;
 use crate::trace::{facing, surface_at, Tracer};
 use serde::Serialize;
 

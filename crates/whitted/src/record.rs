@@ -2,7 +2,7 @@
 //! (`NoRecord`). Its own home so that both the trace loop (`trace`) and the light loop
 //! (`shading`) can call the hooks without importing each other; `trace` re-exports both.
 
-use crate::texture::Color;
+use crate::base::Color;
 use glam::DVec3;
 
 /// What the passes hear of a camera ray: its first hit and the parts its colour is the

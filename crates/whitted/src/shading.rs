@@ -11,11 +11,11 @@
 //! - a light with N·L ≤ 0 adds nothing; a light seen through objects is filtered by
 //!   `Kt·C_obj` per surface crossing, and blocked by any opaque crossing.
 
-use crate::lights::{Light, LightSource, Occluders};
+use crate::base::Color;
+use crate::lights::{LightSource, Occluders, PointLight};
 use crate::object::{Highlight, Material, Object};
 use crate::optics::Ray;
 use crate::record::{NoRecord, Record};
-use crate::texture::Color;
 use glam::DVec3;
 
 /// The report's ambient light intensity.
@@ -58,7 +58,7 @@ impl Occluders for [Object] {
 #[inline(never)]
 pub fn direct<O: Occluders + ?Sized>(
     occluders: &O,
-    lights: &[Light],
+    lights: &[PointLight],
     p: DVec3,
     n: DVec3,
     v: DVec3,
@@ -87,7 +87,7 @@ pub fn direct<O: Occluders + ?Sized>(
 #[inline(always)]
 pub fn direct_rec<O: Occluders + ?Sized, R: Record>(
     occluders: &O,
-    lights: &[Light],
+    lights: &[PointLight],
     p: DVec3,
     n: DVec3,
     v: DVec3,

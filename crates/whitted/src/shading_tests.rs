@@ -19,8 +19,8 @@ fn m(kd: f64, highlight: Highlight) -> Material {
     }
 }
 
-fn white_light(at: DVec3) -> Light {
-    Light {
+fn white_light(at: DVec3) -> PointLight {
+    PointLight {
         position: at,
         color: Color::ONE,
         intensity: 1.0,

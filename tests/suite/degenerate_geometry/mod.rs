@@ -13,8 +13,8 @@
 use glam::DVec3;
 use std::sync::mpsc;
 use std::time::Duration;
+use whitted::base::to_byte;
 use whitted::optics::Ray;
-use whitted::render::to_byte;
 use whitted::shapes::{Quadric, Sphere};
 use whitted::trace::{RayCount, Tracer};
 use whitted::{render, Camera, Frame, Scene};

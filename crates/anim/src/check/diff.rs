@@ -8,7 +8,7 @@
 //! added to the tolerance; [`Tolerance::failed`] names every limit a frame breaks.
 
 use serde::Serialize;
-use whitted::render::Frame;
+use whitted::base::Frame;
 
 /// The thresholds of a check.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]

@@ -7,7 +7,7 @@
 //! itself coloured with FLIP's magma scale (black 0, through purple and orange, to pale
 //! yellow 1) for the report.
 
-use whitted::render::Frame;
+use whitted::base::Frame;
 
 /// The FLIP figures of a frame against its reference.
 #[derive(Clone, Debug, PartialEq)]

@@ -36,8 +36,8 @@ use rayon::prelude::*;
 use reference::{draw, load_reference, probe_reference, stem, Reference};
 use std::path::{Path, PathBuf};
 use std::time::Instant;
+use whitted::base::Frame;
 use whitted::output::{write_atomic, ImageFormat};
-use whitted::render::Frame;
 
 /// Why the options of a check cannot be settled. The messages name manifest keys, never
 /// command-line flags: the binary says which flag to use.
@@ -260,7 +260,7 @@ pub fn bless(
                 layers.alpha = None;
                 let exr = ImageFormat::Exr(whitted::output::ExrOptions {
                     depth: whitted::output::ExrDepth::Float,
-                    colour: whitted::base::Colour::Linear,
+                    colour: whitted::base::Transfer::Linear,
                     ..Default::default()
                 });
                 whitted::output::write_atomic_layers(&path, layers, exr, &record)

@@ -6,9 +6,9 @@
 use super::super::error::AnimError;
 use super::super::project::Animation;
 use std::path::{Path, PathBuf};
+use whitted::base::Frame;
 use whitted::fileloc::shown;
 use whitted::output::ImageFormat;
-use whitted::render::Frame;
 
 /// The file name stem of frame `frame` (the name pattern, no extension).
 pub(super) fn stem(anim: &Animation, frame: u32) -> String {

@@ -36,7 +36,7 @@ use crate::select::SelectError;
 use std::collections::HashSet;
 use std::path::Path;
 use toml::Spanned;
-use whitted::base::Colour;
+use whitted::base::Transfer;
 use whitted::limits::{MAX_PIXELS, MAX_SAMPLES, MAX_SIDE};
 use whitted::output::{ExrCompression, ExrDepth, ExrOptions, ImageFormat};
 use whitted::passes::{Pass, PassSet};
@@ -114,8 +114,8 @@ impl Source<'_> {
                 .ok_or_else(|| named(v, "exr_compression", &ExrCompression::NAMES))?;
         }
         if let Some(v) = &raw.colour {
-            options.colour =
-                Colour::from_name(v.get_ref()).ok_or_else(|| named(v, "colour", &Colour::NAMES))?;
+            options.colour = Transfer::from_name(v.get_ref())
+                .ok_or_else(|| named(v, "colour", &Transfer::NAMES))?;
         }
         if let Some(list) = &raw.passes {
             let all: Vec<&str> = Pass::ALL.iter().map(|p| p.name()).collect();

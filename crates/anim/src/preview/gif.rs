@@ -11,8 +11,8 @@
 
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
+use whitted::base::Frame;
 use whitted::output::temp_beside;
-use whitted::render::Frame;
 
 /// The shortest delay written, in hundredths of a second.
 pub const MIN_DELAY: u16 = 2;

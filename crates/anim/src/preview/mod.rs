@@ -33,8 +33,8 @@ use rayon::prelude::*;
 use sheet::{Layout, Sheet};
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
+use whitted::base::Frame;
 use whitted::output::{write_atomic, ImageFormat, OutputError};
-use whitted::render::Frame;
 use whitted::scene::MAX_PIXELS;
 
 /// K when `--scale` is not given.

@@ -9,7 +9,7 @@
 use super::font::{self, FontError, FAMILY};
 use plotters::prelude::*;
 use plotters::style::text_anchor::{HPos, Pos, VPos};
-use whitted::render::Frame;
+use whitted::base::Frame;
 
 /// Pixels between tiles and around the grid.
 pub const PAD: u32 = 4;

@@ -6,7 +6,7 @@
 use super::plot::{CameraSample, Track};
 use crate::{AnimError, Animation, Project};
 use std::path::Path;
-use whitted::render::Frame;
+use whitted::base::Frame;
 
 /// The most camera samples the plot takes (evenly spread over the frames).
 pub const MAX_SAMPLES: u32 = 4096;

@@ -10,7 +10,7 @@
 
 use super::{Animation, FrameObserver};
 use std::sync::Arc;
-use whitted::base::Colour;
+use whitted::base::Transfer;
 use whitted::display::{Display, Tev};
 use whitted::output::ImageFormat;
 
@@ -30,7 +30,7 @@ impl<'p> Animation<'p> {
 fn tev_observer(addr: &str, anim: &Animation, program: &'static str) -> FrameObserver {
     let colour = match anim.format() {
         ImageFormat::Exr(options) => options.colour,
-        _ => Colour::Srgb,
+        _ => Transfer::Srgb,
     };
     let tev = Tev::connect_stderr(addr, program).with_colour(colour);
     let name = format!("{program}: {}", anim.manifest.path.display());

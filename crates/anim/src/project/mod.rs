@@ -14,6 +14,8 @@ use serde::Serialize;
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, OnceLock};
 use whitted::accel::Accel;
+use whitted::base::Color;
+use whitted::base::Frame;
 use whitted::camera::{Camera, Lens, NonSquare, VIEW_HEIGHT, VIEW_WIDTH};
 use whitted::limits::size_ok;
 use whitted::output::ImageFormat;
@@ -22,10 +24,9 @@ use whitted::passes::{Layers, PassSet};
 use whitted::pick::Pick;
 use whitted::render::layers::camera_matrices;
 use whitted::render::{
-    control, render_add_with, render_layers_add, render_with, Adaptive, Antialias, Frame,
+    control, render_add_with, render_layers_add, render_with, Adaptive, Antialias,
 };
 use whitted::scene::{Scene, SceneError};
-use whitted::texture::Color;
 use whitted::trace::{RayCount, Tracer};
 
 /// Bumped whenever an intended change of the library moves pixels: frames recorded under

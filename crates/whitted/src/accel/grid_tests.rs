@@ -6,12 +6,14 @@
 
 use super::tests::{bits, linear_nearest, object, scene, Rng};
 use super::{LightBuffer, TileView};
+use crate::base::Color;
 use crate::camera::Camera;
-use crate::object::{Light, Object};
+use crate::lights::PointLight;
+use crate::object::Object;
 use crate::optics::{reflect, Ray};
 use crate::shading;
 use crate::shapes::{Shape, Sphere};
-use crate::texture::{Color, Texture};
+use crate::texture::Texture;
 use glam::DVec3;
 
 /// `scene`, and for odd `n` an opaque dome of radius 500 around everything (a scale
@@ -63,8 +65,8 @@ fn light_buffer_answers_as_the_linear_scan() {
         let mut rng = Rng(seed.wrapping_mul(0x9e37_79b9_7f4a_7c15) | 1);
         let objects = domed(&mut rng, n);
         assert!(objects.len() <= 64, "{}", objects.len());
-        let lights: Vec<Light> = (0..4)
-            .map(|k| Light {
+        let lights: Vec<PointLight> = (0..4)
+            .map(|k| PointLight {
                 // One light inside a sphere (object 0), the others anywhere.
                 position: if k == 0 {
                     match objects[0].shape {

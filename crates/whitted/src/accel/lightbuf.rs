@@ -17,10 +17,11 @@
 
 use super::dirgrid::DirGrid;
 use super::{is_glass, is_opaque};
-use crate::object::{Light, Object};
+use crate::base::Color;
+use crate::lights::PointLight;
+use crate::object::Object;
 use crate::optics::Ray;
 use crate::shapes::Shape;
-use crate::texture::Color;
 use glam::DVec3;
 
 /// An opaque sphere around the light: (object, centre, the squared distance from the
@@ -101,7 +102,7 @@ impl LightBuffer {
     }
 
     /// The shadow grids of `lights` over `objects`.
-    pub fn new(objects: &[Object], lights: &[Light]) -> LightBuffer {
+    pub fn new(objects: &[Object], lights: &[PointLight]) -> LightBuffer {
         LightBuffer {
             lights: lights
                 .iter()

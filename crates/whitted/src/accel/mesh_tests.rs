@@ -6,9 +6,10 @@
 
 use super::tests::{object, Rng};
 use super::*;
+use crate::base::Color;
 use crate::mesh::{Mesh, Raw};
-use crate::shapes::{Frame, MeshRef, Triangle};
-use crate::texture::{Color, Texture};
+use crate::shapes::{MeshRef, Transform, Triangle};
+use crate::texture::Texture;
 use glam::DVec3;
 use proptest::prelude::*;
 
@@ -23,7 +24,7 @@ fn soup(n: usize, seed: u64) -> Mesh {
         }
         raw.triangles.push([3 * k, 3 * k + 1, 3 * k + 2]);
     }
-    Mesh::from_raw(raw, &Frame::IDENTITY, Some(crate::mesh::Shading::Flat)).unwrap()
+    Mesh::from_raw(raw, &Transform::IDENTITY, Some(crate::mesh::Shading::Flat)).unwrap()
 }
 
 fn scene(meshes: &[Arc<Mesh>], kt: f64) -> (Vec<Object>, Accel) {

@@ -4,10 +4,10 @@
 
 use super::shadow_cache::{self, Blocker};
 use super::{Accel, ShapePrim, CROSSINGS_MAX, GLASS_LINEAR_MAX};
+use crate::base::Color;
 use crate::object::Object;
 use crate::optics::Ray;
 use crate::shapes::Shape;
-use crate::texture::Color;
 use arrayvec::ArrayVec;
 use glam::DVec3;
 

@@ -79,10 +79,10 @@ mod tests {
     use super::super::tests::{bits, scene, Rng};
     use super::super::Accel;
     use super::*;
+    use crate::base::Color;
     use crate::optics::Ray;
     use crate::shading;
     use crate::shapes::Sphere;
-    use crate::texture::Color;
     use glam::DVec3;
 
     fn sphere_prim(index: u32) -> Prim {

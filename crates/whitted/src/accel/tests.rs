@@ -1,12 +1,12 @@
 //! The accelerator against the linear scans, bit for bit.
 
 use super::*;
+use crate::base::Color;
 use crate::bump::Bump;
 use crate::object::Material;
 use crate::shading;
 use crate::shapes::{Cone, SmoothTriangle, Triangle};
 use crate::shapes::{Plane, Quadric, Sphere};
-use crate::texture::Color;
 use crate::texture::Texture;
 use glam::DVec3;
 

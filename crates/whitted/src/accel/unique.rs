@@ -50,7 +50,7 @@ fn key(bits: &[[u64; 3]; 3]) -> u64 {
 mod tests {
     use super::*;
     use crate::mesh::Raw;
-    use crate::shapes::Frame;
+    use crate::shapes::Transform;
     use glam::DVec3;
 
     #[test]
@@ -72,7 +72,7 @@ mod tests {
             ..Raw::default()
         };
         let flat = Some(crate::mesh::Shading::Flat);
-        let mesh = Mesh::from_raw(raw, &Frame::IDENTITY, flat).unwrap();
+        let mesh = Mesh::from_raw(raw, &Transform::IDENTITY, flat).unwrap();
         assert_eq!(super::triangles(&mesh), vec![0, 2, 4]);
     }
 }

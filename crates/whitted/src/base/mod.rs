@@ -10,4 +10,4 @@ pub mod srgb;
 
 pub use color::Color;
 pub use image::{to_byte, to_rgb, Frame};
-pub use srgb::Colour;
+pub use srgb::Transfer;

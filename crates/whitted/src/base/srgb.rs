@@ -3,8 +3,8 @@
 //!
 //! - `decode` is the sRGB EOTF: v/12.92 up to 0.04045, else ((v + 0.055)/1.055)^2.4;
 //!   `encode` its inverse. Both extend past 1 along the same curve and are odd below 0.
-//! - `Colour::Srgb` (the default) stores the report's display values decoded to linear
-//!   light; `Colour::Linear` stores them as they are. `ATTRIBUTE` names the EXR header
+//! - `Transfer::Srgb` (the default) stores the report's display values decoded to linear
+//!   light; `Transfer::Linear` stores them as they are. `ATTRIBUTE` names the EXR header
 //!   attribute that records which.
 
 use super::to_byte;
@@ -12,7 +12,7 @@ use super::to_byte;
 /// How an EXR stores the tracer's colours (`[output] colour`, `raytrace --colour`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Serialize)]
 #[serde(rename_all = "lowercase")]
-pub enum Colour {
+pub enum Transfer {
     /// The display values decoded to linear light with the sRGB EOTF (the default): a
     /// compositor's sRGB view shows the PNG's look.
     #[default]
@@ -25,15 +25,15 @@ pub enum Colour {
 /// without it was written before it existed, with the values as they are.
 pub const ATTRIBUTE: &str = "whitted:colour";
 
-impl Colour {
+impl Transfer {
     /// The names a manifest or the command line accepts.
     pub const NAMES: [&'static str; 2] = ["srgb", "linear"];
 
     /// The encoding a name gives.
-    pub fn from_name(name: &str) -> Option<Colour> {
+    pub fn from_name(name: &str) -> Option<Transfer> {
         match name {
-            "srgb" => Some(Colour::Srgb),
-            "linear" => Some(Colour::Linear),
+            "srgb" => Some(Transfer::Srgb),
+            "linear" => Some(Transfer::Linear),
             _ => None,
         }
     }
@@ -41,24 +41,24 @@ impl Colour {
     /// Its name, as the header attribute records it.
     pub fn name(self) -> &'static str {
         match self {
-            Colour::Srgb => "srgb",
-            Colour::Linear => "linear",
+            Transfer::Srgb => "srgb",
+            Transfer::Linear => "linear",
         }
     }
 
     /// The value a file stores for the display value `v`.
     pub fn store(self, v: f64) -> f64 {
         match self {
-            Colour::Srgb => decode(v),
-            Colour::Linear => v,
+            Transfer::Srgb => decode(v),
+            Transfer::Linear => v,
         }
     }
 
     /// The display value a stored value `v` stands for.
     pub fn shown(self, v: f64) -> f64 {
         match self {
-            Colour::Srgb => encode(v),
-            Colour::Linear => v,
+            Transfer::Srgb => encode(v),
+            Transfer::Linear => v,
         }
     }
 

@@ -13,7 +13,7 @@
 
 pub mod packet;
 
-use crate::base::Colour;
+use crate::base::Transfer;
 use std::io::Write;
 use std::net::TcpStream;
 #[cfg(feature = "display")]
@@ -56,7 +56,7 @@ pub struct Tev {
     addr: String,
     conn: Mutex<Option<TcpStream>>,
     warn: Box<dyn Fn(&str) + Send + Sync>,
-    colour: Colour,
+    colour: Transfer,
 }
 
 impl Tev {
@@ -88,13 +88,13 @@ impl Tev {
             addr: addr.into(),
             conn: Mutex::new(conn),
             warn,
-            colour: Colour::Srgb,
+            colour: Transfer::Srgb,
         }
     }
 
     /// This connection sending floats in `colour` (by default `Srgb`: the bytes' display
     /// values decoded to linear light, what an EXR frame holds; `packet`).
-    pub fn with_colour(mut self, colour: Colour) -> Tev {
+    pub fn with_colour(mut self, colour: Transfer) -> Tev {
         self.colour = colour;
         self
     }

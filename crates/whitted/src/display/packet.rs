@@ -19,9 +19,9 @@
 //!
 //! **Bytes to floats**: tev takes floats in linear light and shows them through the sRGB
 //! curve, so it receives what an EXR frame holds (SPEC §12): a frame's byte b is sent as
-//! `Colour::store(b/255)`, by default the display value decoded with the sRGB EOTF (tev's
+//! `Transfer::store(b/255)`, by default the display value decoded with the sRGB EOTF (tev's
 //! sRGB view then shows the PNG's byte), or b/255 under `colour = "linear"`. The byte is
-//! recovered exactly as `Colour::byte(f)` (round(255·encode(f))): `byte_to_float` and
+//! recovered exactly as `Transfer::byte(f)` (round(255·encode(f))): `byte_to_float` and
 //! `float_to_byte` below, tested for all 256 values in both encodings.
 
 /// tev's packet types (`IpcPacket::EType`).
@@ -34,17 +34,17 @@ pub mod kind {
     pub const UPDATE_IMAGE_V3: u8 = 6;
 }
 
-use crate::base::Colour;
+use crate::base::Transfer;
 
 /// The float tev receives for byte `b` under `colour`: `colour.store(b/255)`.
-pub fn byte_to_float(b: u8, colour: Colour) -> f32 {
+pub fn byte_to_float(b: u8, colour: Transfer) -> f32 {
     colour.store(f64::from(b) / 255.0) as f32
 }
 
 /// The byte a float received from `byte_to_float` came from (what tev's sRGB view shows
 /// of it; only the tests need it here).
 #[cfg(test)]
-fn float_to_byte(f: f32, colour: Colour) -> u8 {
+fn float_to_byte(f: f32, colour: Transfer) -> u8 {
     colour.byte(f64::from(f))
 }
 
@@ -108,7 +108,7 @@ pub fn update_rgb(
     name: &str,
     (x, y, width, height): (u32, u32, u32, u32),
     rgb: &[u8],
-    colour: Colour,
+    colour: Transfer,
 ) -> Vec<u8> {
     let mut p = Out::new(kind::UPDATE_IMAGE_V3).bool(false).str(name).i32(3);
     for c in ["R", "G", "B"] {
@@ -144,7 +144,7 @@ mod tests {
 
     #[test]
     fn every_byte_survives_the_float() {
-        for colour in [Colour::Srgb, Colour::Linear] {
+        for colour in [Transfer::Srgb, Transfer::Linear] {
             for b in 0..=255u8 {
                 assert_eq!(float_to_byte(byte_to_float(b, colour), colour), b);
             }
@@ -152,8 +152,8 @@ mod tests {
             assert_eq!(byte_to_float(0, colour), 0.0);
         }
         // 51/255 = 0.2 in f32; decoded, ((0.2 + 0.055)/1.055)^2.4 = 0.0331048.
-        assert_eq!(byte_to_float(51, Colour::Linear), 0.2f32);
-        assert!((byte_to_float(51, Colour::Srgb) - 0.033_104_8).abs() < 1e-7);
+        assert_eq!(byte_to_float(51, Transfer::Linear), 0.2f32);
+        assert!((byte_to_float(51, Transfer::Srgb) - 0.033_104_8).abs() < 1e-7);
     }
 
     #[test]
@@ -169,7 +169,7 @@ mod tests {
 
     #[test]
     fn update_image_layout() {
-        let p = update_rgb("i", (1, 2, 1, 1), &[0, 51, 255], Colour::Linear);
+        let p = update_rgb("i", (1, 2, 1, 1), &[0, 51, 255], Transfer::Linear);
         // 4 size + 1 type + 1 bool + 2 name + 4 n + 6 names + 16 rect + 48 offsets and
         // strides + 12 data.
         assert_eq!(p.len(), 94);

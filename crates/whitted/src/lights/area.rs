@@ -7,7 +7,7 @@
 use super::point::towards;
 use super::Occluders;
 use super::{Incident, LightSource};
-use crate::texture::Color;
+use crate::base::Color;
 use glam::DVec3;
 
 /// A rectangle of shadow points lighting as its centre.

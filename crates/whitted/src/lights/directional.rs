@@ -2,7 +2,7 @@
 //! from infinitely far. L = −D/|D| everywhere, and shadow rays are unbounded.
 
 use super::{Incident, LightSource};
-use crate::texture::Color;
+use crate::base::Color;
 use glam::DVec3;
 
 /// Light along a direction, from infinitely far.

@@ -23,11 +23,11 @@ pub use area::Area;
 pub use directional::Directional;
 pub use fade::Fade;
 pub use occluders::Occluders;
-pub use point::Light;
+pub use point::PointLight;
 pub use spot::Spot;
 
+use crate::base::Color;
 use crate::scene::ext::{Extension, LightKind};
-use crate::texture::Color;
 use glam::DVec3;
 
 /// The light arriving at a point.
@@ -74,7 +74,7 @@ pub trait LightSource {
 #[derive(Clone, Debug, PartialEq)]
 pub enum Kind {
     /// `point`.
-    Point(Light),
+    Point(PointLight),
     /// `directional`.
     Directional(Directional),
     /// `spot`.
@@ -142,7 +142,7 @@ pub fn build(ext: &Extension) -> Vec<SceneLight> {
         .map(|r| {
             let (c, i) = (r.color, r.intensity);
             let kind = match r.kind {
-                LightKind::Point { position } => Kind::Point(Light {
+                LightKind::Point { position } => Kind::Point(PointLight {
                     position,
                     color: c,
                     intensity: i,

@@ -4,12 +4,12 @@
 
 use super::Occluders;
 use super::{Incident, LightSource};
-use crate::texture::Color;
+use crate::base::Color;
 use glam::DVec3;
 
 /// An omnidirectional point light.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Light {
+pub struct PointLight {
     /// Where the light is.
     pub position: DVec3,
     /// Its colour, each component in 0..1.
@@ -35,7 +35,7 @@ pub fn towards(position: DVec3, p: DVec3, intensity: f64) -> Option<Incident> {
     })
 }
 
-impl LightSource for Light {
+impl LightSource for PointLight {
     #[inline(always)]
     fn color(&self) -> Color {
         self.color
@@ -67,7 +67,7 @@ mod tests {
 
     #[test]
     fn direction_and_distance_by_hand() {
-        let l = Light {
+        let l = PointLight {
             position: DVec3::new(3.0, 4.0, 0.0),
             color: Color::ONE,
             intensity: 2.0,

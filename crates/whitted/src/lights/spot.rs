@@ -6,7 +6,7 @@
 
 use super::point::towards;
 use super::{Incident, LightSource};
-use crate::texture::Color;
+use crate::base::Color;
 use glam::DVec3;
 
 /// A spotlight, with its fade factor (`fade::Fade`) folded in by `lights::build`.

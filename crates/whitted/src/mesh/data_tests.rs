@@ -3,9 +3,10 @@
 //! sees at a hit, by hand; and hostile files, each refused with its cause or warned about.
 
 use super::*;
+use crate::base::Color;
 use crate::object::Highlight;
-use crate::shapes::Frame;
-use crate::texture::{Color, Texture};
+use crate::shapes::Transform;
+use crate::texture::Texture;
 use glam::DVec3;
 
 fn write(dir: &tempfile::TempDir, name: &str, bytes: &[u8]) -> std::path::PathBuf {
@@ -16,7 +17,7 @@ fn write(dir: &tempfile::TempDir, name: &str, bytes: &[u8]) -> std::path::PathBu
 
 fn load(dir: &tempfile::TempDir, name: &str, bytes: &[u8]) -> Result<Mesh, String> {
     let p = write(dir, name, bytes);
-    Mesh::load(&p, &Frame::IDENTITY, Some(Shading::Flat)).map_err(|e| {
+    Mesh::load(&p, &Transform::IDENTITY, Some(Shading::Flat)).map_err(|e| {
         e.to_string()
             .replace(&*dir.path().display().to_string(), "DIR")
     })

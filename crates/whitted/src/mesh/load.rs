@@ -7,7 +7,7 @@
 
 use super::{normals, Mesh, MeshError, Pivot, Placing, Raw, Shading, DEFAULT_SMOOTH};
 use crate::limits::MAX_MESH_BYTES;
-use crate::shapes::{Frame, Triangle};
+use crate::shapes::{Transform, Triangle};
 use glam::DVec3;
 use std::path::Path;
 
@@ -48,14 +48,18 @@ pub fn place(raw: &mut Raw, placing: &Placing) -> Result<(), String> {
 impl Mesh {
     /// Reads the mesh file at `path`, places it by `frame` and shades it as `shading` asks
     /// (none: the file's normals, else `smooth 30`).
-    pub fn load(path: &Path, frame: &Frame, shading: Option<Shading>) -> Result<Mesh, MeshError> {
+    pub fn load(
+        path: &Path,
+        frame: &Transform,
+        shading: Option<Shading>,
+    ) -> Result<Mesh, MeshError> {
         Mesh::load_placed(path, frame, shading, &Placing::default())
     }
 
     /// `load`, the file's vertices first fitted and pivoted as `placing` asks.
     pub fn load_placed(
         path: &Path,
-        frame: &Frame,
+        frame: &Transform,
         shading: Option<Shading>,
         placing: &Placing,
     ) -> Result<Mesh, MeshError> {
@@ -98,7 +102,7 @@ impl Mesh {
     /// The mesh of `raw` placed by `frame`, its zero-area triangles dropped, its normals
     /// as `shading` asks (computed in the world, after the frame); `None` when no
     /// triangle is left.
-    pub fn from_raw(raw: Raw, frame: &Frame, shading: Option<Shading>) -> Option<Mesh> {
+    pub fn from_raw(raw: Raw, frame: &Transform, shading: Option<Shading>) -> Option<Mesh> {
         let vertices: Vec<DVec3> = raw
             .positions
             .iter()

@@ -2,7 +2,7 @@
 //! smooth normal by hand.
 
 use super::*;
-use crate::shapes::Frame;
+use crate::shapes::Transform;
 use glam::DVec3;
 
 fn write(dir: &tempfile::TempDir, name: &str, bytes: &[u8]) -> std::path::PathBuf {
@@ -20,7 +20,7 @@ fn obj_quad_is_fanned_and_smooth() {
     let dir = tempfile::tempdir().unwrap();
     let m = Mesh::load(
         &write(&dir, "q.obj", QUAD_OBJ.as_bytes()),
-        &Frame::IDENTITY,
+        &Transform::IDENTITY,
         None,
     )
     .unwrap();
@@ -36,10 +36,10 @@ fn obj_without_normals_is_smooth_30_unless_flat() {
     // One face: smooth 30 gives each corner the face's normal; `flat` keeps none.
     let src = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
     let p = write(&dir, "t.OBJ", src.as_bytes());
-    let m = Mesh::load(&p, &Frame::IDENTITY, None).unwrap();
+    let m = Mesh::load(&p, &Transform::IDENTITY, None).unwrap();
     assert_eq!(m.normals, vec![DVec3::Z; 3]);
     assert_eq!(m.shape(0).normal(DVec3::new(0.2, 0.2, 0.0)), DVec3::Z);
-    let m = Mesh::load(&p, &Frame::IDENTITY, Some(Shading::Flat)).unwrap();
+    let m = Mesh::load(&p, &Transform::IDENTITY, Some(Shading::Flat)).unwrap();
     assert!(m.normals.is_empty());
     // A crease of 40°: split at 30 (two copies of the edge's vertices), joined at 45.
     let (s, c) = 40f64.to_radians().sin_cos();
@@ -48,9 +48,9 @@ fn obj_without_normals_is_smooth_30_unless_flat() {
         -c, s
     );
     let p = write(&dir, "crease.obj", src.as_bytes());
-    let m = Mesh::load(&p, &Frame::IDENTITY, None).unwrap();
+    let m = Mesh::load(&p, &Transform::IDENTITY, None).unwrap();
     assert_eq!(m.vertices.len(), 6);
-    let m = Mesh::load(&p, &Frame::IDENTITY, Some(Shading::Smooth(45.0))).unwrap();
+    let m = Mesh::load(&p, &Transform::IDENTITY, Some(Shading::Smooth(45.0))).unwrap();
     assert_eq!(m.vertices.len(), 4);
 }
 
@@ -62,7 +62,7 @@ fn smooth_normal_by_hand() {
     let dir = tempfile::tempdir().unwrap();
     let m = Mesh::load(
         &write(&dir, "q.obj", QUAD_OBJ.as_bytes()),
-        &Frame::IDENTITY,
+        &Transform::IDENTITY,
         None,
     )
     .unwrap();
@@ -78,7 +78,7 @@ fn smooth_normal_by_hand() {
 #[test]
 fn frame_moves_vertices_and_normals() {
     let dir = tempfile::tempdir().unwrap();
-    let f = Frame::new(
+    let f = Transform::new(
         DVec3::new(2.0, 1.0, 1.0),
         DVec3::ZERO,
         DVec3::new(0.0, 0.0, 5.0),
@@ -99,7 +99,7 @@ property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_he
     let dir = tempfile::tempdir().unwrap();
     let m = Mesh::load(
         &write(&dir, "p.ply", src.as_bytes()),
-        &Frame::IDENTITY,
+        &Transform::IDENTITY,
         None,
     )
     .unwrap();
@@ -123,7 +123,7 @@ element face 1\nproperty list uchar uint vertex_indices\nend_header\n"
     b.push(3);
     [0u32, 1, 2].iter().for_each(|i| b.extend(i.to_le_bytes()));
     let dir = tempfile::tempdir().unwrap();
-    let m = Mesh::load(&write(&dir, "b.ply", &b), &Frame::IDENTITY, None).unwrap();
+    let m = Mesh::load(&write(&dir, "b.ply", &b), &Transform::IDENTITY, None).unwrap();
     assert_eq!(m.triangles, vec![[0, 1, 2]]);
     assert_eq!(m.normals, vec![DVec3::Z; 3]);
 }
@@ -131,7 +131,7 @@ element face 1\nproperty list uchar uint vertex_indices\nend_header\n"
 fn error(name: &str, bytes: &[u8]) -> String {
     let dir = tempfile::tempdir().unwrap();
     let p = write(&dir, name, bytes);
-    Mesh::load(&p, &Frame::IDENTITY, None)
+    Mesh::load(&p, &Transform::IDENTITY, None)
         .unwrap_err()
         .to_string()
         .replace(&*dir.path().display().to_string(), "DIR")
@@ -167,7 +167,7 @@ end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n",
     let e = error("m.stl", b"solid\n");
     assert!(e.contains("unknown mesh format"), "{e}");
     let dir = tempfile::tempdir().unwrap();
-    let e = Mesh::load(&dir.path().join("gone.obj"), &Frame::IDENTITY, None).unwrap_err();
+    let e = Mesh::load(&dir.path().join("gone.obj"), &Transform::IDENTITY, None).unwrap_err();
     assert!(
         e.to_string()
             .contains("gone.obj: cannot read the mesh file"),

@@ -1,12 +1,12 @@
 //! How the tracer's colours are stored in float frames (SPEC §12): the report's values are
 //! display values (its PNG byte is round(255·v), shown as sRGB), so an EXR's beauty holds
-//! them decoded to linear light with the sRGB transfer function (`Colour::Srgb`, the
-//! default), or as they are (`Colour::Linear`, `[output] colour = "linear"`).
+//! them decoded to linear light with the sRGB transfer function (`Transfer::Srgb`, the
+//! default), or as they are (`Transfer::Linear`, `[output] colour = "linear"`).
 //!
 //! - `decode` is the sRGB EOTF (IEC 61966-2-1): v/12.92 up to 0.04045, else
 //!   ((v + 0.055)/1.055)^2.4; `encode` its inverse. Both extend past 1 along the same
 //!   curve (the beauty is not clamped) and are odd below 0.
-//! - `Colour::store` / `Colour::shown`: a value as a file stores it, and a stored value as
+//! - `Transfer::store` / `Transfer::shown`: a value as a file stores it, and a stored value as
 //!   the display value it stands for (what the 8-bit formats, `check` and the video take).
 //! - `keeping_byte`: the stored half (or float) nearest the exact one whose display
 //!   value's clamp-and-round is the tracer's byte, so an EXR frame converted to sRGB gives
@@ -17,14 +17,13 @@
 //!   is decoded like a colour; depth, position, normal and Cryptomatte are not colours
 //!   and stay as they are.
 
+use crate::base::srgb::{decode, Transfer};
 use crate::base::{to_byte, Color};
 use crate::passes::{Channel, Pass};
-// The curve and the two encodings live on the ground floor (`crate::base::srgb`).
-pub use crate::base::srgb::{decode, encode, Colour, ATTRIBUTE};
 use exr::prelude::f16;
 
-/// The float nearest `colour.store(c)` whose byte (`Colour::byte`) is `c`'s.
-pub fn float_keeping_byte(c: f64, colour: Colour) -> f32 {
+/// The float nearest `colour.store(c)` whose byte (`Transfer::byte`) is `c`'s.
+pub fn float_keeping_byte(c: f64, colour: Transfer) -> f32 {
     let (want, exact) = (to_byte(c), colour.store(c));
     let mut v = exact as f32;
     for _ in 0..8 {
@@ -42,7 +41,7 @@ pub fn float_keeping_byte(c: f64, colour: Colour) -> f32 {
 
 /// The half nearest `colour.store(c)` whose byte is `c`'s (halves are at least 8 to a
 /// byte's width of 1/255 below 1, and finer in linear light, so there always is one).
-pub fn half_keeping_byte(c: f64, colour: Colour) -> f16 {
+pub fn half_keeping_byte(c: f64, colour: Transfer) -> f16 {
     let (want, exact) = (to_byte(c), colour.store(c));
     let mut v = f16::from_f64(exact);
     for _ in 0..8 {
@@ -65,8 +64,8 @@ pub fn half_keeping_byte(c: f64, colour: Colour) -> f16 {
 
 /// The light split's and the albedo's channels of a frame whose display beauty is
 /// `beauty`, made to follow the beauty's encoding `colour` (see the module's text).
-pub fn follow_beauty(channels: &mut [Channel], beauty: &[Color], colour: Colour) {
-    if colour == Colour::Linear {
+pub fn follow_beauty(channels: &mut [Channel], beauty: &[Color], colour: Transfer) {
+    if colour == Transfer::Linear {
         return;
     }
     let light: Vec<String> = Pass::LIGHT.iter().flat_map(|p| p.channels()).collect();
@@ -105,7 +104,7 @@ mod tests {
 
     #[test]
     fn stored_values_keep_their_byte_in_both_encodings() {
-        for colour in [Colour::Srgb, Colour::Linear] {
+        for colour in [Transfer::Srgb, Transfer::Linear] {
             for k in 0..=2550 {
                 let c = (k as f64 + 0.5) / 2550.0 * 1.1 - 0.05;
                 for c in [
@@ -125,7 +124,7 @@ mod tests {
                 }
             }
         }
-        assert_eq!(half_keeping_byte(3.0, Colour::Linear).to_f64(), 3.0);
+        assert_eq!(half_keeping_byte(3.0, Transfer::Linear).to_f64(), 3.0);
     }
 
     #[test]
@@ -145,7 +144,7 @@ mod tests {
             ch("N.X", 0.5),
         ];
         let beauty = [Color::new(0.5, 0.0, 1.0)];
-        follow_beauty(&mut chans, &beauty, Colour::Srgb);
+        follow_beauty(&mut chans, &beauty, Transfer::Srgb);
         let sum = f64::from(chans[1].values[0]) + f64::from(chans[2].values[0]);
         assert!((sum - 0.214_041_14).abs() < 1e-7, "{sum}");
         assert!((f64::from(chans[1].values[0]) - 0.1 * 0.428_082_28).abs() < 1e-7);
@@ -153,7 +152,7 @@ mod tests {
         assert!((f64::from(chans[4].values[0]) - 0.214_041_14).abs() < 1e-7);
         assert_eq!((chans[0].values[0], chans[5].values[0]), (0.5, 0.5));
         let before = chans.clone();
-        follow_beauty(&mut chans, &beauty, Colour::Linear);
+        follow_beauty(&mut chans, &beauty, Transfer::Linear);
         assert_eq!(chans, before);
     }
 }

@@ -22,8 +22,9 @@
 //!   attributes sorted by name (the crate keeps them in a hash map), so the same frame is
 //!   the same bytes on every run.
 
-use super::colour::{self, float_keeping_byte, half_keeping_byte, Colour};
+use super::colour::{self, float_keeping_byte, half_keeping_byte};
 use super::{ExrCompression, ExrDepth, ExrOptions, OutputError};
+use crate::base::srgb::{Transfer, ATTRIBUTE};
 use crate::passes::{crypto, Layers};
 use exr::meta::attribute::Chromaticities;
 use exr::prelude::*;
@@ -99,7 +100,7 @@ pub(super) fn encode(
     for (k, v) in meta {
         put(k, v);
     }
-    put(colour::ATTRIBUTE, encoding.name());
+    put(ATTRIBUTE, encoding.name());
     if has_alpha {
         put(ALPHA_ATTRIBUTE, ALPHA_MEANING);
     }
@@ -194,14 +195,14 @@ pub(super) fn header_size(read: impl std::io::Read) -> Result<(u32, u32), String
 }
 
 /// A beauty as an EXR file stores it: width, height, RGB rows top to bottom, encoding.
-pub(super) type Stored = (u32, u32, Vec<[f32; 3]>, Colour);
+pub(super) type Stored = (u32, u32, Vec<[f32; 3]>, Transfer);
 
 /// The beauty of the EXR file `bytes` as stored (RGB, rows top to bottom), with its size
 /// and its encoding: its `whitted:colour`, or `Linear` when the header has no such
 /// attribute (frames written before it held the values as they are).
 pub(super) fn read_beauty(bytes: &[u8]) -> Result<Stored, String> {
     let stored = super::exr_read::read_rgb_layer(bytes)?;
-    let colour = stored.colour.unwrap_or(Colour::Linear);
+    let colour = stored.colour.unwrap_or(Transfer::Linear);
     Ok((stored.width, stored.height, stored.pixels, colour))
 }
 

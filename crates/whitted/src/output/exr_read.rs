@@ -4,7 +4,7 @@
 //! (`output::read`) and image textures (`texture::load`) all read through here; each
 //! caller bounds the file's bytes and its header's size before it asks.
 
-use crate::base::srgb::{Colour, ATTRIBUTE};
+use crate::base::srgb::{Transfer, ATTRIBUTE};
 use exr::prelude::{read, AttributeValue, ReadChannels, ReadLayers, Text};
 
 /// An EXR's picture as stored: width, height, RGB rows top to bottom, and its
@@ -18,7 +18,7 @@ pub struct StoredRgb {
     /// The stored values, RGB, rows top to bottom.
     pub pixels: Vec<[f32; 3]>,
     /// The encoding its header names, if it names one.
-    pub colour: Option<Colour>,
+    pub colour: Option<Transfer>,
 }
 
 /// The picture of the EXR file `bytes` (see the module's text), or why it has none.
@@ -44,7 +44,8 @@ pub fn read_rgb_layer(bytes: &[u8]) -> Result<StoredRgb, String> {
     };
     let colour = match layer.attributes.other.get(&Text::from(ATTRIBUTE)) {
         Some(AttributeValue::Text(t)) => Some(
-            Colour::from_name(&t.to_string()).ok_or_else(|| format!("unknown {ATTRIBUTE} {t}"))?,
+            Transfer::from_name(&t.to_string())
+                .ok_or_else(|| format!("unknown {ATTRIBUTE} {t}"))?,
         ),
         _ => None,
     };

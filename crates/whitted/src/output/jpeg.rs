@@ -2,7 +2,7 @@
 //! segment) of `keyword: text` lines (UTF-8) right after the start marker.
 
 use super::OutputError;
-use crate::render::Frame;
+use crate::base::Frame;
 use image::codecs::jpeg::JpegEncoder;
 use image::{ExtendedColorType, ImageEncoder};
 use std::io::Write;

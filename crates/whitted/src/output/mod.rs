@@ -39,8 +39,8 @@ mod read;
 
 pub use read::{beauty_bytes, exr_size, read_beauty, read_rgb, ReadError};
 
+use crate::base::Frame;
 use crate::passes::{Layers, PassSet};
-use crate::render::Frame;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
@@ -76,7 +76,7 @@ pub struct ExrOptions {
     /// The passes beside the beauty.
     pub passes: PassSet,
     /// How the beauty's colours are stored (`[output] colour`).
-    pub colour: crate::base::Colour,
+    pub colour: crate::base::Transfer,
 }
 
 /// The beauty's sample type in an EXR frame.
@@ -314,9 +314,7 @@ pub fn encode_with(
                 beauty: frame
                     .pixels
                     .chunks_exact(3)
-                    .map(|p| {
-                        crate::texture::Color::new(p[0].into(), p[1].into(), p[2].into()) / 255.0
-                    })
+                    .map(|p| crate::base::Color::new(p[0].into(), p[1].into(), p[2].into()) / 255.0)
                     .collect(),
                 channels: Vec::new(),
                 crypto: Vec::new(),

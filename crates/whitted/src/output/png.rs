@@ -6,7 +6,7 @@
 //! so a manifest or scene called `日本.toml` or `сцена😀.txt` is recorded, not refused.
 
 use super::OutputError;
-use crate::render::Frame;
+use crate::base::Frame;
 use std::io::Write;
 
 /// Whether `text` fits a `tEXt` chunk (every character Latin-1).

@@ -2,7 +2,7 @@
 //! header, between the magic number and the size.
 
 use super::OutputError;
-use crate::render::Frame;
+use crate::base::Frame;
 use std::io::Write;
 
 /// Writes the P6 header, its comments, then the pixels.

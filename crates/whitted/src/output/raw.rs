@@ -2,7 +2,7 @@
 //! so no metadata (an animation keeps a RAW frame's record beside it).
 
 use super::OutputError;
-use crate::render::Frame;
+use crate::base::Frame;
 use std::io::Write;
 
 /// Writes the pixels as they are.

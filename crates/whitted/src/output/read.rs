@@ -12,9 +12,9 @@
 //! The file is read whole only when it is a regular file of at most `MAX_FRAME_BYTES`.
 
 use super::ImageFormat;
+use crate::base::to_byte;
 use crate::input::read_regular;
 use crate::limits::MAX_FRAME_BYTES;
-use crate::render::to_byte;
 use std::path::Path;
 
 /// Why a frame file gives no picture of the size asked.
@@ -142,7 +142,7 @@ fn read_stored(
     path: &Path,
     width: u32,
     height: u32,
-) -> Result<(Vec<[f32; 3]>, crate::base::Colour), ReadError> {
+) -> Result<(Vec<[f32; 3]>, crate::base::Transfer), ReadError> {
     let bytes = read_regular(path, MAX_FRAME_BYTES, "frame")?;
     // The header first: a picture of another size is never decoded (an 8192² reference
     // would take gigabytes).
@@ -175,7 +175,7 @@ pub fn beauty_bytes(beauty: &[[f32; 3]]) -> Vec<u8> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::render::Frame;
+    use crate::base::Frame;
 
     fn written(format: ImageFormat, frame: &Frame) -> (tempfile::TempDir, std::path::PathBuf) {
         let dir = tempfile::tempdir().unwrap();

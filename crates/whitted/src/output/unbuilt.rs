@@ -7,7 +7,7 @@
 pub mod exr {
     //! OpenEXR without the `exr` feature: every call refuses.
     use super::super::{ExrOptions, OutputError};
-    use crate::base::Colour;
+    use crate::base::Transfer;
     use crate::passes::Layers;
 
     /// What a read says.
@@ -29,7 +29,7 @@ pub mod exr {
         Err(MISSING.into())
     }
 
-    pub(in crate::output) type Stored = (u32, u32, Vec<[f32; 3]>, Colour);
+    pub(in crate::output) type Stored = (u32, u32, Vec<[f32; 3]>, Transfer);
 
     pub(in crate::output) fn read_beauty(_bytes: &[u8]) -> Result<Stored, String> {
         Err(MISSING.into())

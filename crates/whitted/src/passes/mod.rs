@@ -22,7 +22,7 @@ pub mod crypto;
 pub mod record;
 pub mod visible;
 
-use crate::texture::Color;
+use crate::base::Color;
 use std::fmt;
 
 /// One pass a frame can carry besides its beauty.
@@ -221,9 +221,9 @@ impl Layers {
     }
 
     /// The beauty through the clamp-and-round of SPEC §2: the 8-bit picture.
-    pub fn to_frame(&self) -> crate::render::Frame {
+    pub fn to_frame(&self) -> crate::base::Frame {
         let beauty = self.beauty.iter().copied();
-        crate::render::Frame::from_colors(beauty, self.width, self.height)
+        crate::base::Frame::from_colors(beauty, self.width, self.height)
     }
 }
 

@@ -14,8 +14,8 @@
 
 use super::crypto::{self, Ranked};
 use super::{CameraMatrices, Channel, CryptoHeader, Layers, Pass, PassSet};
+use crate::base::Color;
 use crate::scene::Scene;
-use crate::texture::Color;
 use crate::trace::Record;
 use glam::DVec3;
 

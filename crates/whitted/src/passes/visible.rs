@@ -12,7 +12,7 @@
 //!   times its coverage (each name its own flat colour, edges blended).
 
 use super::{Layers, Pass};
-use crate::render::{to_byte, Frame};
+use crate::base::{to_byte, Frame};
 
 /// The picture of `pass` of `layers`; `None` when the layers do not carry it.
 pub fn picture(layers: &Layers, pass: Pass) -> Option<Frame> {
@@ -78,7 +78,7 @@ mod tests {
         Layers {
             width: 3,
             height: 1,
-            beauty: vec![crate::texture::Color::ZERO; 3],
+            beauty: vec![crate::base::Color::ZERO; 3],
             channels,
             crypto: vec![],
             camera: None,

@@ -2,9 +2,10 @@
 //! average of the four rays through its corners, each clamped to 0..1 first, as
 //! supersamples are.
 
-use super::{par_rows, Frame};
+use super::par_rows;
+use crate::base::Color;
+use crate::base::Frame;
 use crate::camera::Camera;
-use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 
 /// A `width` × `height` picture whose pixels average the four of the

@@ -141,8 +141,8 @@ pub fn camera_matrices(camera: &Camera) -> CameraMatrices {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::base::Color;
     use crate::render::render;
-    use crate::texture::Color;
 
     const SCENE: &str = "8 6  0 1 6  0 0 0  1 20  2 1 0 1\n\
         1 0 0 0  1 1 0 0  0.5 0.3 0.2 1.5 0 0\n\

@@ -10,10 +10,10 @@
 //! ray's colour as it was (a scene without `focus` keeps its bytes).
 
 use crate::accel::Hint;
+use crate::base::Color;
 use crate::camera::thin_lens::ThinLens;
 use crate::camera::Camera;
 use crate::optics::Ray;
-use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 
 /// The camera of a frame and the lens the scene puts on it, if any.

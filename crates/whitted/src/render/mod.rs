@@ -12,7 +12,7 @@ pub use lens::{rays_per_sample, Shot};
 pub use stream::render_observed;
 
 use crate::accel::TileView;
-use crate::base::Color;
+use crate::base::{to_rgb, Color, Frame};
 use crate::camera::Camera;
 use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
@@ -24,8 +24,6 @@ pub mod estimate;
 pub mod layers;
 pub use adaptive::{render_add_with, render_with, Adaptive, Antialias};
 pub use layers::{render_layers, render_layers_add};
-// The image values now live on the ground floor (`crate::base`).
-pub use crate::base::{to_byte, to_rgb, Frame};
 
 /// Renders the tracer's scene through `camera` at `width`×`height` with `samples`²
 /// samples per pixel. Runs on the current rayon pool. The `Tracer` is built once per

@@ -8,8 +8,9 @@
 //! render_observed(&tracer, &camera, w, h, samples, 16, &|y0, rows| tev.rows("img", w, y0, rows))
 //! ```
 
-use super::{draw_row, Frame};
+use super::draw_row;
 use crate::accel::TileView;
+use crate::base::Frame;
 use crate::camera::Camera;
 use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;

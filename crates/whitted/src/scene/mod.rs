@@ -28,10 +28,11 @@ mod spec;
 
 pub use error::{FileLoc, SceneError};
 
+use crate::base::Color;
 use crate::camera::{Camera, Lens};
 use crate::fog::Fog;
-use crate::object::{Light, Object};
-use crate::texture::Color;
+use crate::lights::PointLight;
+use crate::object::Object;
 use glam::DVec3;
 use std::path::Path;
 
@@ -57,7 +58,7 @@ pub struct Scene {
     /// what an animation track changes before rebuilding the shape.
     pub specs: Vec<ShapeSpec>,
     /// The point lights, in file order.
-    pub lights: Vec<Light>,
+    pub lights: Vec<PointLight>,
     /// What a ray that hits nothing sees: black for a Scene.txt, NFF's `b`.
     pub background: Color,
     /// A hit counts only past this distance: the report's 0.01 for a Scene.txt, a

@@ -1,11 +1,11 @@
 //! The shapes of SPEC §16 that live in an object frame: a box, a capped or open cylinder
 //! or cone, a disc, a torus, or a sphere that `scale` may have made an ellipsoid, each
-//! with its `Frame` (scale, rotate, translate). A ray is carried into object space with
+//! with its `Transform` (scale, rotate, translate). A ray is carried into object space with
 //! its direction renormalised (the object-space solvers take unit directions), and the
 //! roots are scaled back, so t is the world's; normals go back by the inverse transpose.
 //! Without modifiers the frame is the identity and is skipped.
 
-use super::{AaBox, Capped, Disc, Frame, Roots, Sphere, Torus};
+use super::{AaBox, Capped, Disc, Roots, Sphere, Torus, Transform};
 use crate::optics::Ray;
 use glam::DVec3;
 
@@ -70,13 +70,13 @@ pub struct Placed {
     /// The shape in object space.
     pub local: Local,
     /// Object space to world.
-    pub frame: Frame,
+    pub frame: Transform,
     identity: bool,
 }
 
 impl Placed {
     /// `local` moved by `frame`.
-    pub fn new(local: Local, frame: Frame) -> Placed {
+    pub fn new(local: Local, frame: Transform) -> Placed {
         Placed {
             local,
             frame,
@@ -129,7 +129,7 @@ mod tests {
         // The box [−1, 1]³ turned 45° about y and moved to x = 10: along x at z = 0 it
         // is entered at the corner x = 10 − √2 and left at 10 + √2.
         let b = AaBox::new(DVec3::splat(-1.0), DVec3::splat(1.0)).unwrap();
-        let f = Frame::new(
+        let f = Transform::new(
             DVec3::ONE,
             DVec3::new(0.0, 45.0, 0.0),
             DVec3::new(10.0, 0.0, 0.0),
@@ -154,7 +154,7 @@ mod tests {
         // The unit sphere stretched to 3 along x: along x from −10, in at 7, out at 13;
         // the normal at (0, 1, 0)·… of the top is +y; at (3, 0, 0) it is +x.
         let s = Sphere::new(DVec3::ZERO, 1.0);
-        let f = Frame::new(DVec3::new(3.0, 1.0, 1.0), DVec3::ZERO, DVec3::ZERO).unwrap();
+        let f = Transform::new(DVec3::new(3.0, 1.0, 1.0), DVec3::ZERO, DVec3::ZERO).unwrap();
         let p = Placed::new(Local::Sphere(s), f);
         let r = p.roots(&Ray::new(DVec3::new(-10.0, 0.0, 0.0), DVec3::X));
         assert!((r.as_slice()[0] - 7.0).abs() < 1e-12 && (r.as_slice()[1] - 13.0).abs() < 1e-12);

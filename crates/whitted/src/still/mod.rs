@@ -11,11 +11,12 @@
 mod request;
 pub use request::{Done, Job, Request, StillError};
 
+use crate::base::Frame;
 use crate::camera::{Camera, Lens};
 use crate::display::{Display, Tev};
 use crate::passes::{Layers, PassSet};
 use crate::render::estimate::{self, Enormous};
-use crate::render::{render_layers, render_observed, render_with, Antialias, Frame};
+use crate::render::{render_layers, render_observed, render_with, Antialias};
 use crate::scene::Scene;
 use crate::spd::{render_corners, Rules};
 use crate::trace::{RayCount, Tracer};

@@ -11,7 +11,7 @@
 //! ```
 
 use super::Still;
-use crate::base::Colour;
+use crate::base::Transfer;
 use crate::camera::{Lens, NonSquare};
 use crate::display::Display;
 use crate::exit::Outcome;
@@ -49,7 +49,7 @@ pub struct Request {
     /// The EXR's float depth.
     pub exr_depth: Option<ExrDepth>,
     /// How the EXR stores colours (`srgb`: display values decoded to linear light).
-    pub colour: Option<Colour>,
+    pub colour: Option<Transfer>,
     /// A live viewer the picture streams to while it is drawn.
     pub display: Option<Display>,
     /// The SPD's testing procedure (`--spd`): 512 × 512 from 513 × 513 corner rays.

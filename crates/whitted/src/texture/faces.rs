@@ -9,7 +9,7 @@
 //! shows the image's top row, as its sides do just below the edge; the bottom face the
 //! bottom row. Every other point keeps its (u, v) bit for bit.
 
-use super::map::MapKind;
+use super::map_kind::MapKind;
 use crate::shapes::{Local, Shape};
 use glam::DVec3;
 
@@ -133,11 +133,11 @@ fn flat(map: MapKind, shape: &Shape, p: DVec3) -> Option<Flat> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shapes::{AaBox, Capped, Frame, Placed, Plane};
+    use crate::shapes::{AaBox, Capped, Placed, Plane, Transform};
 
     fn boxed(lo: DVec3, hi: DVec3) -> Shape {
         let b = AaBox::new(lo, hi).unwrap();
-        Shape::Placed(Placed::new(Local::Box(b), Frame::IDENTITY))
+        Shape::Placed(Placed::new(Local::Box(b), Transform::IDENTITY))
     }
 
     #[test]
@@ -206,7 +206,7 @@ mod tests {
         // From (0,1,0) up 2: caps at s = 0 (always a boundary) and s = 2 (Size 1 and 2).
         let a = DVec3::Y;
         let cap = Capped::new(a, 0.5, DVec3::new(0.0, 3.0, 0.0), 0.5, true).unwrap();
-        let c = Shape::Placed(Placed::new(Local::Capped(cap), Frame::IDENTITY));
+        let c = Shape::Placed(Placed::new(Local::Capped(cap), Transform::IDENTITY));
         let top = DVec3::new(0.1, 3.0, 0.2);
         assert_eq!(
             settle(MapKind::Cylindrical, 2.0, &c, top, (0.7, 1.0)),

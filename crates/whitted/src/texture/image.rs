@@ -7,7 +7,8 @@
 //! - `bilinear` blends the four nearest pixel centres (centre of column i at u = (i+½)/W),
 //!   wrapping across the image's edges, as POV-Ray's `interpolate 2` does.
 
-use super::map::{self, MapKind};
+use super::map;
+use super::map_kind::MapKind;
 use super::Color;
 use crate::shapes::Shape;
 use glam::DVec3;

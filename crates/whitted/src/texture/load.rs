@@ -12,7 +12,7 @@
 
 use super::image::Pixels;
 #[cfg(feature = "exr")]
-use crate::base::srgb::{encode, Colour};
+use crate::base::srgb::{encode, Transfer};
 use crate::limits::{
     MAX_SCENE_TEXTURE_PIXELS, MAX_TEXTURE_BYTES, MAX_TEXTURE_PIXELS, MAX_TEXTURE_SIDE,
 };
@@ -125,7 +125,7 @@ fn exr_pixels(
     check(size.width() as u64, size.height() as u64)?;
     let stored = crate::output::exr_read::read_rgb_layer(bytes)?;
     // A texture without the attribute is linear light, as EXRs are (§12).
-    let raw = stored.colour == Some(Colour::Linear);
+    let raw = stored.colour == Some(Transfer::Linear);
     let shown = |v: f32| {
         let v = f64::from(v);
         let v = if raw { v } else { encode(v) };

@@ -18,44 +18,11 @@
 //! The frames are read from the drawn shape, so an animated shape carries its image. A
 //! flat face on a tile boundary reads the tile on its solid's side (`faces`).
 
+use super::map_kind::MapKind;
 use crate::shapes::{Local, Shape};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
-/// How an image is wrapped around an object.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum MapKind {
-    /// Projected along the frame's z onto its x-y plane.
-    Planar,
-    /// Longitude and latitude about the centre.
-    Spherical,
-    /// Angle about the axis and height along it.
-    Cylindrical,
-    /// A mesh's own texture coordinates, interpolated over the triangle (SPEC §18; the
-    /// mesh answers: `Mesh::surface`).
-    Uv,
-}
-
-impl MapKind {
-    /// The keywords a TEXTURE record names them by.
-    pub const NAMES: [&'static str; 4] = ["planar", "spherical", "cylindrical", "uv"];
-
-    /// The kind a keyword names.
-    pub fn from_name(word: &str) -> Option<MapKind> {
-        match word {
-            "planar" => Some(MapKind::Planar),
-            "spherical" => Some(MapKind::Spherical),
-            "cylindrical" => Some(MapKind::Cylindrical),
-            "uv" => Some(MapKind::Uv),
-            _ => None,
-        }
-    }
-
-    /// Its keyword.
-    pub fn name(self) -> &'static str {
-        Self::NAMES[self as usize]
-    }
-}
 
 /// The x of a frame whose third axis is `n` (unit): normalize(up × n), up = (0,1,0), or
 /// (0,0,−1) when n is vertical.
@@ -164,7 +131,7 @@ fn unsettled(map: MapKind, size: f64, shape: &Shape, p: DVec3) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shapes::{Capped, Frame, Placed, Plane, Quadric, Sphere};
+    use crate::shapes::{Capped, Placed, Plane, Quadric, Sphere, Transform};
 
     fn close(a: (f64, f64), b: (f64, f64)) -> bool {
         (a.0 - b.0).abs() < 1e-12 && (a.1 - b.1).abs() < 1e-12
@@ -197,7 +164,7 @@ mod tests {
     #[test]
     fn planar_on_a_placed_shape_is_its_object_frame() {
         // Translated by (10, 0, 0): the world point (10.5, 0.25, 3) is (0.5, 0.25, 3).
-        let frame = Frame::new(DVec3::ONE, DVec3::ZERO, DVec3::new(10.0, 0.0, 0.0)).unwrap();
+        let frame = Transform::new(DVec3::ONE, DVec3::ZERO, DVec3::new(10.0, 0.0, 0.0)).unwrap();
         let ball = Local::Sphere(Sphere::new(DVec3::ZERO, 1.0));
         let placed = Shape::Placed(Placed::new(ball, frame));
         let p = DVec3::new(10.5, 0.25, 3.0);
@@ -233,7 +200,7 @@ mod tests {
         assert!(close(at(&q, 4.0, -1.0, 0.0), (0.25, 2.0)));
         // A capped cylinder from A = (0,1,0) up: the same frame as the quadric's from A.
         let cap = Capped::new(DVec3::Y, 0.5, DVec3::new(0.0, 3.0, 0.0), 0.5, true).unwrap();
-        let placed = Shape::Placed(Placed::new(Local::Capped(cap), Frame::IDENTITY));
+        let placed = Shape::Placed(Placed::new(Local::Capped(cap), Transform::IDENTITY));
         assert!(close(at(&placed, 0.0, 2.0, -0.5), (0.75, 0.5)));
     }
 }

@@ -23,16 +23,17 @@ mod faces;
 mod image;
 mod load;
 pub mod map;
+mod map_kind;
 
 pub use self::image::{ImageTexture, Interp, Pixels};
 pub use load::load;
-pub use map::MapKind;
+pub use map_kind::MapKind;
 
 use crate::noise::{floor, noise};
 use glam::DVec3;
 use std::sync::Arc;
 
-pub use crate::base::Color;
+use crate::base::Color;
 
 /// Offset that keeps the plane y = 0 from flickering between checker squares.
 pub const CHECKER_OFFSET: f64 = 1e-4;

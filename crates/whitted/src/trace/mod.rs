@@ -28,6 +28,7 @@ pub use rules::Rules;
 pub use surface::{facing, surface_at};
 
 use crate::accel::{Accel, Hint, Hit, LightBuffer, NO_PART};
+use crate::base::Color;
 use crate::lights::Occluders;
 use crate::lights::{self, SceneLight};
 use crate::object::Object;
@@ -35,7 +36,6 @@ use crate::optics::{reflect, refract, Ray};
 pub use crate::record::{NoRecord, Record};
 use crate::scene::Scene;
 use crate::shading;
-use crate::texture::Color;
 use glam::DVec3;
 use std::sync::Arc;
 

@@ -5,9 +5,9 @@
 //! carries the transmitted weight too and the refraction is still counted).
 
 use super::{RayCount, Tracer, MAX_DEPTH, MIN_WEIGHT};
+use crate::base::Color;
 use crate::object::Object;
 use crate::optics::{reflect, refract, Ray};
-use crate::texture::Color;
 use glam::DVec3;
 
 /// The SPD's deepest ray counting the eye ray as 1: 5.

@@ -14,8 +14,8 @@ use crate::check::diff::heat_legend;
 use crate::check::flip;
 use crate::check::report::{CheckReport, FrameReport};
 use std::path::{Path, PathBuf};
+use whitted::base::Frame;
 use whitted::output::{write_atomic, ImageFormat};
-use whitted::render::Frame;
 
 /// The HTML exporter, writing into a folder.
 pub struct Html(pub PathBuf);

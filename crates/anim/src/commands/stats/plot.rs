@@ -7,8 +7,8 @@ use crate::error::AnimError;
 use crate::preview::font::{self, FAMILY};
 use plotters::prelude::*;
 use std::path::Path;
+use whitted::base::Frame;
 use whitted::output::{write_atomic, ImageFormat};
-use whitted::render::Frame;
 
 /// The plot's size in pixels.
 pub const SIZE: (u32, u32) = (960, 480);

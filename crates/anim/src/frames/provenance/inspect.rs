@@ -333,7 +333,7 @@ mod tests {
 
     #[test]
     fn png_chunks_are_checked() {
-        let frame = whitted::render::Frame {
+        let frame = whitted::base::Frame {
             width: 3,
             height: 2,
             pixels: (0..18).collect(),

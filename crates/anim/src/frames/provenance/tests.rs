@@ -1,7 +1,7 @@
 use super::*;
 use crate::project::{Animation, Project};
+use whitted::base::Frame;
 use whitted::output::ImageFormat;
-use whitted::render::Frame;
 
 const SCENE: &str = "8 6  0 1 6  0 1 0  0 0  1 0 0 1
 1.0  0 1 0   1 0.9 0.2 0.1   0.7 0.3 0 1 0 0

@@ -18,7 +18,7 @@ use super::view::{self, View};
 use glam::DVec3;
 use plotters::coord::types::RangedCoordf64;
 use plotters::prelude::*;
-use whitted::render::Frame;
+use whitted::base::Frame;
 use whitted::shapes::Shape;
 use whitted::Scene;
 

@@ -1,10 +1,11 @@
 //! Direction grids against direct tests of the shapes.
 
 use super::*;
+use crate::base::Color;
 use crate::bump::Bump;
 use crate::object::Material;
 use crate::shapes::{Plane, Sphere};
-use crate::texture::{Color, Texture};
+use crate::texture::Texture;
 
 fn obj(shape: Shape) -> Object {
     Object {

@@ -11,7 +11,7 @@
 //! second one waits for that colour, so each point is traced and counted once whoever
 //! asks first, without a lock per row or a hash per sample.
 
-use crate::texture::Color;
+use crate::base::Color;
 use std::sync::OnceLock;
 
 /// An edge with no cells: neither pixel beside it splits.

@@ -15,8 +15,8 @@
 use super::store::Store;
 use super::{Adaptive, BAND};
 use crate::accel::TileView;
+use crate::base::Color;
 use crate::render::Shot;
-use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
 

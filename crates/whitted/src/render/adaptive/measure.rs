@@ -12,7 +12,7 @@
 //! clamped output values (our output has no gamma). Why `edge` is the default, with the
 //! figures that chose it: docs/decisions.md and docs/performance.md.
 
-use crate::texture::Color;
+use crate::base::Color;
 use serde::Serialize;
 
 /// How two corner samples' difference is measured.

@@ -18,10 +18,11 @@
 //! bytes, a motion-blur sum, or the statistics below). When a square splits is
 //! `measure.rs`'s; the lattice's buffers are kept between frames (`store.rs`).
 
-use super::{render, render_add, to_rgb, Frame};
+use super::{render, render_add};
 use crate::accel::TileView;
+use crate::base::Color;
+use crate::base::{to_rgb, Frame};
 use crate::camera::Camera;
-use crate::texture::Color;
 use crate::trace::{RayCount, Tracer};
 use lattice::{Lattice, Probe, Scratch};
 use rayon::prelude::*;

@@ -11,7 +11,7 @@
 //! before it is read, the splits are recomputed, and the cells are laid out anew, empty.
 
 use super::edges::Edges;
-use crate::texture::Color;
+use crate::base::Color;
 use std::sync::Mutex;
 
 /// One lattice's buffers.

@@ -14,7 +14,7 @@ use crate::mesh::Mesh;
 use crate::object::Object;
 use crate::scene::{FileLoc, Scene, SceneError, ShapeSpec};
 use crate::shapes::{
-    AaBox, Capped, Disc, Frame, Local, MeshRef, Placed, Plane, Shape, Sphere, Torus, Triangle,
+    AaBox, Capped, Disc, Local, MeshRef, Placed, Plane, Shape, Sphere, Torus, Transform, Triangle,
 };
 use crate::texture::{MapKind, Texture};
 use glam::DVec3;
@@ -121,11 +121,11 @@ pub(super) fn refused(loc: &FileLoc, what: &str, message: &str) -> SceneError {
 }
 
 /// The frame the modifiers give (the identity without any).
-pub fn frame(m: &Modifiers) -> Option<Frame> {
+pub fn frame(m: &Modifiers) -> Option<Transform> {
     if !m.has_transform() {
-        return Some(Frame::IDENTITY);
+        return Some(Transform::IDENTITY);
     }
-    Frame::new(
+    Transform::new(
         m.scale.unwrap_or(DVec3::ONE),
         m.rotate.unwrap_or(DVec3::ZERO),
         m.translate.unwrap_or(DVec3::ZERO),
@@ -151,11 +151,11 @@ pub(super) fn anchor(s: &ExtShape, m: &Modifiers) -> DVec3 {
 /// The drawn shape of one record (its bounds were checked by the reader; what still
 /// fails here, e.g. a frame that rounding made singular, is a located error).
 pub fn shape(o: &ExtObject) -> Result<Shape, SceneError> {
-    shape_in(o, &Frame::IDENTITY)
+    shape_in(o, &Transform::IDENTITY)
 }
 
 /// `shape`, its frame followed by `outer` (the frame of the CSG blocks around it).
-pub(super) fn shape_in(o: &ExtObject, outer: &Frame) -> Result<Shape, SceneError> {
+pub(super) fn shape_in(o: &ExtObject, outer: &Transform) -> Result<Shape, SceneError> {
     let bad = |why: &str| refused(&o.loc, o.shape.keyword(), why);
     let singular = || bad("the scale, rotate and translate make a singular frame");
     let own = frame(&o.mods).ok_or_else(singular)?;

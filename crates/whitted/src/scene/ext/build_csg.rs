@@ -9,7 +9,7 @@ use crate::object::Object;
 use crate::scene::ext::{Csg as Block, CsgOp, ExtItem};
 use crate::scene::SceneError;
 use crate::shapes::csg::{self, Csg, Node, Op};
-use crate::shapes::{Frame, Shape};
+use crate::shapes::{Shape, Transform};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -32,7 +32,7 @@ pub fn object(block: &Block) -> Result<(Object, DVec3), SceneError> {
 /// it opened a node of its own (false when its children join its parent's node).
 struct Walk<'b> {
     block: &'b Block,
-    frame: Frame,
+    frame: Transform,
     next: usize,
     opens: bool,
 }
@@ -50,7 +50,7 @@ type Gather = (Op, Vec<Node>);
 fn build(block: &Block) -> Result<(Csg, DVec3), SceneError> {
     let mut walk = vec![Walk {
         block,
-        frame: block_frame(block, &Frame::IDENTITY)?,
+        frame: block_frame(block, &Transform::IDENTITY)?,
         next: 0,
         opens: true,
     }];
@@ -114,7 +114,7 @@ fn build(block: &Block) -> Result<(Csg, DVec3), SceneError> {
 }
 
 /// The frame of `block` inside frames `outer`: its own modifiers, then `outer`'s.
-fn block_frame(block: &Block, outer: &Frame) -> Result<Frame, SceneError> {
+fn block_frame(block: &Block, outer: &Transform) -> Result<Transform, SceneError> {
     let singular = || {
         refused(
             &block.loc,

@@ -24,9 +24,10 @@
 pub mod build;
 pub mod check;
 
+use crate::base::Color;
 use crate::fileloc::FileLoc;
 use crate::object::Material;
-use crate::texture::{Color, Texture};
+use crate::texture::Texture;
 use glam::DVec3;
 use std::path::PathBuf;
 

@@ -36,12 +36,14 @@ pub mod polygon;
 mod reader;
 
 use super::{Scene, SceneError, ShapeSpec, MAX_PIXELS, MAX_SIDE};
+use crate::base::Color;
 use crate::camera::Lens;
 use crate::fog::Fog;
+use crate::lights::PointLight;
 use crate::limits::MAX_SCENE_OBJECTS;
-use crate::object::{Highlight, Light, Material, Object};
+use crate::object::{Highlight, Material, Object};
 use crate::shapes::{Cone, SmoothTriangle, Triangle};
-use crate::texture::{Color, Texture};
+use crate::texture::Texture;
 use glam::DVec3;
 use reader::{Context, Reader, Result};
 use std::path::Path;
@@ -178,7 +180,7 @@ pub fn parse(src: &str, file: &str) -> std::result::Result<Scene, SceneError> {
     let lights = b
         .lights
         .iter()
-        .map(|&(position, c)| Light {
+        .map(|&(position, c)| PointLight {
             position,
             color: c.unwrap_or(Color::ONE),
             intensity: if c.is_some() { 1.0 } else { share },

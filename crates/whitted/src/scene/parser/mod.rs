@@ -14,13 +14,14 @@ mod texture;
 use super::error::{FileLoc, SceneError};
 use super::lexer::{Lexer, Token};
 use super::{Scene, ShapeSpec, MAX_COUNT, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
+use crate::base::Color;
 use crate::bump::Bump;
 use crate::camera::Camera;
 use crate::fog::Fog;
 use crate::input::quote;
+use crate::lights::PointLight;
 use crate::limits::MAX_SCENE_OBJECTS;
-use crate::object::{Light, Material, Object};
-use crate::texture::Color;
+use crate::object::{Material, Object};
 use counts::{Counts, Record};
 use glam::DVec3;
 use place::Place;
@@ -238,12 +239,12 @@ impl<'a> Parser<'a> {
         self.object(cylinder, specs)
     }
 
-    fn light(&mut self, i: u64, n: u64) -> Result<Light> {
+    fn light(&mut self, i: u64, n: u64) -> Result<PointLight> {
         self.enter("light", Some((i, n)));
         let (position, _) = self.vector(["Lx", "Ly", "Lz"])?;
         let color = self.color(["R", "G", "B"])?;
         let intensity = self.ranged("Intensity", 0.0, MAX_INTENSITY)?;
-        Ok(Light {
+        Ok(PointLight {
             position,
             color,
             intensity,

@@ -4,7 +4,7 @@
 use super::*;
 use crate::bump::Bump;
 use crate::object::{Highlight, Material};
-use crate::shapes::{AaBox, Capped, Frame, Local, Placed, Plane, Sphere, Torus};
+use crate::shapes::{AaBox, Capped, Local, Placed, Plane, Sphere, Torus, Transform};
 use crate::texture::Texture;
 
 fn leaf(shape: Shape, grey: f64) -> Node {
@@ -29,7 +29,7 @@ fn ball(x: f64, r: f64, grey: f64) -> Node {
 fn cube(min: DVec3, max: DVec3, grey: f64) -> Node {
     let b = AaBox::new(min, max).unwrap();
     leaf(
-        Shape::Placed(Placed::new(Local::Box(b), Frame::IDENTITY)),
+        Shape::Placed(Placed::new(Local::Box(b), Transform::IDENTITY)),
         grey,
     )
 }
@@ -186,23 +186,23 @@ fn nested_cuts_reverse_their_normals_once_per_difference() {
 #[test]
 fn inside_tests_of_each_solid() {
     let cyl = Capped::new(DVec3::ZERO, 1.0, DVec3::new(0.0, 2.0, 0.0), 1.0, true).unwrap();
-    let cyl = Shape::Placed(Placed::new(Local::Capped(cyl), Frame::IDENTITY));
+    let cyl = Shape::Placed(Placed::new(Local::Capped(cyl), Transform::IDENTITY));
     assert!(inside::shape(&cyl, DVec3::new(0.9, 1.0, 0.0)));
     assert!(!inside::shape(&cyl, DVec3::new(1.1, 1.0, 0.0)));
     assert!(!inside::shape(&cyl, DVec3::new(0.0, 2.1, 0.0)));
     // A cone from radius 1 at y = 0 to 0 at y = 2: radius 0.5 at y = 1.
     let cone = Capped::new(DVec3::ZERO, 1.0, DVec3::new(0.0, 2.0, 0.0), 0.0, true).unwrap();
-    let cone = Shape::Placed(Placed::new(Local::Capped(cone), Frame::IDENTITY));
+    let cone = Shape::Placed(Placed::new(Local::Capped(cone), Transform::IDENTITY));
     assert!(inside::shape(&cone, DVec3::new(0.0, 1.0, 0.49)));
     assert!(!inside::shape(&cone, DVec3::new(0.0, 1.0, 0.51)));
     // A torus R 2, r 0.5 about y: the tube's centre (2, 0, 0) is inside, the hub is not.
     let torus = Torus::new(DVec3::ZERO, DVec3::Y, 2.0, 0.5).unwrap();
-    let torus = Shape::Placed(Placed::new(Local::Torus(torus), Frame::IDENTITY));
+    let torus = Shape::Placed(Placed::new(Local::Torus(torus), Transform::IDENTITY));
     assert!(inside::shape(&torus, DVec3::new(0.0, 0.4, -2.0)));
     assert!(!inside::shape(&torus, DVec3::ZERO));
     assert!(!inside::shape(&torus, DVec3::new(2.0, 0.6, 0.0)));
     // A box scaled by 2 along x and moved to x = 10: [8, 12] × [−1, 1]².
-    let f = Frame::new(
+    let f = Transform::new(
         DVec3::new(2.0, 1.0, 1.0),
         DVec3::ZERO,
         DVec3::new(10.0, 0.0, 0.0),
@@ -215,7 +215,7 @@ fn inside_tests_of_each_solid() {
     let open = Capped::new(DVec3::ZERO, 1.0, DVec3::Y, 1.0, false).unwrap();
     assert!(!is_solid(&Shape::Placed(Placed::new(
         Local::Capped(open),
-        Frame::IDENTITY
+        Transform::IDENTITY
     ))));
     assert!(!inside::shape(
         &Shape::Sphere(Sphere::new(DVec3::ZERO, 1.0)),

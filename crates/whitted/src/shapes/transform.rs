@@ -10,42 +10,44 @@ use glam::{DAffine3, DMat3, DVec3};
 
 /// An invertible affine map from object space to world space, with its inverse.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Frame {
+pub struct Transform {
     to_world: DAffine3,
     to_local: DAffine3,
 }
 
-impl Frame {
+impl Transform {
     /// The identity: object space is the world.
-    pub const IDENTITY: Frame = Frame {
+    pub const IDENTITY: Transform = Transform {
         to_world: DAffine3::IDENTITY,
         to_local: DAffine3::IDENTITY,
     };
 
     /// The frame of the modifiers: scale, then rotate (degrees about x, y, z), then
     /// translate; `None` for a zero or non-finite scale, or a non-finite angle or offset.
-    pub fn new(scale: DVec3, rotate_deg: DVec3, translate: DVec3) -> Option<Frame> {
+    pub fn new(scale: DVec3, rotate_deg: DVec3, translate: DVec3) -> Option<Transform> {
         let r = rotate_deg * (std::f64::consts::PI / 180.0);
         let rot =
             DMat3::from_rotation_z(r.z) * DMat3::from_rotation_y(r.y) * DMat3::from_rotation_x(r.x);
         let m = DAffine3::from_mat3_translation(rot * DMat3::from_diagonal(scale), translate);
-        Frame::from_affine(m)
+        Transform::from_affine(m)
     }
 
     /// The frame of an affine map; `None` when it is singular or not finite.
-    pub fn from_affine(to_world: DAffine3) -> Option<Frame> {
+    pub fn from_affine(to_world: DAffine3) -> Option<Transform> {
         let det = to_world.matrix3.determinant();
         if !(to_world.is_finite() && det.is_normal()) {
             return None;
         }
         let to_local = to_world.inverse();
-        to_local.is_finite().then_some(Frame { to_world, to_local })
+        to_local
+            .is_finite()
+            .then_some(Transform { to_world, to_local })
     }
 
     /// First `self`, then `outer` (an object inside a CSG block moved by the block's own
     /// modifiers); `None` if the product is singular.
-    pub fn then(&self, outer: &Frame) -> Option<Frame> {
-        Frame::from_affine(outer.to_world * self.to_world)
+    pub fn then(&self, outer: &Transform) -> Option<Transform> {
+        Transform::from_affine(outer.to_world * self.to_world)
     }
 
     /// True when the map is the identity.
@@ -105,7 +107,7 @@ mod tests {
     #[test]
     fn scale_then_rotate_then_translate() {
         // (1, 0, 0) scaled by 2 → (2, 0, 0); 90° about z → (0, 2, 0); moved by (1, 1, 1).
-        let f = Frame::new(
+        let f = Transform::new(
             DVec3::new(2.0, 1.0, 1.0),
             DVec3::new(0.0, 0.0, 90.0),
             DVec3::ONE,
@@ -114,7 +116,7 @@ mod tests {
         assert!(close(f.point_to_world(DVec3::X), DVec3::new(1.0, 3.0, 1.0)));
         assert!(close(f.point_to_local(DVec3::new(1.0, 3.0, 1.0)), DVec3::X));
         // Rotations about x first, then y: (0, 1, 0) → x 90° → (0, 0, 1) → y 90° → (1, 0, 0).
-        let f = Frame::new(DVec3::ONE, DVec3::new(90.0, 90.0, 0.0), DVec3::ZERO).unwrap();
+        let f = Transform::new(DVec3::ONE, DVec3::new(90.0, 90.0, 0.0), DVec3::ZERO).unwrap();
         assert!(close(f.point_to_world(DVec3::Y), DVec3::X));
     }
 
@@ -122,22 +124,22 @@ mod tests {
     fn normals_use_the_inverse_transpose() {
         // The plane x + y = 0 (normal (1,1,0)/√2) stretched by 2 along x becomes
         // x/2 + y = 0, whose normal is (1, 2, 0)/√5.
-        let f = Frame::new(DVec3::new(2.0, 1.0, 1.0), DVec3::ZERO, DVec3::ZERO).unwrap();
+        let f = Transform::new(DVec3::new(2.0, 1.0, 1.0), DVec3::ZERO, DVec3::ZERO).unwrap();
         let n = f.normal_to_world(DVec3::new(1.0, 1.0, 0.0).normalize());
         assert!(close(n, DVec3::new(1.0, 2.0, 0.0) / 5f64.sqrt()));
     }
 
     #[test]
     fn singular_frames_are_refused() {
-        assert!(Frame::new(DVec3::new(1.0, 0.0, 1.0), DVec3::ZERO, DVec3::ZERO).is_none());
-        assert!(Frame::new(DVec3::ONE, DVec3::new(f64::NAN, 0.0, 0.0), DVec3::ZERO).is_none());
-        assert!(Frame::IDENTITY.is_identity());
+        assert!(Transform::new(DVec3::new(1.0, 0.0, 1.0), DVec3::ZERO, DVec3::ZERO).is_none());
+        assert!(Transform::new(DVec3::ONE, DVec3::new(f64::NAN, 0.0, 0.0), DVec3::ZERO).is_none());
+        assert!(Transform::IDENTITY.is_identity());
     }
 
     #[test]
     fn world_bounds_of_a_rotated_box() {
         // The unit cube turned 45° about z spans ±√2/2·… : x in [−√2/2, √2/2].
-        let f = Frame::new(DVec3::ONE, DVec3::new(0.0, 0.0, 45.0), DVec3::ZERO).unwrap();
+        let f = Transform::new(DVec3::ONE, DVec3::new(0.0, 0.0, 45.0), DVec3::ZERO).unwrap();
         let (lo, hi) = f.bounds_to_world((DVec3::splat(-0.5), DVec3::splat(0.5)));
         let h = 0.5f64.sqrt();
         assert!(close(lo, DVec3::new(-h, -h, -0.5)) && close(hi, DVec3::new(h, h, 0.5)));
