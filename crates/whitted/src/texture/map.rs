@@ -23,7 +23,6 @@ use crate::shapes::{Local, Shape};
 use glam::DVec3;
 use std::f64::consts::{PI, TAU};
 
-
 /// The x of a frame whose third axis is `n` (unit): normalize(up × n), up = (0,1,0), or
 /// (0,0,−1) when n is vertical.
 fn side(n: DVec3) -> DVec3 {

@@ -13,6 +13,9 @@
 
 use super::super::error::{FileLoc, SceneError};
 use super::super::lexer::{Lexer, Token};
+use super::super::MAX_COUNT;
+use super::Parser;
+use crate::limits::MAX_SCENE_OBJECTS;
 
 /// The kinds of records in file order: name, plural, count field, values per line.
 const KINDS: [(&str, &str, &str, [usize; 2]); 4] = [
@@ -26,6 +29,28 @@ const KINDS: [(&str, &str, &str, [usize; 2]); 4] = [
 pub(super) struct Counts<'a> {
     pub n: [u64; 4],
     pub at: [Token<'a>; 4],
+}
+
+/// The four counts (NSpheres NPlanes NCylinders NLights), each from 0 to `MAX_COUNT`,
+/// whose objects together stay within the scene's budget (`MAX_SCENE_OBJECTS`).
+pub(super) fn read_counts<'a>(p: &mut Parser<'a>) -> Result<Counts<'a>, SceneError> {
+    p.enter("counts", None);
+    let count = format!("a count from 0 to {MAX_COUNT}");
+    let (ns, s_at) = p.integer("NSpheres", 0, MAX_COUNT, &count)?;
+    let (np, p_at) = p.integer("NPlanes", 0, MAX_COUNT, &count)?;
+    let (nc, c_at) = p.integer("NCylinders", 0, MAX_COUNT, &count)?;
+    let (nl, l_at) = p.integer("NLights", 0, MAX_COUNT, &count)?;
+    if ns + np + nc > MAX_SCENE_OBJECTS {
+        let msg = format!(
+            "the counts announce {} objects: a scene may have {MAX_SCENE_OBJECTS} in all",
+            ns + np + nc
+        );
+        return Err(p.error(&s_at, msg, "NSpheres"));
+    }
+    Ok(Counts {
+        n: [ns, np, nc, nl],
+        at: [s_at, p_at, c_at, l_at],
+    })
 }
 
 /// Where a failing record was: its kind (index into the four), its 1-based index, and

@@ -13,16 +13,15 @@ mod texture;
 
 use super::error::{FileLoc, SceneError};
 use super::lexer::{Lexer, Token};
-use super::{Scene, ShapeSpec, MAX_COUNT, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
+use super::{Scene, ShapeSpec, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
 use crate::base::Color;
 use crate::bump::Bump;
 use crate::camera::Camera;
 use crate::fog::Fog;
 use crate::input::quote;
 use crate::lights::PointLight;
-use crate::limits::MAX_SCENE_OBJECTS;
 use crate::object::{Material, Object};
-use counts::{Counts, Record};
+use counts::{read_counts, Record};
 use glam::DVec3;
 use place::Place;
 
@@ -330,23 +329,7 @@ fn records<'a>(p: &mut Parser<'a>, src: &'a str, file: &str) -> Result<Scene> {
         _ => Fog::ExponentialSquared(fog_distance),
     };
 
-    p.enter("counts", None);
-    let count = format!("a count from 0 to {MAX_COUNT}");
-    let (ns, s_at) = p.integer("NSpheres", 0, MAX_COUNT, &count)?;
-    let (np, p_at) = p.integer("NPlanes", 0, MAX_COUNT, &count)?;
-    let (nc, c_at) = p.integer("NCylinders", 0, MAX_COUNT, &count)?;
-    let (nl, l_at) = p.integer("NLights", 0, MAX_COUNT, &count)?;
-    if ns + np + nc > MAX_SCENE_OBJECTS {
-        let msg = format!(
-            "the counts announce {} objects: a scene may have {MAX_SCENE_OBJECTS} in all",
-            ns + np + nc
-        );
-        return Err(p.error(&s_at, msg, "NSpheres"));
-    }
-    let counts = Counts {
-        n: [ns, np, nc, nl],
-        at: [s_at, p_at, c_at, l_at],
-    };
+    let counts = read_counts(p)?;
 
     let mut objects = Vec::new();
     let mut specs = Vec::new();
@@ -373,7 +356,7 @@ fn records<'a>(p: &mut Parser<'a>, src: &'a str, file: &str) -> Result<Scene> {
         .is_some()
     {
         p.layout.stop();
-        extension = ext::read(p, [ns, np, nc, nl])?;
+        extension = ext::read(p, counts.n)?;
     } else if let Some(tok) = p.lexer.next() {
         p.enter("after the last record", None);
         let msg = format!(
