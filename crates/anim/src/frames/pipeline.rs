@@ -9,7 +9,8 @@
 //!   frame another run holds is left, then waited for at the end and taken over if that
 //!   run died. With `resume`, frames
 //!   whose file records the digest the manifest now gives them are left untouched
-//!   (`status`); frames recorded by another manifest are not overwritten unless forced.
+//!   (`status`); frames recorded by another manifest and files the tool did not write
+//!   are not overwritten unless forced.
 //! - Stream (`--stdout`, `--video`): frames render in windows of twice the thread count
 //!   and are written in order.
 //!
@@ -133,8 +134,9 @@ enum Found {
     UpToDate,
     /// Recorded by this other manifest: not overwritten unless forced.
     Foreign(String),
-    /// A sound image with no record, which the tool did not write (a photo under the
-    /// frame's name): not overwritten unless forced.
+    /// A sound image with no record, or a regular file that is no frame at all, which the
+    /// tool did not write (a photo or notes under the frame's name): not overwritten
+    /// unless forced.
     Unrecorded(std::path::PathBuf),
     /// Missing, stale or damaged, or the run is not told to look: to render.
     Render,
@@ -149,8 +151,18 @@ fn found(anim: &Animation, dir: &Path, frame: u32, policy: &Policy, ours: Option
     }
     let path = anim.frame_path(dir, frame);
     let (format, w, h) = (anim.format(), anim.width, anim.height);
-    let Inspection::Sound(record) = provenance::inspect(&path, format, w, h, false) else {
-        return Found::Render;
+    let record = match provenance::inspect(&path, format, w, h, false) {
+        Inspection::Sound(record) => record,
+        // A regular file that is no frame of the format (a user's text under a frame's
+        // name) is not the tool's; links and FIFOs are replaced (the link, not its target).
+        Inspection::Damaged(_)
+            if !policy.force
+                && std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file())
+                && !owner::looks_like_a_frame(anim, &path, format) =>
+        {
+            return Found::Unrecorded(path)
+        }
+        _ => return Found::Render,
     };
     if policy.resume
         && record.digest == Some(provenance::digest(anim, frame))
