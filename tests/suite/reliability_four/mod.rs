@@ -10,6 +10,7 @@ use crate::support;
 use std::time::Duration;
 use support::*;
 
+mod drafts;
 mod ownership;
 
 /// Long enough for a loaded two-core machine to render twelve 64×48 frames; the faults

@@ -9,8 +9,8 @@
 //!   frame another run holds is left, then waited for at the end and taken over if that
 //!   run died. With `resume`, frames
 //!   whose file records the digest the manifest now gives them are left untouched
-//!   (`status`); frames recorded by another manifest and files the tool did not write
-//!   are not overwritten unless forced.
+//!   (`status`); frames recorded by another manifest, files the tool did not write and,
+//!   for a draft, the manifest's finals are not overwritten unless forced.
 //! - Stream (`--stdout`, `--video`): frames render in windows of twice the thread count
 //!   and are written in order.
 //!
@@ -138,6 +138,9 @@ enum Found {
     /// tool did not write (a photo or notes under the frame's name): not overwritten
     /// unless forced.
     Unrecorded(std::path::PathBuf),
+    /// A final frame of this manifest, which a draft would replace: not overwritten unless
+    /// forced (a final replaces drafts freely).
+    Final,
     /// Missing, stale or damaged, or the run is not told to look: to render.
     Render,
 }
@@ -170,9 +173,11 @@ fn found(anim: &Animation, dir: &Path, frame: u32, policy: &Policy, ours: Option
     {
         return Found::UpToDate;
     }
+    let is_final = !record.pairs.iter().any(|(k, _)| k == provenance::DRAFT_KEY);
     match record.manifest {
         Some(m) if !policy.force && Some(m.as_str()) != ours => Found::Foreign(m),
         None if !policy.force => Found::Unrecorded(path),
+        Some(_) if !policy.force && is_final && anim.manifest.draft.is_some() => Found::Final,
         _ => Found::Render,
     }
 }
@@ -214,19 +219,28 @@ pub(crate) fn render_to_folder(
         .par_iter()
         .map(|&f| found(anim, dir, f, policy, ours.as_deref()))
         .collect();
-    let (mut todo, mut done, mut foreign, mut unrecorded) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut todo, mut done, mut foreign, mut unrecorded, mut finals) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
     for (&f, seen) in frames.iter().zip(seen) {
         match seen {
             Found::UpToDate => done.push(f),
             Found::Foreign(m) => foreign.push((f, m)),
             Found::Unrecorded(path) => unrecorded.push((path, Owner::Nobody)),
+            Found::Final => finals.push(f),
             Found::Render => todo.push(f),
         }
     }
     refuse_foreign(dir, &foreign)?;
     if let Some(refusal) = owner::refusal("replaced", &unrecorded) {
         return Err(refusal);
+    }
+    if !finals.is_empty() {
+        return Err(AnimError::Finals {
+            dir: dir.to_path_buf(),
+            frames: status::ranges(&finals),
+            count: finals.len(),
+            draft: anim.manifest.draft.clone().unwrap_or_default(),
+        });
     }
     if let Some(pid) = lock.shared_with() {
         reporter.event(Event::Sharing { pid });

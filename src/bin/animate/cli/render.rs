@@ -47,8 +47,9 @@ pub struct RenderArgs {
           conflicts_with_all = ["video", "out"])]
     pub stdout: Option<ImageFormat>,
     /// Write over what a run otherwise refuses to: frames in the folder recorded by another
-    /// manifest, files under frame names with no record, an existing --video file, binary
-    /// --stdout frames on a terminal.
+    /// manifest, files under frame names with no record, the manifest's finals under a
+    /// draft (`--size … -o` into their folder), an existing --video file, binary --stdout
+    /// frames on a terminal.
     #[arg(long)]
     pub force: bool,
     /// Pipe the frames into ffmpeg (from PATH) to make this video file (written beside
