@@ -11,6 +11,7 @@ use std::time::Duration;
 use support::*;
 
 mod drafts;
+mod hooks;
 mod ownership;
 
 /// Long enough for a loaded two-core machine to render twelve 64×48 frames; the faults

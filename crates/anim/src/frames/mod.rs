@@ -16,8 +16,10 @@
 //! - `balance`: shards of equal predicted cost from a small pre-pass; `estimate`: the
 //!   predicted cost and time of a render; `cost`: what each frame cost, recorded beside
 //!   it;
-//! - `hooks`: the user's commands after each frame and after the run; `hooked`: the
-//!   reporter that counts a run's frames and lines the frame hooks up in its order.
+//! - `hooks`: the user's commands after each frame and after the run; `hook_process`:
+//!   a hook's process group, waited for, stopped with the run or when its time is up,
+//!   its output kept as a bounded tail; `hooked`: the reporter that counts a run's
+//!   frames and lines the frame hooks up in its order.
 
 pub mod balance;
 pub mod claim;
@@ -26,6 +28,7 @@ pub mod encode;
 pub mod estimate;
 pub mod events;
 pub mod folder;
+pub mod hook_process;
 pub mod hooked;
 pub mod hooks;
 pub mod lock;
