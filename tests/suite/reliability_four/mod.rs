@@ -13,6 +13,8 @@ use support::*;
 mod drafts;
 mod hooks;
 mod ownership;
+mod records;
+mod sharing;
 
 /// Long enough for a loaded two-core machine to render twelve 64×48 frames; the faults
 /// guarded against never end at all.

@@ -245,7 +245,7 @@ pub(crate) fn render_to_folder(
     if let Some(pid) = lock.shared_with() {
         reporter.event(Event::Sharing { pid });
     }
-    let claims = Claims::new(dir)?;
+    let claims = Claims::new(dir, lock.since())?;
     reporter.event(Event::Started {
         total: frames.len(),
         skipped: done.len(),
