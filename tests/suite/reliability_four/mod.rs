@@ -1,4 +1,4 @@
-//! Reliability, round four (issue 57), the pipeline's points, each run through the built
+//! Reliability, round four, the pipeline's points, each run through the built
 //! `animate` and failing on the code before its fix: `clean` and runs that removed or
 //! replaced files the tool did not write (`ownership`: point 1), a draft written over the
 //! finals (`drafts`: point 6), hooks that held the run or its memory (`hooks`: point 5),
