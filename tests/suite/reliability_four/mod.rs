@@ -11,6 +11,7 @@ use std::time::Duration;
 use support::*;
 
 mod drafts;
+mod estimate;
 mod hooks;
 mod ownership;
 mod records;
