@@ -5,6 +5,7 @@
 //! - `run`: the render command as a library call (frames, destination, checks first);
 //!   `policy`: what a run may keep or replace, and how its video is encoded;
 //! - `pipeline`: rendering in parallel into a folder or a stream, reporting `events`;
+//!   `found`: what a run makes of the files already under its frames' names;
 //! - `provenance`: what made a frame, recorded in the frame file; `status`: which frames
 //!   of a folder are up to date, stale or missing;
 //! - `folder`: what else a frame folder holds (frames past the end, temporaries of
@@ -28,6 +29,7 @@ pub mod encode;
 pub mod estimate;
 pub mod events;
 pub mod folder;
+mod found;
 pub mod hook_process;
 pub mod hooked;
 pub mod hooks;
