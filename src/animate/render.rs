@@ -5,15 +5,17 @@
 
 use super::cli::RenderArgs;
 use super::{pool, report};
+use std::sync::atomic::AtomicUsize;
 use std::sync::Arc;
-use std::time::Instant;
+use std::time::{Duration, Instant};
 use whitted::exit::Outcome;
 use whitted::output::ImageFormat;
 use whitted_anim::frames::balance;
 use whitted_anim::frames::hooked::{FramePath, Hooked, Tally};
-use whitted_anim::frames::hooks::HookRun;
+use whitted_anim::frames::hooks::{HookRun, Limits};
 use whitted_anim::frames::run::{self, Destination};
 use whitted_anim::{AnimError, Animation, Reporter};
+use whitted_cmd::process::stopped;
 use whitted_cmd::progress::Weighted;
 
 /// What an interrupted stream or video says (`--resume` does not apply to them): its two
@@ -34,13 +36,20 @@ fn told(run: &HookRun) {
     }
 }
 
+/// How long `--on-done` may run after a run stopped by a signal (less when
+/// `--hook-timeout` says so): the run was asked to end.
+const DONE_AFTER_STOP: Duration = Duration::from_secs(10);
+
 /// Renders the frames `args` ask for, then runs `--on-done`: the run's error, if any, is
 /// said first, and the hook is told the exit status it gives. A failed hook makes a run
-/// that succeeded end with status 1.
+/// that succeeded end with status 1; a signal while it runs ends it, and the run with
+/// 128 + N.
 pub fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
     let on_done = args.on_done.clone();
+    let timeout = args.hook_timeout;
     let mut tally = Tally::default();
-    let result = render_frames(args, &mut tally);
+    let mut stop = None;
+    let result = render_frames(args, &mut tally, &mut stop);
     let hooks_failed = tally.hooks_failed > 0;
     let Some(hook) = on_done else {
         return result.map(|o| failed_if(o, hooks_failed));
@@ -52,8 +61,22 @@ pub fn render(args: RenderArgs) -> anyhow::Result<Outcome> {
             report::outcome(&e)
         }
     };
-    let done = hook.run_done(tally.rendered, tally.failed, outcome.code());
+    let limits = match (outcome, stop) {
+        // Stopped already: the hook is told so, and given a short time of its own.
+        (Outcome::Interrupted(_), _) => Limits {
+            stop: Arc::default(),
+            timeout: Some(timeout.map_or(DONE_AFTER_STOP, |t| t.min(DONE_AFTER_STOP))),
+        },
+        (_, stop) => Limits {
+            stop: stop.unwrap_or_else(whitted_cmd::process::watch_signals_quietly),
+            timeout,
+        },
+    };
+    let done = hook.run_done(tally.rendered, tally.failed, outcome.code(), &limits);
     told(&done);
+    if let (Outcome::Success | Outcome::Failed, Some(sig)) = (outcome, stopped(&limits.stop)) {
+        return Ok(Outcome::Interrupted(sig));
+    }
     Ok(failed_if(outcome, done.failed()))
 }
 
@@ -65,8 +88,13 @@ fn failed_if(outcome: Outcome, failed: bool) -> Outcome {
     }
 }
 
-/// The render itself; `tally` gets what the run did, however it ends.
-fn render_frames(args: RenderArgs, tally: &mut Tally) -> anyhow::Result<Outcome> {
+/// The render itself; `tally` gets what the run did, however it ends, and `watched` the
+/// run's stop flag once signals are watched.
+fn render_frames(
+    args: RenderArgs,
+    tally: &mut Tally,
+    watched: &mut Option<Arc<AtomicUsize>>,
+) -> anyhow::Result<Outcome> {
     let c = &args.common;
     if args.stdout.is_some() && whitted_cmd::process::stdout_closed() {
         return Err(AnimError::StdoutClosed.into());
@@ -85,6 +113,7 @@ fn render_frames(args: RenderArgs, tally: &mut Tally) -> anyhow::Result<Outcome>
         report::announce(&anim, frames.len(), args.stdout == Some(ImageFormat::Raw));
     }
     let stop = whitted_cmd::process::watch_signals("animate");
+    *watched = Some(stop.clone());
     if matches!(destination, Destination::Stream(_)) {
         // A reader that stops reading would hold a write, and the run, forever.
         whitted_cmd::process::exit_when_stuck(stop.clone(), stream_stopped);
@@ -118,8 +147,12 @@ fn render_frames(args: RenderArgs, tally: &mut Tally) -> anyhow::Result<Outcome>
         true => reporter,
         false => &warned,
     };
+    let limits = Limits {
+        stop: stop.clone(),
+        timeout: args.hook_timeout,
+    };
     let hook = match &destination {
-        Destination::Folder(_) => args.on_frame.clone(),
+        Destination::Folder(_) => args.on_frame.clone().map(|h| (h, limits)),
         _ => None,
     };
     let (dir, output, n) = (destination.folder(), m.output.clone(), m.frames);
@@ -140,6 +173,10 @@ fn render_frames(args: RenderArgs, tally: &mut Tally) -> anyhow::Result<Outcome>
         }
         (summary, _) => summary?,
     };
+    if let Some(sig) = stopped(&stop) {
+        // Every frame was done, and a signal came while the hooks ran.
+        return Err(AnimError::Interrupted(sig).into());
+    }
     if !c.quiet {
         let place = match shard {
             // The shard named in the summary, so that a farm's logs say whose it is.

@@ -82,6 +82,7 @@ mod progress;
 mod provenance_inputs;
 mod raytrace_cli;
 mod readonly_folder;
+mod reliability_four;
 mod reliability_three;
 mod robust_parsers;
 mod scene_parsing;

@@ -27,7 +27,8 @@ fn drafts_among_finals_and_broken_frames_are_refused_with_the_frames_named() {
     render_into(
         &manifest,
         &frames,
-        &["-q", "--size", "64x48", "--frames", "2-3"],
+        // Over the finals: forced (reliability round four, point 6).
+        &["-q", "--size", "64x48", "--frames", "2-3", "--force"],
     );
     let (code, err) = encode(&manifest, &[]);
     assert_eq!(code, Some(2), "{err}");
@@ -58,7 +59,8 @@ fn allow_mixed_encodes_sound_mixed_frames() {
     render_into(
         &manifest,
         &frames,
-        &["-q", "--size", "64x48", "--frames", "2-3"],
+        // Over the finals: forced (reliability round four, point 6).
+        &["-q", "--size", "64x48", "--frames", "2-3", "--force"],
     );
     let (code, err) = encode(&manifest, &["--allow-mixed", "-q"]);
     assert_eq!(code, Some(0), "{err}");

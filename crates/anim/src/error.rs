@@ -148,6 +148,19 @@ pub enum AnimError {
         /// How many.
         count: usize,
     },
+    /// A draft's run would write over final frames of its manifest (`-o` into the finals'
+    /// folder; bad input: nothing was rendered).
+    #[error("{} holds {count} final frame(s) of this manifest (frames {frames}); this draft ({draft}) would replace them", shown(.dir))]
+    Finals {
+        /// The frame folder.
+        dir: PathBuf,
+        /// Their ranges, render-farm style.
+        frames: String,
+        /// How many.
+        count: usize,
+        /// The draft's label.
+        draft: String,
+    },
     /// Files under the names a command would replace or remove are not this manifest's:
     /// another manifest's frames, or files with no record (bad input: nothing was done).
     #[error("{files}: {whose}, and would be {what}")]
@@ -220,6 +233,7 @@ impl AnimError {
             | AnimError::Busy { .. }
             | AnimError::InUse { .. }
             | AnimError::Foreign { .. }
+            | AnimError::Finals { .. }
             | AnimError::NotOurs { .. }
             | AnimError::Overwrite { .. }
             | AnimError::Export(_)

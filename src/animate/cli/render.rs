@@ -7,6 +7,7 @@ use super::{Common, DraftArgs, MAX_SHARDS};
 use clap::Args;
 use std::io::IsTerminal;
 use std::path::PathBuf;
+use std::time::Duration;
 use whitted::output::ImageFormat;
 use whitted_anim::frames::hooks::Hook;
 use whitted_anim::frames::run::{Destination, Encoding, Policy};
@@ -47,8 +48,9 @@ pub struct RenderArgs {
           conflicts_with_all = ["video", "out"])]
     pub stdout: Option<ImageFormat>,
     /// Write over what a run otherwise refuses to: frames in the folder recorded by another
-    /// manifest, files under frame names with no record, an existing --video file, binary
-    /// --stdout frames on a terminal.
+    /// manifest, files under frame names with no record, the manifest's finals under a
+    /// draft (`--size … -o` into their folder), an existing --video file, binary --stdout
+    /// frames on a terminal.
     #[arg(long)]
     pub force: bool,
     /// Pipe the frames into ffmpeg (from PATH) to make this video file (written beside
@@ -79,6 +81,20 @@ pub struct RenderArgs {
     /// words as --on-frame is. A failing hook makes the exit status 1.
     #[arg(long, value_name = "CMD")]
     pub on_done: Option<Hook>,
+    /// End a hook (its whole process group) that runs longer than SECONDS, and count it
+    /// as failed (default: no limit; a hook always ends with a run stopped by a signal).
+    #[arg(long, value_name = "SECONDS", value_parser = parse_timeout)]
+    pub hook_timeout: Option<Duration>,
+}
+
+/// `--hook-timeout`: seconds, more than 0 and at most a year.
+fn parse_timeout(s: &str) -> Result<Duration, String> {
+    match s.parse::<f64>() {
+        Ok(t) if t > 0.0 && t <= 365.0 * 86400.0 => Ok(Duration::from_secs_f64(t)),
+        _ => Err(format!(
+            "expected seconds, more than 0 and at most a year (31536000), found {s:?}"
+        )),
+    }
 }
 
 /// How ffmpeg encodes a video (`--video`, `animate encode`).

@@ -222,6 +222,10 @@ pub fn hint(e: &AnimError) -> Option<&'static str> {
         AnimError::Foreign { .. } => {
             Some("`--force` writes over them; `-o DIR` renders into another folder")
         }
+        AnimError::Finals { .. } => Some(
+            "`--force` writes over them; without `-o` a draft goes to a folder of its own \
+             (DIR-draft-WxH)",
+        ),
         AnimError::VideoExists(_) => Some("`--force` replaces it; `-o` names another file"),
         AnimError::NotOurs { .. } => Some("`--force` does it anyway"),
         AnimError::Overwrite { why, .. } if why.contains("not written") => {

@@ -11,9 +11,10 @@
 //!
 //! A run takes a free claim at once (`try_claim`) and skips, for now, a frame another live
 //! run holds; once through its frames it comes back to those and waits for each claim
-//! (`claim`): the other run has finished the frame (then it is written, newer than this
-//! run's start, and recording what the manifest gives it: `done_elsewhere`), or has died
-//! (then this run renders it). `animate clean` removes the claim files no one holds
+//! (`claim`): the other run has finished the frame (then it is written since the runs
+//! began sharing the folder, and records what the manifest gives it: `done_elsewhere`), or
+//! has died (then this run renders it). A frame another run wrote before this one joined
+//! it is found the same way, so no frame is rendered twice (`lock`'s `shared since`). `animate clean` removes the claim files no one holds
 //! (`remove_free`).
 
 use super::provenance::{self, Inspection};
@@ -35,21 +36,19 @@ pub struct Claim {
 /// The claims of one run in one folder.
 pub struct Claims {
     dir: PathBuf,
-    started: SystemTime,
+    since: SystemTime,
 }
 
 impl Claims {
-    /// The claims of a run into `dir` that starts now (creating the claims folder).
-    pub fn new(dir: &Path) -> Result<Claims, AnimError> {
+    /// The claims of a run into `dir` that shares it with runs of its manifest since
+    /// `since` (creating the claims folder).
+    pub fn new(dir: &Path, since: SystemTime) -> Result<Claims, AnimError> {
         let claims = dir.join(CLAIMS);
         std::fs::create_dir_all(&claims).map_err(|source| AnimError::Folder {
             dir: claims.clone(),
             source,
         })?;
-        Ok(Claims {
-            dir: claims,
-            started: SystemTime::now(),
-        })
+        Ok(Claims { dir: claims, since })
     }
 
     fn open(&self, frame_path: &Path) -> std::io::Result<File> {
@@ -79,13 +78,13 @@ impl Claims {
         Ok(Claim { _file: file })
     }
 
-    /// Whether another run wrote frame `frame` while this one ran: its file is newer than
-    /// this run's start and records the digest the manifest now gives it.
+    /// Whether another run sharing the folder wrote frame `frame`: its file is newer than
+    /// the sharing's start and records the digest the manifest now gives it.
     pub fn done_elsewhere(&self, anim: &Animation, dir: &Path, frame: u32) -> bool {
         let path = anim.frame_path(dir, frame);
         let newer = std::fs::metadata(&path)
             .and_then(|m| m.modified())
-            .is_ok_and(|t| t >= self.started);
+            .is_ok_and(|t| t >= self.since);
         if !newer {
             return false;
         }
@@ -144,8 +143,8 @@ mod tests {
     fn a_claim_is_held_until_dropped() {
         let dir = tempfile::tempdir().unwrap();
         let (one, two) = (
-            Claims::new(dir.path()).unwrap(),
-            Claims::new(dir.path()).unwrap(),
+            Claims::new(dir.path(), SystemTime::now()).unwrap(),
+            Claims::new(dir.path(), SystemTime::now()).unwrap(),
         );
         let frame = dir.path().join("frame_0003.png");
         let held = one.try_claim(&frame).unwrap().expect("free");
@@ -167,7 +166,7 @@ mod tests {
     #[test]
     fn only_free_claims_of_the_manifest_are_removed() {
         let dir = tempfile::tempdir().unwrap();
-        let claims = Claims::new(dir.path()).unwrap();
+        let claims = Claims::new(dir.path(), SystemTime::now()).unwrap();
         let frame = |n: u32| dir.path().join(format!("frame_{n:04}.png"));
         let held = claims.try_claim(&frame(1)).unwrap().unwrap();
         drop(claims.try_claim(&frame(2)).unwrap().unwrap());

@@ -13,7 +13,9 @@
 //! at its start and end (frames render side by side and share the process's threads, so
 //! a frame's own CPU time is an apportioned share; the shares add up to about the run's
 //! CPU time). `peak_memory_bytes` is the process's peak resident size (`VmHWM`) when the
-//! frame ended. Both are `null` where the system does not tell (off Linux).
+//! frame ended. Both are `null` where the system does not tell (off Linux). A record is
+//! read only from a regular file of at most 64 KiB (`read`): a link to `/dev/zero` or a
+//! FIFO under a record's name is no record.
 
 use super::provenance::RAW_RECORDS;
 use serde::{Deserialize, Serialize};
@@ -91,10 +93,19 @@ pub fn write(frame_path: &Path, cost: &FrameCost) -> std::io::Result<()> {
     Ok(())
 }
 
-/// The cost record of the frame at `frame_path`, if there is a readable one.
+/// The largest cost record read (they are about 250 bytes).
+pub const MAX_COST_BYTES: u64 = 64 << 10;
+
+/// The cost record of the frame at `frame_path`, if there is a readable one: a regular
+/// file (not a link, a FIFO or a device) of at most `MAX_COST_BYTES`.
 pub fn read(frame_path: &Path) -> Option<FrameCost> {
-    let text = std::fs::read_to_string(cost_path(frame_path)).ok()?;
-    serde_json::from_str(&text).ok()
+    let path = cost_path(frame_path);
+    // The tool writes records as files, never as links.
+    if !std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+        return None;
+    }
+    let bytes = whitted::input::read_regular(&path, MAX_COST_BYTES, "cost record").ok()?;
+    serde_json::from_slice(&bytes).ok()
 }
 
 /// The process's peak resident memory so far, in bytes (`VmHWM`); `None` off Linux.

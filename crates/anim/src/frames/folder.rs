@@ -34,13 +34,15 @@ fn frame_of(anim: &Animation, name: &str) -> Option<u32> {
     (format!("{frame:0width$}", width = digits.len()) == digits).then_some(frame)
 }
 
-/// The files of `dir` that hold frames past the end of `anim`'s sequence, by frame.
+/// The files of `dir` that hold frames past the end of `anim`'s sequence, by frame. A
+/// folder under a frame's name is no frame's file: it is not listed (nor removed).
 pub fn beyond(anim: &Animation, dir: &Path) -> Vec<(u32, PathBuf)> {
     let Ok(entries) = std::fs::read_dir(dir) else {
         return Vec::new();
     };
     let mut found: Vec<(u32, PathBuf)> = entries
         .filter_map(Result::ok)
+        .filter(|e| e.file_type().is_ok_and(|t| !t.is_dir()))
         .filter_map(|e| {
             let name = e.file_name().into_string().ok()?;
             let frame = frame_of(anim, &name)?;
@@ -173,12 +175,17 @@ pub fn clean(anim: &Animation, dir: &Path, force: bool) -> Result<Cleaned, AnimE
                 return Err(refusal);
             }
         }
+        // Each part is done however the one before it ended; the first error is said.
         let past = beyond(anim, dir);
         let paths: Vec<PathBuf> = past.iter().map(|(_, p)| p.clone()).collect();
-        remove(&paths).map_err(folder)?;
-        let temps = remove(&temporaries(anim, dir)).map_err(folder)?;
-        let claims = super::claim::remove_free(dir, |name| frame_of(anim, name).is_some())
-            .map_err(folder)?;
+        let removed = remove(&paths);
+        let temps = remove(&temporaries(anim, dir));
+        let claims = super::claim::remove_free(dir, |name| frame_of(anim, name).is_some());
+        let (_, temps, claims) = (
+            removed.map_err(folder)?,
+            temps.map_err(folder)?,
+            claims.map_err(folder)?,
+        );
         Ok(Cleaned {
             beyond: past.into_iter().map(|(f, _)| f).collect(),
             temporaries: temps,

@@ -4,10 +4,11 @@
 //! a frame's hook starts once every frame before it is settled (delivered, up to date,
 //! failed, or rendered by another run), and `finish` lets through what is left (frames
 //! after a failure or an interruption that were never rendered get no hook). The hooks
-//! run one after another on one thread of their own.
+//! run one after another on one thread of their own; once the run is stopped (SIGINT,
+//! SIGTERM) the hook running is ended and no other starts.
 
 use super::events::{Event, Reporter};
-use super::hooks::{FrameState, Hook, HookRun};
+use super::hooks::{FrameState, Hook, HookRun, Limits};
 use std::collections::HashMap;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -69,23 +70,26 @@ pub struct Hooked<'a> {
 
 impl<'a> Hooked<'a> {
     /// Wraps `inner` for a run of `order` (its frames, in the order it takes them);
-    /// `hook` runs for each frame, its frame's file at `path(frame)`, and each run of it
-    /// is `told`.
+    /// `hook` runs for each frame within `limits`, its frame's file at `path(frame)`, and
+    /// each run of it is `told`.
     pub fn new(
         inner: &'a dyn Reporter,
         order: &[u32],
-        hook: Option<Hook>,
+        hook: Option<(Hook, Limits)>,
         path: FramePath,
         told: Told,
     ) -> Self {
         let (to_hook, worker) = match hook {
             None => (None, None),
-            Some(hook) => {
+            Some((hook, limits)) => {
                 let (tx, rx) = channel::<(u32, FrameState)>();
                 let worker = std::thread::spawn(move || {
                     let mut failed = 0;
                     for (frame, state) in rx {
-                        let run = hook.run_frame(frame, &path(frame), state);
+                        if whitted_cmd::process::stopped(&limits.stop).is_some() {
+                            continue; // the run was stopped: no hook starts
+                        }
+                        let run = hook.run_frame(frame, &path(frame), state, &limits);
                         failed += usize::from(run.failed());
                         told(&run);
                     }
@@ -172,7 +176,7 @@ mod tests {
         let hooked = Hooked::new(
             &super::super::events::Silent,
             &[5, 1, 3, 2, 4],
-            Some(hook),
+            Some((hook, Limits::default())),
             path,
             told,
         );

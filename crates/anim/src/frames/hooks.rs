@@ -5,17 +5,33 @@
 //! the `shlex` crate) and started directly, never through a shell: `sh -c '…'` is how a
 //! user asks for one. The hook gets the run's environment plus its own variables
 //! (`ANIMATE_FRAME`, `ANIMATE_PATH`, `ANIMATE_STATE` for a frame; `ANIMATE_RENDERED`,
-//! `ANIMATE_FAILED`, `ANIMATE_EXIT` for the run), no standard input, and its standard
-//! output and error are collected: shown with the failure when it fails, passed on when
-//! it succeeds.
+//! `ANIMATE_FAILED`, `ANIMATE_EXIT` for the run), no standard input, and the last 64 KiB
+//! of its standard output and of its error are kept: shown with the failure when it
+//! fails, passed on when it succeeds. The run waits for the hook's process (not for what
+//! it left in the background), and ends its process group when the run is stopped or the
+//! hook's time (`Limits::timeout`) runs out (`hook_process`).
 //!
 //! Frame hooks run one at a time on a thread of their own (a slow hook never holds a
 //! render worker), in the order the run takes its frames (`Hooked`): a frame's hook waits
 //! until every frame before it in that order has been delivered, found up to date,
 //! failed, or left to another run, so the order is the same on any thread count.
 
+use super::hook_process::{self, Ended};
 use std::collections::HashMap;
-use std::process::{Command, Stdio};
+use std::process::Command;
+use std::sync::atomic::AtomicUsize;
+use std::sync::Arc;
+use std::time::Duration;
+
+/// What bounds a hook's run: the run's stop flag (a signal number once SIGINT or SIGTERM
+/// came) and the hook's time (`--hook-timeout`), if any.
+#[derive(Clone, Debug, Default)]
+pub struct Limits {
+    /// The run's stop flag.
+    pub stop: Arc<AtomicUsize>,
+    /// The most a hook may run.
+    pub timeout: Option<Duration>,
+}
 
 /// A command to run, split into words.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -115,24 +131,35 @@ impl Hook {
         &self.words
     }
 
-    /// Runs the hook with `env` added to the environment and waits for it.
-    pub fn run(&self, option: &'static str, frame: Option<u32>, env: &[(&str, String)]) -> HookRun {
+    /// Runs the hook with `env` added to the environment and waits for it, within
+    /// `limits`.
+    pub fn run(
+        &self,
+        option: &'static str,
+        frame: Option<u32>,
+        env: &[(&str, String)],
+        limits: &Limits,
+    ) -> HookRun {
         let vars: HashMap<&str, &String> = env.iter().map(|(k, v)| (*k, v)).collect();
-        let out = Command::new(&self.words[0])
-            .args(&self.words[1..])
-            .envs(vars)
-            .stdin(Stdio::null())
-            .output();
-        let (failure, output) = match out {
+        let mut cmd = Command::new(&self.words[0]);
+        cmd.args(&self.words[1..]).envs(vars);
+        let (failure, output) = match hook_process::run(&mut cmd, &limits.stop, limits.timeout) {
             Err(e) => (
                 Some(format!("cannot start {:?}: {e}", self.words[0])),
                 String::new(),
             ),
-            Ok(out) => {
-                let mut text = String::from_utf8_lossy(&out.stdout).into_owned();
-                text.push_str(&String::from_utf8_lossy(&out.stderr));
-                let failure = (!out.status.success()).then(|| shown_status(&out.status));
-                (failure, text)
+            Ok(done) => {
+                let failure = match done.ended {
+                    Ended::Exited(status) => (!status.success()).then(|| shown_status(&status)),
+                    Ended::Stopped(sig) => Some(format!(
+                        "stopped with the run by signal {sig}: its process group was ended"
+                    )),
+                    Ended::TimedOut(limit) => Some(format!(
+                        "ran past --hook-timeout {}: its process group was ended",
+                        seconds(limit)
+                    )),
+                };
+                (failure, done.output)
             }
         };
         HookRun {
@@ -144,25 +171,36 @@ impl Hook {
     }
 
     /// Runs the frame hook for `frame`, written at `path`, in `state`.
-    pub fn run_frame(&self, frame: u32, path: &std::path::Path, state: FrameState) -> HookRun {
+    pub fn run_frame(
+        &self,
+        frame: u32,
+        path: &std::path::Path,
+        state: FrameState,
+        limits: &Limits,
+    ) -> HookRun {
         let env = [
             ("ANIMATE_FRAME", frame.to_string()),
             ("ANIMATE_PATH", path.display().to_string()),
             ("ANIMATE_STATE", state.word().to_string()),
         ];
-        self.run("--on-frame", Some(frame), &env)
+        self.run("--on-frame", Some(frame), &env, limits)
     }
 
     /// Runs the run's hook: `rendered` frames delivered, `failed` frames that failed,
     /// `exit` the status the run ends with.
-    pub fn run_done(&self, rendered: usize, failed: usize, exit: u8) -> HookRun {
+    pub fn run_done(&self, rendered: usize, failed: usize, exit: u8, limits: &Limits) -> HookRun {
         let env = [
             ("ANIMATE_RENDERED", rendered.to_string()),
             ("ANIMATE_FAILED", failed.to_string()),
             ("ANIMATE_EXIT", exit.to_string()),
         ];
-        self.run("--on-done", None, &env)
+        self.run("--on-done", None, &env, limits)
     }
+}
+
+/// A duration as `--hook-timeout` takes it: `5 s`, `0.25 s`.
+fn seconds(d: Duration) -> String {
+    format!("{} s", d.as_secs_f64())
 }
 
 fn shown_status(status: &std::process::ExitStatus) -> String {
@@ -193,7 +231,8 @@ mod tests {
     fn no_shell_between_the_words_and_the_program() {
         // `$ANIMATE_FRAME` stays a word: no shell expands it.
         let hook: Hook = "echo $ANIMATE_FRAME ; x".parse().unwrap();
-        let run = hook.run_frame(3, std::path::Path::new("f.png"), FrameState::Rendered);
+        let path = std::path::Path::new("f.png");
+        let run = hook.run_frame(3, path, FrameState::Rendered, &Limits::default());
         assert_eq!(run.output, "$ANIMATE_FRAME ; x\n");
         assert!(!run.failed());
     }
@@ -201,12 +240,12 @@ mod tests {
     #[test]
     fn a_failure_is_reported_with_its_output() {
         let hook: Hook = "sh -c 'echo out; echo err >&2; exit 3'".parse().unwrap();
-        let run = hook.run_done(2, 1, 1);
+        let run = hook.run_done(2, 1, 1, &Limits::default());
         assert_eq!(run.failure.as_deref(), Some("exit status 3"));
         let said = "--on-done hook failed (exit status 3), printing:\n    out\n    err";
         assert_eq!(run.report(), said);
         let missing: Hook = "no-such-program-here".parse().unwrap();
-        let run = missing.run_done(0, 0, 0);
+        let run = missing.run_done(0, 0, 0, &Limits::default());
         assert!(run
             .failure
             .unwrap()

@@ -11,7 +11,13 @@
 //! pid 4242
 //! manifest /home/me/animations/orbit.toml
 //! started 1767225600 (seconds since 1970)
+//! shared since 1767225581.250918112
 //! ```
+//!
+//! `shared since` is when the first of the runs now sharing the folder took it (a run
+//! alone starts the sharing; a run that joins keeps the time it finds): a frame written
+//! since then records the work of those runs, which a joining run does not do again
+//! (`claim`).
 //!
 //! The look at the other manifests' locks and the taking of one's own happen under an
 //! exclusive lock on `.whitted-lock` (held for milliseconds), so two runs cannot both
@@ -27,6 +33,7 @@ use sha2::{Digest, Sha256};
 use std::fs::{File, OpenOptions, TryLockError};
 use std::io::{Read, Seek, Write};
 use std::path::Path;
+use std::time::{Duration, SystemTime, UNIX_EPOCH};
 
 /// The gate's name inside a frame folder; manifests' locks are named after it.
 pub const LOCK_FILE: &str = ".whitted-lock";
@@ -37,6 +44,7 @@ pub struct FolderLock {
     _file: File,
     alone: bool,
     shared_with: Option<u32>,
+    since: SystemTime,
 }
 
 impl FolderLock {
@@ -50,6 +58,21 @@ impl FolderLock {
     pub fn shared_with(&self) -> Option<u32> {
         self.shared_with
     }
+
+    /// When the first of the runs sharing the folder with this one took it (this run's
+    /// own start when it was alone).
+    pub fn since(&self) -> SystemTime {
+        self.since
+    }
+}
+
+/// The `shared since` time of a lock file's text (seconds and nanoseconds since 1970).
+fn shared_since(text: &str) -> Option<SystemTime> {
+    let value = text.lines().find_map(|l| l.strip_prefix("shared since "))?;
+    let (secs, nanos) = value.trim().split_once('.')?;
+    let nanos: u32 = nanos.parse().ok().filter(|&n| n < 1_000_000_000)?;
+    let since = Duration::new(secs.parse().ok()?, nanos);
+    UNIX_EPOCH.checked_add(since)
 }
 
 fn open(path: &Path) -> std::io::Result<File> {
@@ -61,12 +84,17 @@ fn open(path: &Path) -> std::io::Result<File> {
         .open(path)
 }
 
-/// Who holds a lock file, from its text.
-fn holder(mut file: &File) -> String {
+/// A lock file's text (its first 4 KiB).
+fn text_of(mut file: &File) -> String {
     let mut text = String::new();
     let _ = file.rewind();
     let _ = file.take(4096).read_to_string(&mut text);
-    let text = text.lines().collect::<Vec<_>>().join(", ");
+    text
+}
+
+/// Who holds a lock file, from its text.
+fn holder(file: &File) -> String {
+    let text = text_of(file).lines().collect::<Vec<_>>().join(", ");
     if text.is_empty() {
         "a run that has not yet said who it is".into()
     } else {
@@ -122,21 +150,28 @@ pub fn lock_with<T>(
         Err(TryLockError::Error(e)) => return Err(folder(e)),
     };
     file.lock_shared().map_err(folder)?;
-    let shared_with = match alone {
-        true => None,
-        false => holder(&file)
-            .strip_prefix("pid ")
-            .and_then(|rest| rest.split(',').next())
-            .and_then(|pid| pid.trim().parse().ok()),
+    let now = SystemTime::now();
+    let before = text_of(&file);
+    let (shared_with, since) = match alone {
+        true => (None, now),
+        false => (
+            before
+                .strip_prefix("pid ")
+                .and_then(|rest| rest.lines().next())
+                .and_then(|pid| pid.trim().parse().ok()),
+            // A run of a version that did not say: this run's start, as before.
+            shared_since(&before).map_or(now, |t| t.min(now)),
+        ),
     };
-    let started = std::time::SystemTime::now()
-        .duration_since(std::time::UNIX_EPOCH)
-        .map_or(0, |d| d.as_secs());
+    let epoch = |t: SystemTime| t.duration_since(UNIX_EPOCH).unwrap_or_default();
     let manifest = std::path::absolute(manifest).unwrap_or_else(|_| manifest.to_path_buf());
     let text = format!(
-        "pid {}\nmanifest {}\nstarted {started} (seconds since 1970)\n",
+        "pid {}\nmanifest {}\nstarted {} (seconds since 1970)\nshared since {}.{:09}\n",
         std::process::id(),
-        manifest.display()
+        manifest.display(),
+        epoch(now).as_secs(),
+        epoch(since).as_secs(),
+        epoch(since).subsec_nanos()
     );
     file.set_len(0).map_err(folder)?;
     file.rewind().map_err(folder)?;
@@ -147,6 +182,7 @@ pub fn lock_with<T>(
         _file: file,
         alone,
         shared_with,
+        since,
     };
     Ok((held, value))
 }
@@ -164,6 +200,11 @@ mod tests {
         assert!(!shard.alone());
         assert_eq!(shard.shared_with(), Some(std::process::id()));
         assert_eq!(first.shared_with(), None);
+        // The sharing started with the first run, to the nanosecond.
+        assert_eq!(shard.since(), first.since());
+        let read = shared_since("pid 1\nshared since 1767225600.000000250\n").unwrap();
+        assert_eq!(read, UNIX_EPOCH + Duration::new(1_767_225_600, 250));
+        assert_eq!(shared_since("pid 1\nstarted 5\n"), None);
         drop(shard);
         let e = lock(dir.path(), Path::new("/a/two.toml")).unwrap_err();
         let shown = e.to_string();

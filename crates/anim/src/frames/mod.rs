@@ -5,6 +5,7 @@
 //! - `run`: the render command as a library call (frames, destination, checks first);
 //!   `policy`: what a run may keep or replace, and how its video is encoded;
 //! - `pipeline`: rendering in parallel into a folder or a stream, reporting `events`;
+//!   `found`: what a run makes of the files already under its frames' names;
 //! - `provenance`: what made a frame, recorded in the frame file; `status`: which frames
 //!   of a folder are up to date, stale or missing;
 //! - `folder`: what else a frame folder holds (frames past the end, temporaries of
@@ -16,8 +17,10 @@
 //! - `balance`: shards of equal predicted cost from a small pre-pass; `estimate`: the
 //!   predicted cost and time of a render; `cost`: what each frame cost, recorded beside
 //!   it;
-//! - `hooks`: the user's commands after each frame and after the run; `hooked`: the
-//!   reporter that counts a run's frames and lines the frame hooks up in its order.
+//! - `hooks`: the user's commands after each frame and after the run; `hook_process`:
+//!   a hook's process group, waited for, stopped with the run or when its time is up,
+//!   its output kept as a bounded tail; `hooked`: the reporter that counts a run's
+//!   frames and lines the frame hooks up in its order.
 
 pub mod balance;
 pub mod claim;
@@ -26,6 +29,8 @@ pub mod encode;
 pub mod estimate;
 pub mod events;
 pub mod folder;
+mod found;
+pub mod hook_process;
 pub mod hooked;
 pub mod hooks;
 pub mod lock;

@@ -9,7 +9,8 @@
 //!   frame another run holds is left, then waited for at the end and taken over if that
 //!   run died. With `resume`, frames
 //!   whose file records the digest the manifest now gives them are left untouched
-//!   (`status`); frames recorded by another manifest are not overwritten unless forced.
+//!   (`status`); frames recorded by another manifest, files the tool did not write and,
+//!   for a draft, the manifest's finals are not overwritten unless forced.
 //! - Stream (`--stdout`, `--video`): frames render in windows of twice the thread count
 //!   and are written in order.
 //!
@@ -22,9 +23,10 @@ use super::claim::Claims;
 use super::cost::{self, Meter};
 use super::events::{Event, Reporter};
 use super::folder;
+use super::found::{found, refuse_foreign, Found};
 use super::owner::{self, Owner};
 use super::policy::Policy;
-use super::provenance::{self, raw_record_path, Inspection};
+use super::provenance::{self, raw_record_path};
 use super::status;
 use crate::error::AnimError;
 use crate::project::Animation;
@@ -127,58 +129,6 @@ fn write_raw_record(frame_path: &Path, stamp: &[(String, String)]) -> std::io::R
     Ok(())
 }
 
-/// What a run makes of the file of a frame it is asked for.
-enum Found {
-    /// Up to date (`--resume`): left as it is.
-    UpToDate,
-    /// Recorded by this other manifest: not overwritten unless forced.
-    Foreign(String),
-    /// A sound image with no record, which the tool did not write (a photo under the
-    /// frame's name): not overwritten unless forced.
-    Unrecorded(std::path::PathBuf),
-    /// Missing, stale or damaged, or the run is not told to look: to render.
-    Render,
-}
-
-/// Looks once at frame `frame`'s file: whether `--resume` may skip it (its record the
-/// digest the manifest now gives, and with `--verify` its pixels decode) and, if not,
-/// whether it records another manifest than `ours`.
-fn found(anim: &Animation, dir: &Path, frame: u32, policy: &Policy, ours: Option<&str>) -> Found {
-    if !policy.resume && policy.force {
-        return Found::Render;
-    }
-    let path = anim.frame_path(dir, frame);
-    let (format, w, h) = (anim.format(), anim.width, anim.height);
-    let Inspection::Sound(record) = provenance::inspect(&path, format, w, h, false) else {
-        return Found::Render;
-    };
-    if policy.resume
-        && record.digest == Some(provenance::digest(anim, frame))
-        && (!policy.verify || provenance::decode(&path, format, w, h).is_ok())
-    {
-        return Found::UpToDate;
-    }
-    match record.manifest {
-        Some(m) if !policy.force && Some(m.as_str()) != ours => Found::Foreign(m),
-        None if !policy.force => Found::Unrecorded(path),
-        _ => Found::Render,
-    }
-}
-
-/// Refuses to overwrite frames recorded by another manifest than `anim`'s (`foreign`:
-/// each frame and the manifest its file names).
-fn refuse_foreign(dir: &Path, foreign: &[(u32, String)]) -> Result<(), AnimError> {
-    match foreign.first() {
-        None => Ok(()),
-        Some((_, other)) => Err(AnimError::Foreign {
-            dir: dir.to_path_buf(),
-            other: other.clone(),
-            frames: status::ranges(&foreign.iter().map(|(f, _)| *f).collect::<Vec<_>>()),
-            count: foreign.len(),
-        }),
-    }
-}
-
 /// Renders `frames` into `dir` (created if missing), in parallel, holding the folder's
 /// lock; temporaries that killed runs left are removed first. With `policy.resume`,
 /// frames that are up to date are skipped (and reported so); frames recorded by another
@@ -202,13 +152,14 @@ pub(crate) fn render_to_folder(
         .par_iter()
         .map(|&f| found(anim, dir, f, policy, ours.as_deref()))
         .collect();
-    let (mut todo, mut done, mut foreign, mut unrecorded) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    let (mut todo, mut done, mut foreign, mut unrecorded, mut finals) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
     for (&f, seen) in frames.iter().zip(seen) {
         match seen {
             Found::UpToDate => done.push(f),
             Found::Foreign(m) => foreign.push((f, m)),
             Found::Unrecorded(path) => unrecorded.push((path, Owner::Nobody)),
+            Found::Final => finals.push(f),
             Found::Render => todo.push(f),
         }
     }
@@ -216,10 +167,18 @@ pub(crate) fn render_to_folder(
     if let Some(refusal) = owner::refusal("replaced", &unrecorded) {
         return Err(refusal);
     }
+    if !finals.is_empty() {
+        return Err(AnimError::Finals {
+            dir: dir.to_path_buf(),
+            frames: status::ranges(&finals),
+            count: finals.len(),
+            draft: anim.manifest.draft.clone().unwrap_or_default(),
+        });
+    }
     if let Some(pid) = lock.shared_with() {
         reporter.event(Event::Sharing { pid });
     }
-    let claims = Claims::new(dir)?;
+    let claims = Claims::new(dir, lock.since())?;
     reporter.event(Event::Started {
         total: frames.len(),
         skipped: done.len(),

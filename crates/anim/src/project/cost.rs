@@ -5,10 +5,24 @@
 
 use super::Animation;
 use crate::error::AnimError;
+use std::time::Instant;
 use whitted::output::{encode_layers, encode_with};
 use whitted::passes::record::PixelSum;
 use whitted::render::estimate;
 use whitted::trace::RayCount;
+
+/// A frame drawn and encoded as a run makes it, timed (`Animation::render_timed`).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Timed {
+    /// Its rays.
+    pub rays: RayCount,
+    /// Its size, encoded (without its provenance).
+    pub bytes: usize,
+    /// Seconds to draw it.
+    pub render_s: f64,
+    /// Seconds to encode it.
+    pub encode_s: f64,
+}
 
 /// The memory frames in flight may take (pixels and their encoded copy): 1 GiB.
 pub const FRAME_MEMORY: usize = 1 << 30;
@@ -63,17 +77,35 @@ impl<'p> Animation<'p> {
     /// Draws frame `frame` as a run makes it (an EXR's layers with its passes) and
     /// encodes it in memory, as what a frame costs is timed: its rays and its bytes.
     pub fn render_encoded(&self, frame: u32) -> Result<(RayCount, usize), AnimError> {
+        self.render_timed(frame).map(|t| (t.rays, t.bytes))
+    }
+
+    /// `render_encoded`, timing the drawing (in parallel over the pool) and the encoding
+    /// (on one thread) apart.
+    pub fn render_timed(&self, frame: u32) -> Result<Timed, AnimError> {
         let format = self.format();
         let mut bytes = Vec::new();
-        let (encoded, rays) = if format.is_layered() {
+        let start = Instant::now();
+        let (encoded, rays, render_s) = if format.is_layered() {
             let (layers, rays) = self.render_layers(frame, format.passes())?;
-            (encode_layers(layers, format, &[], &mut bytes), rays)
+            let render_s = start.elapsed().as_secs_f64();
+            (
+                encode_layers(layers, format, &[], &mut bytes),
+                rays,
+                render_s,
+            )
         } else {
             let (image, rays) = self.render(frame)?;
-            (encode_with(&image, format, &[], &mut bytes), rays)
+            let render_s = start.elapsed().as_secs_f64();
+            (encode_with(&image, format, &[], &mut bytes), rays, render_s)
         };
         encoded.map_err(|source| AnimError::Write { frame, source })?;
-        Ok((rays, bytes.len()))
+        Ok(Timed {
+            rays,
+            bytes: bytes.len(),
+            render_s,
+            encode_s: start.elapsed().as_secs_f64() - render_s,
+        })
     }
 
     /// Past `estimate::ENORMOUS` camera rays for `frames`: the warning, with the time a

@@ -55,19 +55,55 @@ impl Draft {
         parts.join(", ")
     }
 
-    /// A draft's own folder beside the final one: `DIR-draft-WxH`, then `-sN` and `-aa`.
-    pub fn folder(&self, dir: &Path, base: (u32, u32)) -> PathBuf {
+    /// A draft's own folder beside the final one `dir` of the manifest at `manifest`:
+    /// `DIR-draft-WxH`, then `-sN` and `-aa`, DIR read without its `.` and `..` steps
+    /// (`frames/.` is `frames`). When `dir` is the manifest's own folder or one above it
+    /// (`.`, `..`), whose name says nothing of the animation and whose side is outside the
+    /// manifest's folder, the draft's folder is `STEM-draft-WxH` inside the manifest's
+    /// folder, STEM the manifest's file name without `.toml`.
+    pub fn folder(&self, dir: &Path, manifest: &Path, base: (u32, u32)) -> PathBuf {
         let (w, h) = self.size_of(base);
-        let mut name = dir.file_name().unwrap_or_default().to_os_string();
-        name.push(format!("-draft-{w}x{h}"));
+        let mut suffix = format!("-draft-{w}x{h}");
         if let Some(n) = self.samples {
-            name.push(format!("-s{n}"));
+            suffix.push_str(&format!("-s{n}"));
         }
         if self.aa.is_some() {
-            name.push("-aa");
+            suffix.push_str("-aa");
         }
-        dir.with_file_name(name)
+        let home = manifest.parent().unwrap_or(Path::new(""));
+        let dir = lexical(dir);
+        match dir.file_name() {
+            Some(name) if !lexical(home).starts_with(&dir) => {
+                let mut name = name.to_os_string();
+                name.push(suffix);
+                dir.with_file_name(name)
+            }
+            _ => {
+                let mut name = manifest.file_stem().unwrap_or_default().to_os_string();
+                name.push(suffix);
+                home.join(name)
+            }
+        }
     }
+}
+
+/// `path` without its `.` steps and with each `..` taking the step before it away, where
+/// there is one to take (no look at the file system: `a/./b/..` is `a`, `../x` stays).
+fn lexical(path: &Path) -> PathBuf {
+    use std::path::Component;
+    let mut out = PathBuf::new();
+    for c in path.components() {
+        match c {
+            Component::CurDir => {}
+            Component::ParentDir
+                if matches!(out.components().next_back(), Some(Component::Normal(_))) =>
+            {
+                out.pop();
+            }
+            c => out.push(c),
+        }
+    }
+    out
 }
 
 impl Project {
@@ -96,10 +132,10 @@ impl Project {
             m.render.samples = 1;
             m.render.antialias = Some(a);
         }
-        m.output.dir = draft.folder(&m.output.dir, base);
+        m.output.dir = draft.folder(&m.output.dir, &m.path, base);
         if let Some(check) = &mut m.check {
             // A draft is checked against references of its own.
-            check.references = draft.folder(&check.references, base);
+            check.references = draft.folder(&check.references, &m.path, base);
         }
         m.draft = Some(draft.label(base));
         Ok(project)
@@ -119,7 +155,7 @@ mod tests {
         assert_eq!(scale.size_of((640, 480)), (160, 120));
         assert_eq!(scale.size_of((3, 2)), (1, 1));
         assert_eq!(scale.label((640, 480)), "160x120");
-        let out = scale.folder(Path::new("/a/frames"), (640, 480));
+        let out = scale.folder(Path::new("/a/frames"), Path::new("/a/m.toml"), (640, 480));
         assert_eq!(out, Path::new("/a/frames-draft-160x120"));
         let both = Draft {
             size: Some((64, 36)),
@@ -129,8 +165,35 @@ mod tests {
         };
         assert_eq!(both.size_of((640, 480)), (64, 36));
         assert_eq!(both.label((640, 480)), "64x36, samples 2");
-        let out = both.folder(Path::new("frames"), (640, 480));
+        let out = both.folder(Path::new("frames"), Path::new("m.toml"), (640, 480));
         assert_eq!(out, Path::new("frames-draft-64x36-s2"));
+        // Read without `.` and `..`; the manifest's folder or one above it: inside it.
+        let half = Draft {
+            size: Some((16, 12)),
+            ..Draft::default()
+        };
+        let folder = |dir: &str, m: &str| half.folder(Path::new(dir), Path::new(m), (32, 24));
+        assert_eq!(
+            folder("/a/frames/.", "/a/m.toml"),
+            Path::new("/a/frames-draft-16x12")
+        );
+        assert_eq!(
+            folder("/a/b/../f", "/a/m.toml"),
+            Path::new("/a/f-draft-16x12")
+        );
+        assert_eq!(folder("/a/.", "/a/m.toml"), Path::new("/a/m-draft-16x12"));
+        assert_eq!(
+            folder("/a/b/..", "/a/b/m.toml"),
+            Path::new("/a/b/m-draft-16x12")
+        );
+        assert_eq!(folder(".", "m.toml"), Path::new("m-draft-16x12"));
+        assert_eq!(folder("./..", "m.toml"), Path::new("m-draft-16x12"));
+        assert_eq!(
+            folder("sub/.", "sub/m.toml"),
+            Path::new("sub/m-draft-16x12")
+        );
+        assert_eq!(folder("../out", "m.toml"), Path::new("../out-draft-16x12"));
+        assert_eq!(folder("/", "/m.toml"), Path::new("/m-draft-16x12"));
         let aa = Draft {
             aa: Some("adaptive:0.5:1".parse().unwrap()),
             ..Draft::default()

@@ -279,7 +279,7 @@ pub(crate) fn raw_record_path(frame_path: &Path) -> PathBuf {
 }
 
 mod inspect;
-pub(crate) use inspect::{decode, inspect, pixels_line, Inspection, Record};
+pub(crate) use inspect::{decode, inspect, pixels_line, Inspection, Record, MANIFEST_KEY};
 
 #[cfg(test)]
 mod tests;
