@@ -83,10 +83,12 @@ pub const MAX_TEXTURE_PIXELS: u64 = 1 << 24;
 /// however many files it names (25 files of 16384 × 1024 took 3.8 GB).
 pub const MAX_SCENE_TEXTURE_PIXELS: u64 = MAX_TEXTURE_PIXELS;
 /// The most objects one scene may have, of every kind together (Scene.txt's records,
-/// extension shapes and CSG blocks, NFF's spheres, cones and polygons' triangles): as many
-/// as Scene.txt allows of one kind. A mesh is one object; its triangles have their own
-/// budget.
-pub const MAX_SCENE_OBJECTS: u64 = MAX_COUNT;
+/// extension shapes and CSG blocks, NFF's spheres, cones and polygons' triangles):
+/// 300,000. An object takes about 1 KB once parsed and in the tree (200,000 spheres
+/// rendered in 220 MB), so a scene at the budget, or a file refused past it (4 M spheres
+/// in 79 MB of NFF), stays under 500 MB; a million objects took 1.1 GB. A mesh is one
+/// object; its triangles have their own budget.
+pub const MAX_SCENE_OBJECTS: u64 = 300_000;
 /// The most triangles all the meshes of one scene may have together: what one mesh may
 /// have.
 pub const MAX_SCENE_TRIANGLES: u64 = MAX_MESH_TRIANGLES;
