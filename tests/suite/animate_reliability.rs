@@ -72,8 +72,19 @@ fn status_does_not_follow_a_frame_into_a_device_or_fifo() {
     let text = String::from_utf8_lossy(&out.stdout);
     assert_eq!(out.status.code(), Some(1), "{text}");
     assert!(text.contains("      stale:       2  1-2\n"), "{text}");
-    // --resume replaces them with frames (the rename replaces the link and the FIFO).
+    // The link and the FIFO are not the tool's: --resume refuses them, naming the frames,
+    // and leaves them; with --force it replaces them with frames (the rename replaces the
+    // link and the FIFO, never the link's target).
     let out = within(animate_cmd().arg(&manifest).args(["--resume", "-q"]), 20);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(err.contains("--force"), "{err}");
+    assert!(std::fs::symlink_metadata(frames.join("frame_0001.png"))
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    let forced = ["--resume", "--force", "-q"];
+    let out = within(animate_cmd().arg(&manifest).args(forced), 20);
     assert!(out.status.success());
     assert!(std::fs::symlink_metadata(frames.join("frame_0001.png"))
         .unwrap()

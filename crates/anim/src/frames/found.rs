@@ -44,11 +44,12 @@ pub(crate) fn found(
     let (format, w, h) = (anim.format(), anim.width, anim.height);
     let record = match provenance::inspect(&path, format, w, h, false) {
         Inspection::Sound(record) => record,
-        // A regular file that is no frame of the format (a user's text under a frame's
-        // name) is not the tool's; links and FIFOs are replaced (the link, not its target).
+        // Whatever is under a frame's name and is no frame of the format (a user's text, a
+        // link, a FIFO) is not the tool's: replaced only with --force (the link, never its
+        // target). A folder is left to the write, which refuses it.
         Inspection::Damaged(_)
             if !policy.force
-                && std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file())
+                && std::fs::symlink_metadata(&path).is_ok_and(|m| !m.is_dir())
                 && !owner::looks_like_a_frame(anim, &path, format) =>
         {
             return Found::Unrecorded(path)
