@@ -145,7 +145,8 @@ impl<'a> Tracer<'a> {
     /// `primary`, with the first hit (and that of its mirror reflection off a polished
     /// plane) looked up in the lists of its screen tile (`accel::TileView`: the same
     /// answers, found faster) when they are given and the ray leaves their eye.
-    #[inline]
+    // Always inlined: the row loop's per-pixel call (see `render::draw_row`).
+    #[inline(always)]
     pub fn primary_in(&self, tile: Option<Hint>, ray: &Ray, count: &mut RayCount) -> Color {
         self.primary_rec(tile, ray, count, &mut NoRecord)
     }
