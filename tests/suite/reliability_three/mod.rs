@@ -21,14 +21,14 @@ mod view;
 
 /// Long enough for a loaded two-core machine to render twelve 64×48 frames; the fault
 /// it guards against never ends at all.
-pub(super) const PROMPT: Duration = Duration::from_secs(60);
+pub(crate) const PROMPT: Duration = Duration::from_secs(60);
 
-pub(super) fn text(b: &[u8]) -> String {
+pub(crate) fn text(b: &[u8]) -> String {
     String::from_utf8_lossy(b).into_owned()
 }
 
 /// `animate ARGS` run to its end within `PROMPT`: (status, stdout, stderr).
-pub(super) fn run(args: &[&dyn AsRef<std::ffi::OsStr>]) -> (Option<i32>, String, String) {
+pub(crate) fn run(args: &[&dyn AsRef<std::ffi::OsStr>]) -> (Option<i32>, String, String) {
     let mut cmd = std::process::Command::new(assert_cmd::cargo::cargo_bin("animate"));
     for a in args {
         cmd.arg(a);
