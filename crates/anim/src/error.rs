@@ -203,10 +203,10 @@ pub enum AnimError {
         /// Why.
         why: String,
     },
-    /// Standard output is closed, so streamed frames would go nowhere (bad input).
     /// A job template cannot carry what it was asked (bad input: nothing was written).
     #[error("{0}")]
     Job(String),
+    /// Standard output is closed, so streamed frames would go nowhere (bad input).
     #[error("standard output is closed: the frames would go nowhere")]
     StdoutClosed,
     /// The run was stopped by this signal number (2 SIGINT, 15 SIGTERM) after the frames

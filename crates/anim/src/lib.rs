@@ -19,6 +19,8 @@
 //! - `error`: why a run stopped, and its exit status; `typo`: the "did you mean" of every
 //!   message that refuses a name.
 
+#![warn(missing_docs)]
+
 pub mod check;
 pub mod commands;
 pub mod error;
