@@ -6,7 +6,7 @@
 //! the facets; bad modifiers are located errors.
 
 use crate::mesh_povray::compare;
-use crate::support::raytrace;
+use crate::support::render_scene;
 use std::f64::consts::TAU;
 use std::path::Path;
 
@@ -108,17 +108,7 @@ fn a_prism_without_normals_is_smooth_30_as_povray_draws_it() {
 /// Renders `records` beside `prism.obj`; the PNG bytes, or the stderr of a failure.
 fn render(dir: &Path, records: &str) -> Result<Vec<u8>, String> {
     std::fs::write(dir.join("prism.obj"), prism_obj()).unwrap();
-    let scene = dir.join("scene.txt");
-    std::fs::write(&scene, format!("{BASE}{records}")).unwrap();
-    let png = dir.join("out.png");
-    let _ = std::fs::remove_file(&png);
-    let out = raytrace().arg(&scene).arg("-o").arg(&png).output().unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr).replace(&*dir.display().to_string(), "DIR");
-    match out.status.code() {
-        Some(0) => Ok(std::fs::read(&png).unwrap()),
-        Some(2) if !png.exists() && !stderr.contains("panicked") => Err(stderr),
-        code => panic!("exit {code:?}: {stderr}"),
-    }
+    render_scene(dir, &format!("{BASE}{records}"))
 }
 
 const RED: &str = "1 0.9 0.3 0.2  0.7 0 0 1 0 0";

@@ -3,7 +3,7 @@
 //! bytes as the unit cube written at the origin and placed by the same `rotate` and
 //! `translate`; a bad Size, and either modifier on another record, are located errors.
 
-use crate::support::raytrace;
+use crate::support::render_scene;
 
 const BASE: &str = "64 48  0 2 5  0 0.5 0  0 0  0 1 0 1
 0 0 0  0 1 0   1 0.8 0.8 0.8   1 0 0 1 0 0
@@ -34,17 +34,7 @@ fn cube(lo: [f64; 3], s: f64) -> String {
 fn render(dir: &std::path::Path, records: &str) -> Result<Vec<u8>, String> {
     std::fs::write(dir.join("far.obj"), cube([10.0, 20.0, 30.0], 2.0)).unwrap();
     std::fs::write(dir.join("unit.obj"), cube([-0.5, -0.5, -0.5], 1.0)).unwrap();
-    let scene = dir.join("scene.txt");
-    std::fs::write(&scene, format!("{BASE}{records}")).unwrap();
-    let png = dir.join("out.png");
-    let _ = std::fs::remove_file(&png);
-    let out = raytrace().arg(&scene).arg("-o").arg(&png).output().unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr).replace(&*dir.display().to_string(), "DIR");
-    match out.status.code() {
-        Some(0) => Ok(std::fs::read(&png).unwrap()),
-        Some(2) if !png.exists() && !stderr.contains("panicked") => Err(stderr),
-        code => panic!("exit {code:?}: {stderr}"),
-    }
+    render_scene(dir, &format!("{BASE}{records}"))
 }
 
 const RED: &str = "1 0.9 0.3 0.2  0.7 0 0 1 0 0";

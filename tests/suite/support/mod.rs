@@ -98,6 +98,23 @@ pub fn raytrace() -> Command {
     Command::cargo_bin("raytrace").unwrap()
 }
 
+/// Writes `text` as DIR/scene.txt and renders it with `raytrace` into DIR/out.png: the
+/// PNG's bytes, or the standard error (DIR written `DIR`) of a refusal (exit 2, no image
+/// written); any other outcome fails the test.
+pub fn render_scene(dir: &Path, text: &str) -> Result<Vec<u8>, String> {
+    let scene = dir.join("scene.txt");
+    std::fs::write(&scene, text).unwrap();
+    let png = dir.join("out.png");
+    let _ = std::fs::remove_file(&png);
+    let out = raytrace().arg(&scene).arg("-o").arg(&png).output().unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr).replace(&*dir.display().to_string(), "DIR");
+    match out.status.code() {
+        Some(0) => Ok(std::fs::read(&png).unwrap()),
+        Some(2) if !png.exists() && !stderr.contains("panicked") => Err(stderr),
+        code => panic!("exit {code:?}: {stderr}"),
+    }
+}
+
 /// The visible files of a folder, sorted, with their bytes.
 pub fn files(dir: &Path) -> Vec<(String, Vec<u8>)> {
     let mut out: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir)
