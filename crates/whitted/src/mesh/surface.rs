@@ -72,12 +72,13 @@ impl Mesh {
             Texture::Image(image) if image.map == MapKind::Uv => Some(image),
             _ => None,
         };
+        let mut object = Object {
+            shape,
+            texture: texture.clone(),
+            material: *material,
+        };
         if image_uv.is_none() && self.colors.is_empty() {
-            return Object {
-                shape,
-                texture: texture.clone(),
-                material: *material,
-            };
+            return object;
         }
         let mut colour = match image_uv {
             Some(image) => {
@@ -86,12 +87,7 @@ impl Mesh {
                     .pixels
                     .sample(u / image.size, v / image.size, image.interp)
             }
-            None => Object {
-                shape: shape.clone(),
-                texture: texture.clone(),
-                material: *material,
-            }
-            .color_at(p),
+            None => object.color_at(p),
         };
         if !self.colors.is_empty() {
             let w = self.weights(k, p);
@@ -100,10 +96,7 @@ impl Mesh {
                 .map(|i| w[i] * self.colors[t[i] as usize])
                 .sum::<DVec3>();
         }
-        Object {
-            shape,
-            texture: Texture::Uniform(colour),
-            material: *material,
-        }
+        object.texture = Texture::Uniform(colour);
+        object
     }
 }
