@@ -38,6 +38,23 @@ pub enum Highlight {
         /// The Phong exponent, NFF's Shine.
         shine: f64,
     },
+    /// A glTF material's (SPEC §18, `gltf::material`): a Phong highlight from its
+    /// roughness, the tint its mirror reflection takes (the base colour of a metal) and
+    /// the light it emits.
+    Gltf(Pbr),
+}
+
+/// What a glTF material adds to §2's terms (`Highlight::Gltf`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pbr {
+    /// The highlight's weight, as NFF's Ks.
+    pub ks: f64,
+    /// The Phong exponent.
+    pub shine: f64,
+    /// The colour the reflected ray's term is multiplied by (white for a dielectric).
+    pub tint: Color,
+    /// Unlit colour added at every hit (`emissiveFactor` × `emissiveTexture`).
+    pub emission: Color,
 }
 
 /// One renderable object (not `Copy`: its shape may be a shared CSG block).

@@ -17,6 +17,8 @@ pub trait Record {
     fn surface(&mut self, _p: DVec3, _n: DVec3, _albedo: Color) {}
     /// The ambient term.
     fn ambient(&mut self, _c: Color) {}
+    /// The light the surface emits (a glTF material's emission).
+    fn emission(&mut self, _c: Color) {}
     /// One light's diffuse and specular terms, each already times its shadow transmission.
     fn light(&mut self, _diffuse: Color, _specular: Color) {}
     /// The reflected ray's term, Kr·trace(R).

@@ -13,7 +13,7 @@
 
 use crate::base::Color;
 use crate::lights::{LightSource, Occluders, PointLight};
-use crate::object::{Highlight, Material, Object};
+use crate::object::{Highlight, Material, Object, Pbr};
 use crate::optics::Ray;
 use crate::record::{NoRecord, Record};
 use glam::DVec3;
@@ -128,6 +128,22 @@ pub fn direct_rec<O: Occluders + ?Sized, R: Record>(
                 spec,
             );
         }
+        Highlight::Gltf(pbr) => {
+            let spec = |i: f64, vr: f64| pbr.ks * i * vr.powf(pbr.shine);
+            if R::ACTIVE {
+                rec.emission(pbr.emission);
+            }
+            out += pbr.emission;
+            out = lit(
+                occluders,
+                lights,
+                At { p, n, v, color, kd },
+                out,
+                shadow_rays,
+                rec,
+                spec,
+            );
+        }
     }
     out
 }
@@ -177,7 +193,7 @@ pub fn add_lights<O: Occluders + ?Sized, L: LightSource, R: Record>(
                 spec,
             )
         }
-        Highlight::Phong { ks, shine } => {
+        Highlight::Phong { ks, shine } | Highlight::Gltf(Pbr { ks, shine, .. }) => {
             let spec = |i: f64, vr: f64| ks * i * vr.powf(shine);
             lit(
                 occluders,

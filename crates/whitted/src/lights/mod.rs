@@ -7,6 +7,7 @@
 //! - `point`: the report's point light (`scene.lights`, the tracer's fast path, with its
 //!   light buffer) and the extension's `point` record;
 //! - `directional`, `spot`, `area`: the extension's other lights;
+//! - `punctual`: glTF's lights, with their own falloff and cone;
 //! - `fade`: the extension's attenuation with distance, on any of them but a directional.
 //!
 //! `build` turns the extension's light records (`Scene::ext.lights`) into `SceneLight`s;
@@ -17,6 +18,7 @@ pub mod directional;
 pub mod fade;
 mod occluders;
 pub mod point;
+pub mod punctual;
 pub mod spot;
 
 pub use area::Area;
@@ -24,6 +26,7 @@ pub use directional::Directional;
 pub use fade::Fade;
 pub use occluders::Occluders;
 pub use point::PointLight;
+pub use punctual::Punctual;
 pub use spot::Spot;
 
 use crate::base::Color;
@@ -81,6 +84,8 @@ pub enum Kind {
     Spot(Spot),
     /// `area`.
     Area(Area),
+    /// A glTF light (`KHR_lights_punctual`).
+    Punctual(Punctual),
 }
 
 /// One light of the extension records, with its fade.
@@ -99,6 +104,7 @@ impl LightSource for SceneLight {
             Kind::Directional(l) => l.color,
             Kind::Spot(l) => l.color,
             Kind::Area(l) => l.color,
+            Kind::Punctual(l) => l.color,
         }
     }
 
@@ -108,6 +114,7 @@ impl LightSource for SceneLight {
             Kind::Directional(l) => l.incident(p),
             Kind::Spot(l) => l.incident(p),
             Kind::Area(l) => l.incident(p),
+            Kind::Punctual(l) => l.incident(p),
         }?;
         if let Some(f) = self.fade {
             inc.intensity *= f.factor(inc.dist);
@@ -166,6 +173,12 @@ pub fn build(ext: &Extension) -> Vec<SceneLight> {
                     n1,
                     n2,
                 } => Kind::Area(Area::new(position, a1, a2, n1, n2, c, i)),
+                LightKind::Punctual(shape, range) => Kind::Punctual(Punctual {
+                    shape,
+                    color: c,
+                    intensity: i,
+                    range,
+                }),
             };
             SceneLight {
                 kind,

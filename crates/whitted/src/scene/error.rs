@@ -26,6 +26,9 @@ pub enum SceneError {
         /// Where in the structure: "sphere 3 of 4, field Radius".
         context: String,
     },
+    /// A glTF file's refusal (it names the file and the JSON path).
+    #[error(transparent)]
+    Gltf(crate::gltf::GltfError),
 }
 
 impl SceneError {
@@ -33,7 +36,7 @@ impl SceneError {
     pub fn loc(&self) -> Option<&FileLoc> {
         match self {
             SceneError::Syntax { loc, .. } => Some(loc),
-            SceneError::Io { .. } => None,
+            SceneError::Io { .. } | SceneError::Gltf(_) => None,
         }
     }
 }

@@ -74,6 +74,12 @@ pub struct Scene {
     /// indexes this): shared, so that copies of a scene (an animation's frames) share
     /// their triangles.
     pub meshes: Vec<std::sync::Arc<crate::mesh::Mesh>>,
+    /// Shaded in linear light (a glTF scene, SPEC §18): the tracer's values are linear
+    /// and the frame is sRGB-encoded for display. False for Scene.txt and NFF.
+    pub linear: bool,
+    /// The glTF file this scene was posed from, if any (what an animation poses again
+    /// at every frame).
+    pub model: Option<crate::gltf::Model>,
 }
 
 impl Scene {
@@ -97,6 +103,11 @@ impl Scene {
             path: name.clone(),
             source,
         })?;
+        if crate::gltf::is_gltf(path) {
+            let options = crate::gltf::Options::default();
+            let scene = crate::gltf::load(path, &bytes, options).map_err(SceneError::Gltf)?;
+            return Ok((scene, bytes));
+        }
         let text = decode::decode(&bytes, &name)?;
         let scene = if nff::is_nff(path) {
             nff::parse(text, &name)?

@@ -42,12 +42,44 @@ impl Interp {
     }
 }
 
+/// How (u, v) outside 0..1 read the image (glTF's sampler; §16's images repeat).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Wrap {
+    /// u − ⌊u⌋.
+    #[default]
+    Repeat,
+    /// Clamped to the edge pixels.
+    Clamp,
+    /// Repeated, every other copy mirrored.
+    Mirror,
+}
+
+impl Wrap {
+    /// `x` brought into 0..1 by this mode.
+    fn apply(self, x: f64) -> f64 {
+        match self {
+            Wrap::Repeat => x - x.floor(),
+            Wrap::Clamp => x.clamp(0.0, 1.0),
+            Wrap::Mirror => {
+                let m = x.rem_euclid(2.0);
+                if m > 1.0 {
+                    2.0 - m
+                } else {
+                    m
+                }
+            }
+        }
+    }
+}
+
 /// An image's display colours, rows top to bottom, channels 0..1.
 #[derive(Clone, PartialEq)]
 pub struct Pixels {
     width: u32,
     height: u32,
     data: Vec<[f32; 3]>,
+    /// How u and v wrap (repeat, unless a glTF sampler says otherwise).
+    wrap: [Wrap; 2],
     /// The SHA-256 of the file they were read from (zeros when made in memory).
     source: [u8; 32],
 }
@@ -66,8 +98,22 @@ impl Pixels {
             width,
             height,
             data,
+            wrap: [Wrap::Repeat; 2],
             source: [0; 32],
         })
+    }
+
+    /// The same image, each pixel mapped by `f` (a glTF scene's linear colours).
+    pub fn mapped(&self, f: impl Fn([f32; 3]) -> [f32; 3]) -> Pixels {
+        Pixels {
+            data: self.data.iter().map(|&p| f(p)).collect(),
+            ..self.clone()
+        }
+    }
+
+    /// The same image, u and v wrapping as `wrap` says.
+    pub fn wrapping(self, wrap: [Wrap; 2]) -> Pixels {
+        Pixels { wrap, ..self }
     }
 
     /// The same pixels, read from a file whose bytes have the SHA-256 `source`.
@@ -92,8 +138,12 @@ impl Pixels {
 
     /// The pixel at column `i`, row `j` (both wrapped into the image).
     fn at(&self, i: i64, j: i64) -> Color {
-        let i = i.rem_euclid(i64::from(self.width)) as usize;
-        let j = j.rem_euclid(i64::from(self.height)) as usize;
+        let (w, h) = (i64::from(self.width), i64::from(self.height));
+        let (i, j) = match self.wrap {
+            [Wrap::Repeat, Wrap::Repeat] => (i.rem_euclid(w), j.rem_euclid(h)),
+            [a, b] => (edge(a, i, w), edge(b, j, h)),
+        };
+        let (i, j) = (i as usize, j as usize);
         let [r, g, b] = self.data[j * self.width as usize + i];
         DVec3::new(f64::from(r), f64::from(g), f64::from(b))
     }
@@ -103,8 +153,10 @@ impl Pixels {
         if !(u.is_finite() && v.is_finite()) {
             return self.at(0, 0);
         }
-        let u = u - u.floor();
-        let v = v - v.floor();
+        let (u, v) = match self.wrap {
+            [Wrap::Repeat, Wrap::Repeat] => (u - u.floor(), v - v.floor()),
+            [a, b] => (a.apply(u).min(0.999_999_999), b.apply(v).min(0.999_999_999)),
+        };
         let (w, h) = (f64::from(self.width), f64::from(self.height));
         match interp {
             Interp::Nearest => self.at((u * w) as i64, ((1.0 - v) * h) as i64),
@@ -119,6 +171,15 @@ impl Pixels {
                 top * (1.0 - ty) + bottom * ty
             }
         }
+    }
+}
+
+/// Column or row `i` of `n` for a neighbour of bilinear filtering: wrapped around
+/// (repeat), else held at the edge.
+fn edge(wrap: Wrap, i: i64, n: i64) -> i64 {
+    match wrap {
+        Wrap::Repeat => i.rem_euclid(n),
+        Wrap::Clamp | Wrap::Mirror => i.clamp(0, n - 1),
     }
 }
 

@@ -24,19 +24,30 @@ use std::path::Path;
 pub fn load(path: &Path, used: u64) -> Result<Pixels, String> {
     let bytes =
         crate::input::read_regular(path, MAX_TEXTURE_BYTES, "image").map_err(|e| e.to_string())?;
+    from_bytes(&bytes, used)
+}
+
+/// `load` of an image's bytes already read (a glTF file's image, from a buffer view or
+/// a data URI), under the same limits.
+pub fn from_bytes(bytes: &[u8], used: u64) -> Result<Pixels, String> {
+    if bytes.len() as u64 > MAX_TEXTURE_BYTES {
+        return Err(format!(
+            "it is larger than the limit of {MAX_TEXTURE_BYTES} bytes for an image"
+        ));
+    }
     let check = |w: u64, h: u64| {
         check_size(w, h)?;
         within_budget(w, h, used)
     };
-    if let Some((w, h)) = png_size(&bytes) {
+    if let Some((w, h)) = png_size(bytes) {
         check(w, h)?;
     }
     let pixels = if bytes.starts_with(&[0x76, 0x2f, 0x31, 0x01]) {
-        exr_pixels(&bytes, check)
+        exr_pixels(bytes, check)
     } else {
-        picture_pixels(&bytes, check)
+        picture_pixels(bytes, check)
     };
-    pixels.map(|p| p.with_source(crate::input::digest(&bytes)))
+    pixels.map(|p| p.with_source(crate::input::digest(bytes)))
 }
 
 /// Refuses a size past the limits.

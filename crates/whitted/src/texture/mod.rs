@@ -25,8 +25,8 @@ mod load;
 pub mod map;
 mod map_kind;
 
-pub use self::image::{ImageTexture, Interp, Pixels};
-pub use load::load;
+pub use self::image::{ImageTexture, Interp, Pixels, Wrap};
+pub use load::{from_bytes, load};
 pub use map_kind::MapKind;
 
 use crate::noise::{floor, noise};

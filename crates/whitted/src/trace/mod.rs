@@ -31,7 +31,7 @@ use crate::accel::{Accel, Hint, Hit, LightBuffer, NO_PART};
 use crate::base::Color;
 use crate::lights::Occluders;
 use crate::lights::{self, SceneLight};
-use crate::object::Object;
+use crate::object::{Highlight, Object};
 use crate::optics::{reflect, refract, Ray};
 pub use crate::record::{NoRecord, Record};
 use crate::scene::Scene;
@@ -158,6 +158,22 @@ impl<'a> Tracer<'a> {
     /// one thread, callgrind).
     #[inline(always)]
     pub fn primary_rec<R: Record>(
+        &self,
+        tile: Option<Hint>,
+        ray: &Ray,
+        count: &mut RayCount,
+        rec: &mut R,
+    ) -> Color {
+        let c = self.primary_value(tile, ray, count, rec);
+        if self.scene.linear {
+            return display(c);
+        }
+        c
+    }
+
+    /// `primary_rec`'s colour before a linear-light scene's encoding.
+    #[inline(always)]
+    fn primary_value<R: Record>(
         &self,
         tile: Option<Hint>,
         ray: &Ray,
@@ -321,7 +337,10 @@ impl<'a> Tracer<'a> {
                 Some(found) => found.map(|(t, i)| (t, &objects[i], NO_PART)),
                 None => self.nearest_part(&r),
             };
-            let reflected = m.kr * self.trace_hit(&r, hit, depth + 1, weight * m.kr, count);
+            let mut reflected = m.kr * self.trace_hit(&r, hit, depth + 1, weight * m.kr, count);
+            if let Highlight::Gltf(pbr) = &m.highlight {
+                reflected *= pbr.tint;
+            }
             if R::ACTIVE {
                 rec.reflection(reflected);
             }
@@ -348,6 +367,19 @@ impl<'a> Tracer<'a> {
         }
         out
     }
+}
+
+/// A linear-light colour (a glTF scene's, SPEC §18) as the display value the frame
+/// stores: each channel sRGB-encoded (negative values, which no term makes, map to 0).
+#[cold]
+#[inline(never)]
+pub fn display(c: Color) -> Color {
+    use crate::base::srgb::encode;
+    Color::new(
+        encode(c.x.max(0.0)),
+        encode(c.y.max(0.0)),
+        encode(c.z.max(0.0)),
+    )
 }
 
 impl Occluders for Tracer<'_> {

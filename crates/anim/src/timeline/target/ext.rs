@@ -57,6 +57,8 @@ const SHINE: [(&str, Kind); 2] = [("color", V), ("intensity", N)];
 /// the report's fields, on the object).
 pub fn object_fields(item: &ExtItem) -> Vec<(&'static str, Kind)> {
     let own: &[(&str, Kind)] = match item {
+        // A glTF primitive moves with its node (`{ node = "…" }` tracks), not as a record.
+        ExtItem::Shape(o) if matches!(o.shape, ExtShape::Gltf { .. }) => return Vec::new(),
         ExtItem::Csg(_) => &[],
         ExtItem::Shape(o) => match o.shape {
             ExtShape::Sphere { .. } => &[("center", V), ("radius", N)],
@@ -67,7 +69,7 @@ pub fn object_fields(item: &ExtItem) -> Vec<(&'static str, Kind)> {
             ExtShape::Disc { .. } => &[("center", V), ("normal", V), ("radius", N), ("hole", N)],
             ExtShape::Torus { .. } => &[("center", V), ("axis", V), ("major", N), ("minor", N)],
             ExtShape::Triangle { .. } => &[("p1", V), ("p2", V), ("p3", V)],
-            ExtShape::Mesh { .. } => &[],
+            ExtShape::Mesh { .. } | ExtShape::Gltf { .. } => &[],
         },
     };
     own.iter().chain(FRAME.iter()).copied().collect()
@@ -87,6 +89,7 @@ pub fn light_fields(kind: &LightKind, mods: &Modifiers) -> Vec<(&'static str, Ki
             ("tightness", N),
         ],
         LightKind::Area { .. } => &[("p", V), ("position", V), ("a1", V), ("a2", V)],
+        LightKind::Punctual(..) => &[],
     };
     let fade: &[(&str, Kind)] = if mods.fade.is_some() { &FADE } else { &[] };
     own.iter()

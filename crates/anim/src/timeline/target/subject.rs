@@ -11,6 +11,7 @@
 
 use crate::typo::did_you_mean;
 use glam::DVec3;
+use whitted::lights::punctual::Shape;
 use whitted::scene::ext::{ExtItem, LightKind};
 use whitted::scene::{Scene, ShapeSpec};
 
@@ -152,6 +153,10 @@ pub fn point(subject: Subject, scene: &Scene) -> Option<DVec3> {
             LightKind::Point { position }
             | LightKind::Spot { position, .. }
             | LightKind::Area { position, .. } => Some(position),
+            LightKind::Punctual(shape, _) => match shape {
+                Shape::Point { position } | Shape::Spot { position, .. } => Some(position),
+                Shape::Directional { .. } => None,
+            },
             LightKind::Directional { .. } => None,
         },
         Subject::Fog | Subject::Focus => None,

@@ -143,7 +143,7 @@ pub(super) fn anchor(s: &ExtShape, m: &Modifiers) -> DVec3 {
         ExtShape::Cylinder { a, b, .. } | ExtShape::Cone { a, b, .. } => 0.5 * (a + b),
         ExtShape::Triangle { corners: [a, b, c] } => (a + b + c) / 3.0,
         // Its box's centre, which `objects` knows once the file is read.
-        ExtShape::Mesh { .. } => DVec3::ZERO,
+        ExtShape::Mesh { .. } | ExtShape::Gltf { .. } => DVec3::ZERO,
     };
     frame(m).map_or(p, |f| f.point_to_world(p))
 }
@@ -213,7 +213,9 @@ pub(super) fn shape_in(o: &ExtObject, outer: &Transform) -> Result<Shape, SceneE
                 .map(Shape::Triangle)
                 .ok_or_else(|| bad("the triangle is degenerate"))
         }
-        ExtShape::Mesh { .. } => Err(bad("a mesh is drawn from its file by `objects`")),
+        ExtShape::Mesh { .. } | ExtShape::Gltf { .. } => {
+            Err(bad("a mesh is drawn from its file by `objects`"))
+        }
     }
 }
 

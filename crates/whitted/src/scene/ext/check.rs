@@ -112,7 +112,7 @@ pub fn shape(s: &ExtShape) -> Result<(), Violation> {
                 )
             }
         }
-        ExtShape::Mesh { .. } => Ok(()),
+        ExtShape::Mesh { .. } | ExtShape::Gltf { .. } => Ok(()),
     }
 }
 
@@ -188,7 +188,7 @@ pub fn light(l: &ExtLight) -> Result<(), Violation> {
                 );
             }
         }
-        LightKind::Point { .. } => {}
+        LightKind::Point { .. } | LightKind::Punctual(..) => {}
         LightKind::Area { n1, n2, .. } => {
             if *n1 == 0 || *n2 == 0 {
                 return fail(

@@ -50,6 +50,9 @@ impl Extension {
 }
 
 /// One object of the extension: a shape record or a CSG block.
+// A record is read once per scene and copied by tracks; boxing it would change every
+// reader of the records for no measurable gain.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug, PartialEq)]
 pub enum ExtItem {
     /// A shape record with its texture and material.
@@ -157,6 +160,13 @@ pub enum ExtShape {
         /// P1, P2, P3.
         corners: [DVec3; 3],
     },
+    /// A glTF primitive (SPEC §18): the glTF reader's, never written in a Scene.txt.
+    Gltf {
+        /// Its node in the file.
+        node: u32,
+        /// Its primitive in the node's mesh.
+        primitive: u32,
+    },
     /// `mesh "file"`: `path` resolved against the scene's folder, `written` as quoted.
     Mesh {
         /// The file, resolved against the scene file's folder.
@@ -179,6 +189,7 @@ impl ExtShape {
             ExtShape::Torus { .. } => "torus",
             ExtShape::Triangle { .. } => "triangle",
             ExtShape::Mesh { .. } => "mesh",
+            ExtShape::Gltf { .. } => "gltf",
         }
     }
 
@@ -191,7 +202,10 @@ impl ExtShape {
             | ExtShape::Box { .. }
             | ExtShape::Torus { .. } => true,
             ExtShape::Cylinder { .. } | ExtShape::Cone { .. } => !open,
-            ExtShape::Disc { .. } | ExtShape::Triangle { .. } | ExtShape::Mesh { .. } => false,
+            ExtShape::Disc { .. }
+            | ExtShape::Triangle { .. }
+            | ExtShape::Mesh { .. }
+            | ExtShape::Gltf { .. } => false,
         }
     }
 }
@@ -285,6 +299,9 @@ pub enum LightKind {
         /// Points along A2, ≥ 1.
         n2: u32,
     },
+    /// A glTF light (SPEC §18), placed by its node, and its range if it has one: the
+    /// glTF reader's, never written in a Scene.txt.
+    Punctual(crate::lights::punctual::Shape, Option<f64>),
 }
 
 impl LightKind {
@@ -295,6 +312,7 @@ impl LightKind {
             LightKind::Spot { .. } => "spot",
             LightKind::Point { .. } => "point",
             LightKind::Area { .. } => "area",
+            LightKind::Punctual(..) => "gltf light",
         }
     }
 }

@@ -205,6 +205,8 @@ pub fn parse(src: &str, file: &str) -> std::result::Result<Scene, SceneError> {
         },
         ext: Default::default(),
         meshes: Vec::new(),
+        linear: false,
+        model: None,
     })
 }
 
