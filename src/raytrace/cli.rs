@@ -92,6 +92,10 @@ pub struct Args {
     /// ray, no weight cut-off (SPEC §17).
     #[arg(long, conflicts_with_all = ["size", "samples", "aa", "passes", "pass", "display"])]
     pub spd: bool,
+
+    /// A glTF scene's camera to look through, by its name (or its node's).
+    #[arg(long, value_name = "NAME")]
+    pub camera: Option<String>,
     /// After the image, print one JSON line on standard error: the ray counts (eye,
     /// eye_hits, reflect, refract, shadow) and the seconds taken (wall_s, cpu_s).
     #[arg(long)]
@@ -119,6 +123,7 @@ impl Args {
             colour: self.colour,
             display: self.display.clone(),
             spd: self.spd,
+            camera: self.camera.clone(),
         }
     }
 }

@@ -48,6 +48,7 @@
 
 mod antialias;
 mod camera;
+mod gltf;
 mod locate;
 mod pattern;
 mod raw;
@@ -184,6 +185,11 @@ pub struct Manifest {
     /// What a draft's command-line overrides changed (`project::draft`), `None` for the
     /// manifest as written: recorded in each frame, so a draft is told from a final.
     pub draft: Option<String>,
+    /// `[animation] name`: the glTF animations that play (every one without it), and
+    /// where the table is.
+    pub animation: Option<(Vec<String>, FileLoc)>,
+    /// `[camera] name`: the glTF scene's camera to look through.
+    pub camera_name: Option<String>,
 }
 
 impl Manifest {
@@ -259,7 +265,16 @@ impl Manifest {
                 Err(source.error(span, message))
             }
         };
-        manifest.map(|m| Manifest { camera_loc, ..m })
+        let camera_name = probe
+            .camera
+            .as_ref()
+            .and_then(|c| c.get_ref().name.as_ref())
+            .map(|n| n.get_ref().clone());
+        manifest.map(|m| Manifest {
+            camera_loc,
+            camera_name,
+            ..m
+        })
     }
 }
 
@@ -329,6 +344,11 @@ impl<'a> From<&'a Manifest> for Sequence<'a> {
             blur: m.render.motion_blur,
             looped: m.looped,
             fov: m.lens.fov,
+            animation: m
+                .animation
+                .as_ref()
+                .map(|(names, loc)| (names.as_slice(), loc)),
+            fps: m.fps,
         }
     }
 }

@@ -24,6 +24,15 @@ pub(super) struct Probe {
 #[serde(expecting = "a [camera] table")]
 pub(super) struct CameraProbe {
     pub path: Option<Spanned<String>>,
+    /// A glTF scene's camera (`[camera] name`), read here for every kind of path.
+    pub name: Option<Spanned<String>>,
+}
+
+/// `[animation]`: a glTF file's animations that play (`name`: one name or a list).
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields, expecting = "an [animation] table")]
+pub(super) struct RawAnimation {
+    pub name: Option<Spanned<toml::Value>>,
 }
 
 /// A point `[x, y, z]` or an object `"sphere 2"`: read as a TOML value, told apart later.
@@ -34,7 +43,8 @@ pub(super) type PointOrObject = Spanned<toml::Value>;
 #[serde(deny_unknown_fields, expecting = "a manifest table")]
 pub(super) struct RawManifest<C> {
     pub scene: Spanned<String>,
-    pub frames: Spanned<i64>,
+    pub frames: Option<Spanned<i64>>,
+    pub animation: Option<Spanned<RawAnimation>>,
     pub fps: Option<Spanned<f64>>,
     #[serde(rename = "loop")]
     pub looped: Option<Spanned<bool>>,
@@ -49,6 +59,8 @@ pub(super) struct RawManifest<C> {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields, expecting = "a [camera] table")]
 pub(super) struct RawStill {
+    #[allow(dead_code)] // read by the probe
+    pub name: Option<Spanned<String>>,
     pub look_at: Option<PointOrObject>,
     pub fov: Option<Spanned<f64>>,
     pub roll: Option<Spanned<f64>>,
@@ -58,7 +70,8 @@ pub(super) struct RawStill {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields, expecting = "a [[track]] table")]
 pub(super) struct RawTrack {
-    pub target: Spanned<String>,
+    /// `"sphere 1 center"`, or a glTF node's `{ node = "…", field = "…" }`.
+    pub target: Spanned<toml::Value>,
     pub interpolation: Option<Spanned<String>>,
     pub ease: Option<Spanned<String>>,
     pub keys: Option<Spanned<Vec<Spanned<RawTrackKey>>>>,
@@ -97,6 +110,8 @@ pub(super) struct RawBlur {
 #[serde(deny_unknown_fields, expecting = "a [camera] table")]
 pub(super) struct RawCircle {
     #[allow(dead_code)] // read by the probe
+    pub name: Option<Spanned<String>>,
+    #[allow(dead_code)] // read by the probe
     pub path: String,
     pub center: Vec3,
     pub radius: Spanned<f64>,
@@ -111,6 +126,8 @@ pub(super) struct RawCircle {
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields, expecting = "a [camera] table")]
 pub(super) struct RawSpline {
+    #[allow(dead_code)] // read by the probe
+    pub name: Option<Spanned<String>>,
     #[allow(dead_code)] // read by the probe
     pub path: String,
     pub closed: Option<bool>,

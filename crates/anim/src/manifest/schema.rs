@@ -57,6 +57,7 @@ const TOP: Place = Place {
         ("fps", Value),
         ("loop", Value),
         ("camera", Camera),
+        ("animation", Table(ANIMATION)),
         ("output", Table(OUTPUT)),
         ("render", Table(RENDER)),
         ("check", Table(CHECK)),
@@ -65,6 +66,13 @@ const TOP: Place = Place {
 };
 
 const PATH: Keys = &[("path", Value)];
+/// A glTF scene's camera, by name.
+const NAME: Keys = &[("name", Value)];
+/// `[animation]`: which of a glTF file's animations play.
+const ANIMATION: Place = Place {
+    name: "[animation]",
+    groups: &[NAME],
+};
 const LOOK_AT: Keys = &[("look_at", Value)];
 /// Every camera's framing: a vertical field of view and a roll.
 const LENS: Keys = &[("fov", Value), ("roll", Value)];
@@ -82,17 +90,17 @@ const SPLINE_KEYS: Keys = &[("keys", Tables(SPLINE_KEY))];
 
 const STILL: Place = Place {
     name: "[camera] without a path",
-    groups: &[PATH, LOOK_AT, LENS],
+    groups: &[PATH, NAME, LOOK_AT, LENS],
 };
 
 const CIRCLE: Place = Place {
     name: "[camera] with path = \"circle\"",
-    groups: &[PATH, CIRCLE_KEYS, LOOK_AT, LENS],
+    groups: &[PATH, NAME, CIRCLE_KEYS, LOOK_AT, LENS],
 };
 
 const SPLINE: Place = Place {
     name: "[camera] with path = \"spline\"",
-    groups: &[PATH, SPLINE_OPTIONS, LOOK_AT, LENS, SPLINE_KEYS],
+    groups: &[PATH, NAME, SPLINE_OPTIONS, LOOK_AT, LENS, SPLINE_KEYS],
 };
 
 /// An unknown path: every key of some path is accepted (the path itself is refused later).
@@ -100,6 +108,7 @@ const ANY_CAMERA: Place = Place {
     name: "[camera]",
     groups: &[
         PATH,
+        NAME,
         CIRCLE_KEYS,
         SPLINE_OPTIONS,
         LOOK_AT,

@@ -90,8 +90,10 @@ impl Source<'_> {
         let mut errors = Vec::new();
         let scene = keep(self.resolve(&raw.scene, "scene"), &mut errors);
         let scene_loc = self.loc(raw.scene.span());
-        let frames = self.int(&raw.frames, "frames", 1..=i64::from(MAX_FRAMES));
-        let frames = keep(frames, &mut errors).map(|f| f as u32);
+        let picked = match &raw.animation {
+            Some(a) => keep(self.animation(a), &mut errors).flatten(),
+            None => None,
+        };
         let fps = match &raw.fps {
             Some(v) if !(MIN_FPS..=MAX_FPS).contains(v.get_ref()) => {
                 let message = format!(
@@ -104,6 +106,19 @@ impl Source<'_> {
             None => Ok(DEFAULT_FPS),
         };
         let fps = keep(fps, &mut errors);
+        let looped = raw.looped.as_ref().is_some_and(|l| *l.get_ref());
+        let frames = match &raw.frames {
+            Some(v) => self
+                .int(v, "frames", 1..=i64::from(MAX_FRAMES))
+                .map(|f| f as u32),
+            None => self.frames_of_scene(
+                scene.as_deref(),
+                &picked,
+                fps.unwrap_or(DEFAULT_FPS),
+                looped,
+            ),
+        };
+        let frames = keep(frames, &mut errors);
         let output = keep(self.output(raw.output), &mut errors);
         let render = match &output {
             Some(o) => keep(self.render(raw.render, o.format), &mut errors),
@@ -141,7 +156,6 @@ impl Source<'_> {
             return Err(first.unwrap_or_else(|| self.error(0..0, "the manifest cannot be read")));
         };
         let (camera, look_at, lens) = parts;
-        let looped = raw.looped.as_ref().is_some_and(|l| *l.get_ref());
         let camera = match (camera, &raw.looped) {
             (Some(path), Some(at)) if looped => {
                 Some(path.looped().map_err(|m| self.error(at.span(), m))?)
@@ -164,6 +178,8 @@ impl Source<'_> {
             output,
             check,
             draft: None,
+            animation: picked,
+            camera_name: None,
         })
     }
 }

@@ -142,10 +142,30 @@ impl Source<'_> {
             }
         };
         Ok(TrackSpec {
-            target: raw.target.into_inner(),
+            target: self.track_target(&raw.target)?,
             loc,
             motion,
         })
+    }
+
+    /// A track's target as text: the string, or a glTF node's `{ node, field }` table
+    /// in its canonical form (`timeline::node::written`).
+    fn track_target(&self, v: &Spanned<toml::Value>) -> Result<String, ManifestError> {
+        let bad = || {
+            self.error(
+                v.span(),
+                "a track's target is a string (`sphere 1 center`) or a glTF node's { node = \"…\", field = \"translation\" | \"rotation\" | \"scale\" }",
+            )
+        };
+        match v.get_ref() {
+            toml::Value::String(s) => Ok(s.clone()),
+            toml::Value::Table(t) if t.len() == 2 => {
+                let node = t.get("node").and_then(|n| n.as_str()).ok_or_else(bad)?;
+                let field = t.get("field").and_then(|f| f.as_str()).ok_or_else(bad)?;
+                Ok(crate::timeline::node::written(node, field))
+            }
+            _ => Err(bad()),
+        }
     }
 
     fn track_keys(

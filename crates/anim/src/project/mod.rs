@@ -68,6 +68,16 @@ impl Project {
             },
             other => AnimError::Scene(other),
         })?;
+        // `[camera] name`: the glTF scene seen through that camera.
+        let scene = match &manifest.camera_name {
+            Some(name) => scene.through_camera(name).map_err(|message| {
+                AnimError::Manifest(crate::refusal::ManifestError::Invalid {
+                    loc: manifest.camera_loc.clone(),
+                    message: format!("[camera] name: {message}"),
+                })
+            })?,
+            None => scene,
+        };
         let timeline = Timeline::new(scene, &manifest)?;
         Ok(Project {
             manifest,

@@ -16,6 +16,7 @@
 mod bounds;
 mod camera;
 mod ease;
+pub mod node;
 mod spline;
 mod target;
 mod track;
@@ -90,6 +91,23 @@ pub struct Sequence<'a> {
     pub looped: bool,
     /// `[camera] fov`, which a `camera fov` track may not be beside.
     pub fov: Option<f64>,
+    /// `[animation] name`: the glTF animations that play (every one for `None`), and
+    /// where the table is written.
+    pub animation: Option<(&'a [String], &'a FileLoc)>,
+    /// Frames per second: a glTF animation's seconds are frames / fps.
+    pub fps: f64,
+}
+
+/// What drives a glTF scene's frames: the animations that play, the time base, and the
+/// tracks on its nodes (each with its spec, whose value is put in over the channel).
+#[derive(Clone, Debug)]
+pub struct Play {
+    /// The animations that play (indices into the file's).
+    pub playing: Vec<usize>,
+    /// Frames per second.
+    pub fps: f64,
+    /// The node tracks.
+    pub nodes: Vec<(node::NodeTrack, TrackSpec)>,
 }
 
 /// What the camera looks at when the path does not say.
@@ -119,6 +137,9 @@ pub struct Timeline {
     /// Whether the sequence loops: tracks run from their last key back to their first
     /// (`Motion::value_looped`), a spline camera path is closed by the manifest.
     pub looped: bool,
+    /// A glTF scene's animations and node tracks, when it has any: every time is posed
+    /// again from the file.
+    pub play: Option<Play>,
     gaze: Gaze,
 }
 
@@ -173,7 +194,23 @@ impl Timeline {
             look_at: manifest.look_at,
             fov: manifest.fov,
         };
+        let mut nodes = Vec::new();
         for (n, spec) in manifest.tracks.iter().enumerate() {
+            if let Some((name, field)) = node::parse(&spec.target) {
+                let vectors = match &spec.motion {
+                    Motion::Keys { keys, .. } => keys.iter().all(|k| k.kind == Kind::Vector),
+                    Motion::Circle(_) => field == "translation",
+                };
+                match node::resolve(&name, &field, &base, n) {
+                    Ok(_) if !vectors => refuse(invalid(
+                        &spec.loc,
+                        format!("track {}: a node's {field} takes [x, y, z] keys", n + 1),
+                    )),
+                    Ok(t) => nodes.push((t, spec.clone())),
+                    Err(m) => refuse(invalid(&spec.loc, format!("track {}: {m}", n + 1))),
+                }
+                continue;
+            }
             let track = match resolve(spec, &base) {
                 Ok(track) => track,
                 Err(m) => {
@@ -200,10 +237,37 @@ impl Timeline {
             }
             tracks.push(track);
         }
+        let play = match &base.model {
+            Some(model) => {
+                let names = manifest.animation.map(|(n, _)| n);
+                let playing = match model.select(names) {
+                    Ok(p) => p,
+                    Err(m) => {
+                        let loc = manifest
+                            .animation
+                            .map(|(_, l)| l.clone())
+                            .unwrap_or_default();
+                        refuse(invalid(&loc, format!("[animation] name: {m}")));
+                        Vec::new()
+                    }
+                };
+                let moves = !nodes.is_empty()
+                    || playing
+                        .iter()
+                        .any(|&c| !model.rig.clips[c].channels.is_empty());
+                moves.then_some(Play {
+                    playing,
+                    fps: manifest.fps,
+                    nodes,
+                })
+            }
+            None => None,
+        };
         if let Some(e) = refused {
             return Err(e);
         }
         let timeline = Timeline {
+            play,
             base,
             frames: manifest.frames,
             camera: manifest.camera.cloned(),
@@ -228,20 +292,42 @@ impl Timeline {
     /// Whether some track changes what rays hit, so that frames need their own
     /// acceleration structure; otherwise one, built from the base scene, serves all.
     pub fn moves_geometry(&self) -> bool {
-        self.tracks.iter().any(|t| t.target.moves_geometry())
+        self.play.is_some() || self.tracks.iter().any(|t| t.target.moves_geometry())
+    }
+
+    /// The glTF scene posed at time `t` (frames): the animations at t / fps seconds, the
+    /// node tracks' values put in over them.
+    fn posed(&self, play: &Play, t: f64) -> Scene {
+        let Some(model) = &self.base.model else {
+            return self.base.clone();
+        };
+        let puts: Vec<whitted::gltf::Put> = (play.nodes.iter())
+            .map(|(n, spec)| {
+                let v = match self.looped {
+                    true => spec.motion.value_looped(t, self.frames),
+                    false => spec.motion.value_at(t, self.frames),
+                };
+                n.put(v)
+            })
+            .collect();
+        // The same file posed at load time: only a fault found then can fail here.
+        model
+            .scene_at(t / play.fps, &play.playing, &puts)
+            .unwrap_or_else(|_| self.base.clone())
     }
 
     /// Frame t: the scene with every track's value at t, and the camera there.
     pub fn at(&self, t: f64) -> Snapshot<'_> {
-        let scene = if self.tracks.is_empty() {
-            Cow::Borrowed(&self.base)
-        } else {
-            let mut scene = self.base.clone();
-            for track in &self.tracks {
-                track.target.apply(&mut scene, self.value(track, t));
-            }
-            Cow::Owned(scene)
+        let mut scene = match &self.play {
+            Some(play) => Cow::Owned(self.posed(play, t)),
+            None => Cow::Borrowed(&self.base),
         };
+        if !self.tracks.is_empty() {
+            let owned = scene.to_mut();
+            for track in &self.tracks {
+                track.target.apply(owned, self.value(track, t));
+            }
+        }
         let (eye, path_look) = match &self.camera {
             Some(path) => path.at_about(t, self.frames, scene.look_at, self.base.lens.up),
             None => (scene.eye, scene.look_at),

@@ -55,11 +55,14 @@ pub struct Model {
     pub rig: Arc<Rig>,
     /// The camera it is seen through.
     pub options: Options,
+    /// What the scene was posed with: the time in seconds, the clips playing and the
+    /// values put over them (a frame's digest covers it, as the vertices follow from it).
+    pub posed: Option<(f64, Vec<usize>, Vec<Put>)>,
 }
 
 impl PartialEq for Model {
     fn eq(&self, o: &Model) -> bool {
-        Arc::ptr_eq(&self.rig, &o.rig) && self.options == o.options
+        Arc::ptr_eq(&self.rig, &o.rig) && self.options == o.options && self.posed == o.posed
     }
 }
 
@@ -73,6 +76,7 @@ impl Model {
         Ok(Model {
             rig: Arc::new(rig),
             options,
+            posed: None,
         })
     }
 
@@ -91,6 +95,61 @@ impl Model {
         (0..self.rig.clips.len()).collect()
     }
 
+    /// The animations named `names` (every one for `None`), or a refusal that lists the
+    /// file's animations (an animation without a name is known by its number from 1).
+    pub fn select(&self, names: Option<&[String]>) -> Result<Vec<usize>, String> {
+        let Some(names) = names else {
+            return Ok(self.all_clips());
+        };
+        let label = |k: usize| {
+            let c = &self.rig.clips[k];
+            c.name.clone().unwrap_or_else(|| format!("{}", k + 1))
+        };
+        let mut out = Vec::new();
+        for name in names {
+            match (0..self.rig.clips.len()).find(|&k| &label(k) == name) {
+                Some(k) if !out.contains(&k) => out.push(k),
+                Some(_) => {}
+                None => {
+                    let all: Vec<String> = (0..self.rig.clips.len()).map(label).collect();
+                    let list = if all.is_empty() {
+                        "none".to_string()
+                    } else {
+                        all.join(", ")
+                    };
+                    return Err(format!(
+                        "the glTF file has no animation `{name}`; its animations: {list}"
+                    ));
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// The frame count of the clips `playing` at `fps` (SPEC §18): from t = 0 to the last
+    /// key, both ends included, ⌈t_last·fps − 0.001⌉ + 1, the last left out when the
+    /// sequence loops; 1 without keys.
+    pub fn frames(&self, playing: &[usize], fps: f64, looped: bool) -> u64 {
+        let end = self.end(playing);
+        if end <= 0.0 {
+            return 1;
+        }
+        let n = (end * fps - 0.001).ceil().max(0.0) as u64 + 1;
+        if looped {
+            (n - 1).max(1)
+        } else {
+            n
+        }
+    }
+
+    /// The same file seen through the camera named `name`.
+    pub fn through(&self, name: Option<String>) -> Model {
+        Model {
+            options: Options { camera: name },
+            ..self.clone()
+        }
+    }
+
     /// The time of the last key of the clips `playing`, in seconds.
     pub fn end(&self, playing: &[usize]) -> f64 {
         playing
@@ -104,7 +163,10 @@ impl Model {
     pub fn scene_at(&self, t: f64, playing: &[usize], puts: &[Put]) -> Result<Scene, GltfError> {
         let pose = Pose::at(&self.rig, t, playing, puts);
         let mut scene = build::scene(&self.rig, &pose, &self.options)?;
-        scene.model = Some(self.clone());
+        scene.model = Some(Model {
+            posed: Some((t, playing.to_vec(), puts.to_vec())),
+            ..self.clone()
+        });
         Ok(scene)
     }
 }

@@ -50,6 +50,10 @@ pub fn read(bytes: &[u8], file: &str, dir: &Path) -> Result<Rig, GltfError> {
     let data = source::buffers(doc, gltf.blob.as_deref(), &origin, &mut named)?;
     let buffers = Buffers { file, data: &data };
     super::material::read(doc, &buffers, &origin, &mut named, &mut rig)?;
+    // The digest its meshes carry: the file's and every file it named.
+    let mut all = rig.source.to_vec();
+    named.iter().for_each(|(_, d)| all.extend_from_slice(d));
+    rig.source = crate::input::digest(&all);
     rig.named = named;
     read_nodes(doc, &mut rig)?;
     read_meshes(doc, &buffers, &mut rig)?;

@@ -117,6 +117,22 @@ impl Scene {
         Ok((scene, bytes))
     }
 
+    /// The same glTF scene seen through its camera named `name` (`raytrace --camera`, a
+    /// manifest's `[camera] name`); a refusal for a scene of another format, or a name
+    /// the file does not have (with the names it has).
+    pub fn through_camera(&self, name: &str) -> Result<Scene, String> {
+        let Some(model) = &self.model else {
+            return Err(format!(
+                "a camera is picked by name in a glTF scene only; `{name}` cannot be looked for in a Scene.txt or NFF file"
+            ));
+        };
+        let (t, playing, puts) = model.posed.clone().unwrap_or_default();
+        let model = model.through(Some(name.to_string()));
+        model
+            .scene_at(t, &playing, &puts)
+            .map_err(|e| e.to_string())
+    }
+
     /// The objects' names, in order: `KIND N`, N counted from 1 per kind in file order
     /// (`sphere 3`: the file's third sphere; an extension record continues its kind's
     /// count after the report's), or the record's `name` when it has one (the count still

@@ -54,6 +54,8 @@ pub struct Request {
     pub display: Option<Display>,
     /// The SPD's testing procedure (`--spd`): 512 × 512 from 513 × 513 corner rays.
     pub spd: bool,
+    /// A glTF scene's camera, by name (`--camera`).
+    pub camera: Option<String>,
 }
 
 /// Why `raytrace` drew nothing, or could not write what it drew.
@@ -159,6 +161,19 @@ impl Job {
             return Err(StillError::NotAScene(request.scene.display().to_string()));
         }
         let mut scene = Scene::load(&request.scene)?;
+        if let Some(name) = &request.camera {
+            scene = scene.through_camera(name).map_err(|message| {
+                StillError::Scene(SceneError::Syntax {
+                    loc: crate::fileloc::FileLoc {
+                        file: request.scene.display().to_string(),
+                        line: 1,
+                        column: 1,
+                    },
+                    message,
+                    context: "--camera".into(),
+                })
+            })?;
+        }
         check_target(&out)?;
         if same_file(&request.scene, &out) {
             let reason = "it is the scene file being read (name another image with -o)";
