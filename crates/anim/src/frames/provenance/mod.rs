@@ -147,6 +147,15 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
             .bytes()
             .for_each(|b| f(f64::from(b)));
     }
+    // A glTF scene's pose (time, animations, node values) and camera: its vertices
+    // follow from them and the file, whose digest (with every file it names) its meshes
+    // carry.
+    if let Some(model) = &scene.model {
+        f(11.0);
+        format!("{:?}{:?}{}", model.posed, model.options, scene.linear)
+            .bytes()
+            .for_each(|b| f(f64::from(b)));
+    }
     let mut sources: Vec<[u8; 32]> = scene.meshes.iter().map(|m| m.source).collect();
     image_sources(scene.objects.iter(), &mut sources);
     for s in sources {
