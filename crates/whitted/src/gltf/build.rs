@@ -55,6 +55,7 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
         model: None,
     };
     let mut names: Vec<String> = Vec::new();
+    let mut warnings = rig.warnings.clone();
     let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
     for &n in &order {
         let node = &rig.nodes[n];
@@ -69,8 +70,13 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
         }
         let Some(m) = node.mesh else { continue };
         let base = node.name.clone().filter(|name| !names.contains(name));
-        if let Some(b) = &base {
-            names.push(b.clone());
+        match (&base, &node.name) {
+            (Some(b), _) => names.push(b.clone()),
+            (None, Some(dup)) => warnings.push(format!(
+                "{}: the node name `{dup}` is used twice; node {n}'s primitives are known by their numbers",
+                rig.file
+            )),
+            (None, None) => {}
         }
         for (k, prim) in rig.meshes[m].iter().enumerate() {
             if prim.triangles.is_empty() {
@@ -198,6 +204,11 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
             },
             loc: loc.clone(),
         });
+    }
+    if let Some(first) = scene.meshes.first_mut() {
+        let mut mesh = (**first).clone();
+        mesh.warnings = warnings;
+        *first = Arc::new(mesh);
     }
     if scene.ext.lights.is_empty() {
         let (shape, color, intensity) = view::default_light(&view);

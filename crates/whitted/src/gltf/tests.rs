@@ -1,7 +1,9 @@
-//! The reader on the Khronos samples kept in tests/data/gltf (their licences are in
-//! tests/data/gltf/LICENSE.md), with values checked by hand against the files' JSON.
+//! The reader on the Khronos samples and the generated files kept in tests/data/gltf
+//! (their licences are in tests/data/gltf/LICENSE.md), with values worked out by hand
+//! from the files' JSON and buffers.
 
 use super::*;
+use glam::DVec3;
 use std::path::PathBuf;
 
 fn sample(name: &str) -> PathBuf {
@@ -10,17 +12,150 @@ fn sample(name: &str) -> PathBuf {
         .join(name)
 }
 
-fn rig(name: &str) -> Arc<Rig> {
+fn model(name: &str) -> Result<Model, GltfError> {
     let path = sample(name);
     let bytes = std::fs::read(&path).unwrap();
-    Model::read(&path, &bytes, Options::default()).unwrap().rig
+    Model::read(&path, &bytes, Options::default())
+}
+
+fn close(a: DVec3, b: DVec3) -> bool {
+    (a - b).length() < 1e-6
 }
 
 #[test]
 fn box_reads_its_24_vertices_and_12_triangles() {
-    let rig = rig("Box.gltf");
-    let prim = &rig.meshes[0][0];
+    let m = model("Box.gltf").unwrap();
+    let prim = &m.rig.meshes[0][0];
     assert_eq!(prim.positions.len(), 24);
     assert_eq!(prim.normals.len(), 24);
     assert_eq!(prim.triangles.len(), 12);
+    // The root turns −90° about x: the ±0.5 box stays the ±0.5 box.
+    let scene = m.scene_at(0.0, &[], &[]).unwrap();
+    let (lo, hi) = scene.meshes[0].extent();
+    assert!(close(lo, DVec3::splat(-0.5)) && close(hi, DVec3::splat(0.5)));
+    // No node name: known by its number; one default light, since the file has none.
+    assert_eq!(scene.object_names().collect::<Vec<_>>(), ["gltf 1"]);
+    assert_eq!(scene.ext.lights.len(), 1);
+    assert!(scene.linear);
+}
+
+#[test]
+fn a_sparse_accessor_replaces_its_three_positions() {
+    let m = model("SimpleSparseAccessor.gltf").unwrap();
+    let p = &m.rig.meshes[0][0].positions;
+    // The base holds (i mod 7, i div 7, 0); indices 8, 10, 12 become (1, 2), (3, 3), (5, 4).
+    assert_eq!(p[7], DVec3::new(0.0, 1.0, 0.0));
+    assert_eq!(p[8], DVec3::new(1.0, 2.0, 0.0));
+    assert_eq!(p[10], DVec3::new(3.0, 3.0, 0.0));
+    assert_eq!(p[12], DVec3::new(5.0, 4.0, 0.0));
+    assert_eq!(p[13], DVec3::new(6.0, 1.0, 0.0));
+}
+
+#[test]
+fn linear_blend_skinning_by_hand() {
+    // At t = 1 s joint 2 is turned 90° about z about (0, 1, 0); both inverse binds are
+    // T(0, −1, 0). Vertex 4, (−0.5, 1, 0), weighs ½ on each joint: ½·(−0.5, 1, 0) +
+    // ½·(0, 0.5, 0) = (−0.25, 0.75, 0). Vertex 0 follows joint 1 alone and stays.
+    let m = model("SimpleSkin.gltf").unwrap();
+    let scene = m.scene_at(1.0, &m.all_clips(), &[]).unwrap();
+    let v = &scene.meshes[0].vertices;
+    assert!(close(v[4], DVec3::new(-0.25, 0.75, 0.0)), "{:?}", v[4]);
+    assert!(close(v[0], DVec3::new(-0.5, 0.0, 0.0)), "{:?}", v[0]);
+    // At rest (no animation) the mesh is where the file puts it.
+    let rest = m.scene_at(1.0, &[], &[]).unwrap();
+    assert!(close(
+        rest.meshes[0].vertices[4],
+        DVec3::new(-0.5, 1.0, 0.0)
+    ));
+}
+
+#[test]
+fn morph_targets_take_the_mesh_weights_then_the_animation() {
+    // Vertex 2 is (0.5, 0.5, 0); the targets move it by (−1, 1, 0) and (1, 1, 0); the
+    // mesh's weights are ½ and ½: (0.5, 1.5, 0).
+    let m = model("SimpleMorph.gltf").unwrap();
+    let still = m.scene_at(0.0, &[], &[]).unwrap();
+    assert!(close(
+        still.meshes[0].vertices[2],
+        DVec3::new(0.5, 1.5, 0.0)
+    ));
+    // With the animation, the channel's own weights at t.
+    let clip = &m.rig.clips[0];
+    for t in [0.5, 1.5, 2.5] {
+        let w = clip.channels[0].sample(t);
+        let want = DVec3::new(0.5, 0.5, 0.0)
+            + w[0] * DVec3::new(-1.0, 1.0, 0.0)
+            + w[1] * DVec3::new(1.0, 1.0, 0.0);
+        let moved = m.scene_at(t, &[0], &[]).unwrap();
+        assert!(close(moved.meshes[0].vertices[2], want), "t = {t}");
+    }
+}
+
+#[test]
+fn primitives_are_named_by_their_node_and_strips_and_fans_cut() {
+    let m = model("generated/two_primitives.glb").unwrap();
+    let scene = m.scene_at(0.0, &[], &[]).unwrap();
+    let names: Vec<String> = scene.object_names().collect();
+    // The second "Wheel" node's name is used twice: its primitives go by number.
+    assert_eq!(names, ["Wheel", "Wheel#2", "gltf 3", "gltf 4", "Mirror"]);
+    // A strip of 4 corners is 2 triangles, a fan of 5 is 3.
+    assert_eq!(m.rig.meshes[0][0].triangles.len(), 2);
+    assert_eq!(m.rig.meshes[0][1].triangles.len(), 3);
+    assert!(scene.meshes[0].warnings.iter().any(|w| w.contains("Wheel")));
+}
+
+#[test]
+fn a_mirroring_node_turns_its_triangles() {
+    let m = model("generated/two_primitives.glb").unwrap();
+    let scene = m.scene_at(0.0, &[], &[]).unwrap();
+    let mirror = scene.meshes.last().unwrap();
+    let file = &m.rig.meshes.last().unwrap()[0].triangles;
+    assert_eq!(mirror.triangles[0], [file[0][0], file[0][2], file[0][1]]);
+}
+
+#[test]
+fn cameras_frame_by_their_node_and_aspect() {
+    let m = model("Cameras.gltf").unwrap();
+    let scene = m.scene_at(0.0, &[], &[]).unwrap();
+    // The first camera: at (0.5, 0.5, 3) looking down −z, yfov 0.7 rad, aspect 1.
+    assert_eq!(scene.eye, DVec3::new(0.5, 0.5, 3.0));
+    assert!(close(scene.look_at, DVec3::new(0.5, 0.5, 2.0)));
+    assert_eq!((scene.width, scene.height), (480, 480));
+    // yfov is stored as an f32: 0.7 to within its rounding.
+    assert!((scene.lens.fov.unwrap() - 0.7f64.to_degrees()).abs() < 1e-5);
+    let e = scene.through_camera("nothing").unwrap_err();
+    assert!(e.contains("camera 1") && e.contains("camera 2"), "{e}");
+}
+
+#[test]
+fn hostile_files_are_refused_at_their_json_path() {
+    let cases = [
+        ("bad/missing_buffer.gltf", "nothere.bin"),
+        ("bad/index_past.gltf", "the index 7 is past the 3"),
+        ("bad/nan_position.gltf", "not a finite number"),
+        ("bad/huge_count.gltf", "accessors[0].count"),
+        ("bad/climbs.gltf", "buffers[0].uri"),
+        ("bad/requires_unknown.gltf", "KHR_draco_mesh_compression"),
+        ("bad/cycle.gltf", "node 0"),
+    ];
+    for (file, want) in cases {
+        let e = model(file).unwrap_err().to_string();
+        assert!(e.contains(want), "{file}: {e}");
+    }
+    let m = model("bad/skin_joint_outside.gltf").unwrap();
+    let e = m.scene_at(0.0, &[], &[]).unwrap_err().to_string();
+    assert!(e.contains("skins[0].joints"), "{e}");
+}
+
+#[test]
+fn frames_run_to_the_last_key_both_ends_included() {
+    let m = model("generated/interpolation.gltf").unwrap();
+    // Keys to t = 2 s: at 4 fps 9 frames; looped, 8; at 24 fps, 49.
+    let all = m.all_clips();
+    assert_eq!(m.frames(&all, 4.0, false), 9);
+    assert_eq!(m.frames(&all, 4.0, true), 8);
+    assert_eq!(m.frames(&all, 24.0, false), 49);
+    assert_eq!(m.select(Some(&["Spin".to_string()])).unwrap(), vec![1]);
+    let e = m.select(Some(&["Walk".to_string()])).unwrap_err();
+    assert!(e.contains("Move, Spin"), "{e}");
 }
