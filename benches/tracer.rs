@@ -11,6 +11,8 @@
 //! - `texture`: noise and the three noise textures;
 //! - `frame`: whole frames at 160x120 (orbit; 10 and 10,000 spheres, parse + BVH + render),
 //!   and building the tracer (the BVH) of the 10,000-sphere scene;
+//! - `gltf`: posing a skinned glTF mesh of 100,000 vertices for one frame (the skinning
+//!   alone, and the whole scene of the frame);
 //! - `degenerate`: what degenerate input costs: a 64x48 frame of a mesh of 400,000
 //!   copies of one triangle against 400,000 distinct ones (at most 10x), and reading a
 //!   convex NFF polygon of 40,000 and 200,000 vertices (linear: about 5x apart).
@@ -290,5 +292,94 @@ fn degenerate(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, camera, shapes, queries, texture, frame, degenerate);
+/// A skinned grid of `n`×`n` vertices (two joints, weights blending across it) and one
+/// animation turning the second joint: what a glTF character's frame costs to pose.
+fn skinned_rig(n: usize) -> whitted::gltf::Model {
+    use whitted::gltf::clip::{Channel, Clip, Interp, Path};
+    use whitted::gltf::rig::{Local, Node, Prim, Rig, Skin};
+    let mut prim = Prim::default();
+    for i in 0..n {
+        for j in 0..n {
+            let (x, y) = (i as f64 / n as f64, j as f64 / n as f64);
+            prim.positions.push(DVec3::new(x, y, 0.0));
+            prim.normals.push(DVec3::Z);
+            prim.joints.push([0, 1, 0, 0]);
+            prim.weights.push([1.0 - x, x, 0.0, 0.0]);
+        }
+    }
+    for i in 0..n as u32 - 1 {
+        for j in 0..n as u32 - 1 {
+            let k = i * n as u32 + j;
+            prim.triangles.push([k, k + n as u32, k + 1]);
+            prim.triangles.push([k + 1, k + n as u32, k + n as u32 + 1]);
+        }
+    }
+    let still = |name: &str, children: Vec<usize>| Node {
+        name: Some(name.into()),
+        children,
+        local: Local::Matrix(glam::DMat4::IDENTITY),
+        mesh: None,
+        camera: None,
+        light: None,
+        skin: None,
+        weights: None,
+    };
+    let mut mesh = still("Grid", vec![]);
+    (mesh.mesh, mesh.skin) = (Some(0), Some(0));
+    let rig = Rig {
+        file: "bench".into(),
+        nodes: vec![mesh, still("Root", vec![2]), still("Bend", vec![])],
+        roots: vec![0, 1],
+        meshes: vec![vec![prim]],
+        mesh_weights: vec![vec![]],
+        looks: vec![whitted::mesh::Look {
+            texture: Texture::Uniform(Color::ONE),
+            material: whitted::gltf::material::terms(Color::ONE, 0.0, 1.0, 0.0, 1.0),
+        }],
+        double_sided: vec![false],
+        skins: vec![Skin {
+            joints: vec![1, 2],
+            inverse_bind: vec![glam::DMat4::IDENTITY; 2],
+        }],
+        clips: vec![Clip {
+            name: Some("Bend".into()),
+            channels: vec![Channel {
+                node: 2,
+                path: Path::Rotation,
+                interp: Interp::Linear,
+                times: vec![0.0, 1.0],
+                values: vec![0.0, 0.0, 0.0, 1.0, 0.0, 0.3826834, 0.0, 0.9238795],
+                width: 4,
+            }],
+        }],
+        ..Rig::default()
+    };
+    whitted::gltf::Model {
+        rig: std::sync::Arc::new(rig),
+        options: Default::default(),
+        posed: None,
+    }
+}
+
+/// Posing a glTF character: the skinning of 100,000 vertices alone (`Pose::at` and
+/// `pose::place`), and the whole scene of a frame from the file (skinning, the mesh's
+/// triangles kept, normals, the view and lights).
+fn gltf(c: &mut Criterion) {
+    let model = skinned_rig(317); // 100,489 vertices
+    let mut g = c.benchmark_group("gltf");
+    g.sample_size(20).measurement_time(Duration::from_secs(6));
+    let rig = &model.rig;
+    g.bench_function("skin 100k vertices", |b| {
+        b.iter(|| {
+            let pose = whitted::gltf::Pose::at(rig, black_box(0.5), &[0], &[]);
+            whitted::gltf::pose::place(rig, &pose, 0, &rig.meshes[0][0])
+        })
+    });
+    g.bench_function("scene of a skinned frame, 100k vertices", |b| {
+        b.iter(|| model.scene_at(black_box(0.5), &[0], &[]).unwrap())
+    });
+    g.finish();
+}
+
+criterion_group!(benches, camera, shapes, queries, texture, frame, degenerate, gltf);
 criterion_main!(benches);

@@ -215,6 +215,18 @@ impl Camera {
         let dir = self.corner + self.step_x * x - self.step_y * y;
         Ray::new(self.eye, dir.normalize())
     }
+
+    /// The parallel ray of an orthographic view through image point (x, y): it leaves
+    /// the view plane's point there, moved to the eye's plane and scaled so that the
+    /// image's height spans `height` (a glTF camera's 2·ymag), along the viewing axis.
+    pub fn parallel_ray(&self, x: f64, y: f64, height: f64) -> Ray {
+        let d = self.corner + self.step_x * x - self.step_y * y;
+        // step_x points right and step_y up the image: their cross product points back.
+        let forward = self.step_y.cross(self.step_x).normalize();
+        let offset = d - d.dot(forward) * forward;
+        let k = height / self.plane.1;
+        Ray::new(self.eye + k * offset, forward)
+    }
 }
 
 #[cfg(test)]
@@ -223,6 +235,23 @@ mod tests {
 
     fn close(a: DVec3, b: DVec3) -> bool {
         (a - b).length() < 1e-12
+    }
+
+    #[test]
+    fn parallel_rays_span_the_view_height_by_hand() {
+        // The report's plane, 0.5 × 0.35 at distance 1, spread over a height of 2: the
+        // scale is 2 / 0.35, so the top-left corner's ray leaves (−0.25, 0.175)·2/0.35 =
+        // (−1/0.7, 1) and every ray runs along the axis.
+        let cam = Camera::new(DVec3::ZERO, -DVec3::Z, 2, 2).unwrap();
+        let r = cam.parallel_ray(0.0, 0.0, 2.0);
+        assert!(
+            close(r.origin, DVec3::new(-1.0 / 0.7, 1.0, 0.0)),
+            "{}",
+            r.origin
+        );
+        assert!(close(r.dir, -DVec3::Z), "{}", r.dir);
+        let c = cam.parallel_ray(1.0, 1.0, 2.0);
+        assert!(close(c.origin, DVec3::ZERO) && close(c.dir, -DVec3::Z));
     }
 
     #[test]

@@ -51,6 +51,7 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
         lens: Default::default(),
         ext: Extension::default(),
         meshes: Vec::new(),
+        parallel: None,
         linear: true,
         model: None,
     };
@@ -226,6 +227,7 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
     scene.eye = view.eye;
     scene.look_at = view.look_at;
     scene.lens = view.lens;
+    scene.parallel = view.parallel;
     (scene.width, scene.height) = view.size;
     scene.t_min = crate::scene::nff::epsilon(scene.eye, &scene.objects);
     Ok(scene)

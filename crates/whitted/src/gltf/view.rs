@@ -1,7 +1,9 @@
 //! The view of a glTF scene (SPEC §18): the first camera in depth-first order of the
 //! scene's nodes, or the one named; it looks down its node's −z with +y up (the node's
 //! scale ignored), `yfov` the full vertical angle between the image's top and bottom
-//! edges, 640 × 480 by default or the camera's `aspectRatio` at a height of 480. Without
+//! edges, 640 × 480 by default or the camera's `aspectRatio` at a height of 480; an
+//! orthographic camera casts parallel rays over 2·xmag × 2·ymag (its xmag/ymag the
+//! aspect). Without
 //! a camera one is placed to frame the scene's bounds, looking down −z with a vertical
 //! angle of `DEFAULT_FOV`; and without a light, one stated default light
 //! (`default_light`) travels from behind the camera's upper left.
@@ -32,6 +34,8 @@ pub struct View {
     pub size: (u32, u32),
     /// The camera's name, if it came from the file.
     pub name: Option<String>,
+    /// An orthographic camera's view height (2·ymag): parallel rays.
+    pub parallel: Option<f64>,
 }
 
 /// The camera at `world` (its node's world matrix) with projection `p`.
@@ -39,11 +43,13 @@ pub fn placed(world: &DMat4, p: Projection, name: Option<String>) -> View {
     let eye = world.w_axis.truncate();
     let forward = (-world.z_axis.truncate()).normalize_or(-DVec3::Z);
     let up = world.y_axis.truncate().normalize_or(DVec3::Y);
-    let (fov, aspect) = match p {
-        Projection::Perspective { yfov, aspect } => (yfov.to_degrees(), aspect),
-        // Drawn as the perspective of the same vertical extent seen from its distance:
-        // the tracer has no parallel projection yet (a warning says so).
-        Projection::Orthographic { xmag, ymag } => (DEFAULT_FOV, Some(xmag / ymag)),
+    // An orthographic camera's rays are parallel (`Camera::parallel_ray`); its angle
+    // only sizes the view plane they are spread over.
+    let (fov, aspect, parallel) = match p {
+        Projection::Perspective { yfov, aspect } => (yfov.to_degrees(), aspect, None),
+        Projection::Orthographic { xmag, ymag } => {
+            (DEFAULT_FOV, Some(xmag / ymag), Some(2.0 * ymag.abs()))
+        }
     };
     let size = match aspect {
         Some(a) if a.is_finite() && a > 0.0 => (
@@ -63,6 +69,7 @@ pub fn placed(world: &DMat4, p: Projection, name: Option<String>) -> View {
         },
         size,
         name,
+        parallel,
     }
 }
 
@@ -88,6 +95,7 @@ pub fn framing(lo: DVec3, hi: DVec3) -> View {
         },
         size: (WIDTH, HEIGHT),
         name: None,
+        parallel: None,
     }
 }
 

@@ -20,6 +20,8 @@ use crate::trace::{RayCount, Tracer};
 pub struct Shot<'a> {
     camera: &'a Camera,
     lens: Option<ThinLens>,
+    /// An orthographic view's height in the world (a glTF camera's), if the scene has one.
+    parallel: Option<f64>,
 }
 
 impl<'a> Shot<'a> {
@@ -29,6 +31,7 @@ impl<'a> Shot<'a> {
         Shot {
             camera,
             lens: focus.map(|f| ThinLens::new(camera, f)),
+            parallel: tracer.scene().parallel,
         }
     }
 
@@ -40,9 +43,19 @@ impl<'a> Shot<'a> {
     /// The camera when the shot has no lens (each camera sample is one pinhole ray).
     #[inline]
     pub fn pinhole(&self) -> Option<&Camera> {
-        match self.lens {
-            None => Some(self.camera),
-            Some(_) => None,
+        match (&self.lens, self.parallel) {
+            (None, None) => Some(self.camera),
+            _ => None,
+        }
+    }
+
+    /// The camera ray through image point (x, y): the pinhole's, or an orthographic
+    /// view's parallel ray.
+    #[inline(always)]
+    fn ray(&self, x: f64, y: f64) -> Ray {
+        match self.parallel {
+            None => self.camera.ray(x, y),
+            Some(height) => self.camera.parallel_ray(x, y, height),
         }
     }
 
@@ -63,7 +76,9 @@ impl<'a> Shot<'a> {
         y: f64,
         count: &mut RayCount,
     ) -> Color {
-        let ray = self.camera.ray(x, y);
+        let ray = self.ray(x, y);
+        // The tiles' lists answer for rays that leave the eye: not a parallel view's.
+        let hint = hint.filter(|_| self.parallel.is_none());
         match &self.lens {
             None => tracer.primary_in(hint, &ray, count),
             Some(lens) => lens_color(lens, tracer, hint, &ray, count),
@@ -73,7 +88,7 @@ impl<'a> Shot<'a> {
     /// Every ray of the camera sample at (x, y), in lens-point order: `each(ray)`.
     #[inline]
     pub fn each_ray(&self, x: f64, y: f64, mut each: impl FnMut(&Ray)) {
-        let ray = self.camera.ray(x, y);
+        let ray = self.ray(x, y);
         match &self.lens {
             None => each(&ray),
             Some(lens) => lens.rays(&ray).for_each(|r| each(&r)),

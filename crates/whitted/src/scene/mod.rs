@@ -74,6 +74,9 @@ pub struct Scene {
     /// indexes this): shared, so that copies of a scene (an animation's frames) share
     /// their triangles.
     pub meshes: Vec<std::sync::Arc<crate::mesh::Mesh>>,
+    /// An orthographic view's height in the world (a glTF orthographic camera's 2·ymag):
+    /// parallel camera rays instead of the pinhole's. `None` for every other scene.
+    pub parallel: Option<f64>,
     /// Shaded in linear light (a glTF scene, SPEC §18): the tracer's values are linear
     /// and the frame is sRGB-encoded for display. False for Scene.txt and NFF.
     pub linear: bool,

@@ -152,9 +152,12 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
     // carry.
     if let Some(model) = &scene.model {
         f(11.0);
-        format!("{:?}{:?}{}", model.posed, model.options, scene.linear)
-            .bytes()
-            .for_each(|b| f(f64::from(b)));
+        format!(
+            "{:?}{:?}{}{:?}",
+            model.posed, model.options, scene.linear, scene.parallel
+        )
+        .bytes()
+        .for_each(|b| f(f64::from(b)));
     }
     let mut sources: Vec<[u8; 32]> = scene.meshes.iter().map(|m| m.source).collect();
     image_sources(scene.objects.iter(), &mut sources);
