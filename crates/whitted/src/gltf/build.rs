@@ -115,8 +115,10 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
                 lo: mlo,
                 hi: mhi,
             };
+            let single_sided = !rig.double_sided[prim.look];
             scene.meshes.push(Arc::new(Mesh {
                 source: rig.source,
+                single_sided,
                 ..mesh
             }));
             let name = base.as_ref().map(|b| {

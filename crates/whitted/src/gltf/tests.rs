@@ -159,3 +159,29 @@ fn frames_run_to_the_last_key_both_ends_included() {
     let e = m.select(Some(&["Walk".to_string()])).unwrap_err();
     assert!(e.contains("Move, Spin"), "{e}");
 }
+
+/// The Khronos triangle turned 180° about y (its back to the camera), with a material
+/// `doubleSided` or not: the centre pixel's colour.
+fn back_of_triangle(double_sided: bool) -> [u8; 3] {
+    let text = std::fs::read_to_string(sample("Triangle.gltf")).unwrap();
+    let mut json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    json["nodes"][0]["rotation"] = serde_json::json!([0.0, 1.0, 0.0, 0.0]);
+    json["materials"] = serde_json::json!([{ "doubleSided": double_sided }]);
+    json["meshes"][0]["primitives"][0]["material"] = serde_json::json!(0);
+    let bytes = json.to_string().into_bytes();
+    let m = Model::read(&sample("Triangle.gltf"), &bytes, Options::default()).unwrap();
+    let scene = m.scene_at(0.0, &[], &[]).unwrap();
+    let tracer = crate::trace::Tracer::new(&scene);
+    let (w, h) = (scene.width, scene.height);
+    let (frame, _) = crate::render(&tracer, &scene.camera(), w, h, 1);
+    // The view is centred on the turned triangle's box, (−0.5, 0.5); its centroid,
+    // (−1/3, 1/3), lies right of and below that centre.
+    let i = ((h / 2 + 20) * w + w / 2 + 40) as usize * 3;
+    [frame.pixels[i], frame.pixels[i + 1], frame.pixels[i + 2]]
+}
+
+#[test]
+fn camera_rays_do_not_see_the_back_of_a_single_sided_material() {
+    assert_ne!(back_of_triangle(true), [0, 0, 0]);
+    assert_eq!(back_of_triangle(false), [0, 0, 0]);
+}

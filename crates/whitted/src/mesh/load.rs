@@ -149,6 +149,7 @@ impl Mesh {
             face_looks,
             warnings: raw.warnings,
             source: [0; 32],
+            single_sided: false,
         };
         let angle = match (shading, mesh.normals.is_empty()) {
             (Some(Shading::Flat), _) => {

@@ -160,6 +160,9 @@ pub struct Mesh {
     pub warnings: Vec<String>,
     /// The SHA-256 of the file it was read from (zeros for one made in memory).
     pub source: [u8; 32],
+    /// Camera rays do not see its back faces (a glTF material that is not
+    /// `doubleSided`); false for every other mesh, whose triangles are two-sided.
+    pub single_sided: bool,
 }
 
 impl std::fmt::Debug for Mesh {

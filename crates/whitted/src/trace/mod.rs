@@ -183,10 +183,15 @@ impl<'a> Tracer<'a> {
         count.primary += 1;
         let ray = &ray.with_t_min(self.scene.t_min);
         let objects = &self.scene.objects;
-        let hit = match tile.and_then(|h| h.nearest(objects, ray)) {
+        let mut hit = match tile.and_then(|h| h.nearest(objects, ray)) {
             Some(found) => found.map(|(t, i)| (t, i, NO_PART)),
             None => self.accel.nearest_hit(ray).map(|h| (h.t, h.index, h.part)),
         };
+        if let Some((t, i, part)) = hit {
+            if part != NO_PART && self.culled(&objects[i], part, ray) {
+                hit = self.past_culled(ray, t);
+            }
+        }
         match hit {
             Some((t, i, part)) => {
                 // A mesh is shaded as the triangle hit (the object itself otherwise).
@@ -221,6 +226,41 @@ impl<'a> Tracer<'a> {
                 self.scene.fog.apply(background, f64::INFINITY)
             }
         }
+    }
+
+    /// Whether triangle `part` of mesh object `obj` is a back face that camera rays do
+    /// not see (a glTF material that is not `doubleSided`; SPEC §18). Every other surface
+    /// is two-sided.
+    #[cold]
+    #[inline(never)]
+    fn culled(&self, obj: &Object, part: u32, ray: &Ray) -> bool {
+        let crate::shapes::Shape::Mesh(m) = &obj.shape else {
+            return false;
+        };
+        let mesh = &self.scene.meshes[m.id as usize];
+        if !mesh.single_sided {
+            return false;
+        }
+        let [a, b, c] = mesh.corners(part);
+        (b - a).cross(c - a).dot(ray.dir) > 0.0
+    }
+
+    /// The first hit of a camera ray past back faces it does not see: the same ray, its
+    /// hits counted only past the one culled (distances stay the eye's).
+    #[cold]
+    #[inline(never)]
+    fn past_culled(&self, ray: &Ray, mut t: f64) -> Option<(f64, usize, u32)> {
+        let objects = &self.scene.objects;
+        // A bound on the surfaces passed, against a pathological file.
+        for _ in 0..1024 {
+            let further = ray.with_t_min(t + self.scene.t_min);
+            let h = self.accel.nearest_hit(&further)?;
+            if h.part == NO_PART || !self.culled(&objects[h.index], h.part, ray) {
+                return Some((h.t, h.index, h.part));
+            }
+            t = h.t;
+        }
+        None
     }
 
     /// The colour along a secondary ray at recursion `depth` with path weight `weight`.
