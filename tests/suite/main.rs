@@ -49,6 +49,7 @@ mod farm_slurm;
 mod focus;
 mod frame_cli;
 mod frame_specs;
+mod gltf_povray;
 mod golden_frames;
 mod image_povray;
 mod image_textures;
