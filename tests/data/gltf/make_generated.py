@@ -11,6 +11,9 @@ Writes, next to this script:
                                    KHR_lights_punctual directional light
     generated/metal_rough.gltf     3x3 grid of UV spheres, metallic x roughness,
                                    a point light and a camera
+    generated/smooth_sphere.gltf   one smooth UV sphere (NORMAL) over a floor quad without
+                                   normals (flat), a camera turned down, a coloured
+                                   KHR_lights_punctual directional light (tests/suite/gltf_povray)
     generated/two_primitives.glb   binary GLB: TRIANGLE_STRIP + TRIANGLE_FAN primitives,
                                    duplicate node names, a mirrored (negative scale) node
     bad/*.gltf                     hostile files, each with exactly one intended fault
@@ -284,6 +287,70 @@ def make_metal_rough():
     write_text(os.path.join(GEN_DIR, "metal_rough.gltf"), dump_json(doc))
 
 
+# ---------------------------------------------------------------- smooth_sphere.gltf
+
+def axis_angle(axis, angle):
+    """The unit quaternion [x, y, z, w] of a turn by `angle` radians about `axis`."""
+    n = math.sqrt(sum(c * c for c in axis))
+    s = math.sin(angle / 2.0)
+    return [axis[0] / n * s, axis[1] / n * s, axis[2] / n * s, math.cos(angle / 2.0)]
+
+
+def make_smooth_sphere():
+    b = Builder()
+    pos, nrm, uv, idx = uv_sphere(0.9, 32, 24)
+    a_pos = b.accessor(pos, FLOAT, "VEC3", ARRAY_BUFFER, minmax=True)
+    a_nrm = b.accessor(nrm, FLOAT, "VEC3", ARRAY_BUFFER)
+    a_idx = b.accessor(idx, UNSIGNED_SHORT, "SCALAR", ELEMENT_ARRAY_BUFFER)
+    # The floor: one quad at y = -0.9 without NORMAL (so drawn flat), wound to face +y.
+    floor = [-3.0, -0.9, -3.0, -3.0, -0.9, 3.0, 3.0, -0.9, 3.0, 3.0, -0.9, -3.0]
+    a_floor = b.accessor(floor, FLOAT, "VEC3", ARRAY_BUFFER, minmax=True)
+    a_fidx = b.accessor([0, 1, 2, 0, 2, 3], UNSIGNED_SHORT, "SCALAR", ELEMENT_ARRAY_BUFFER)
+    # The light travels along d = (-0.4, -0.8, -0.45): the node turns -Z onto d.
+    d = [-0.4, -0.8, -0.45]
+    dn = math.sqrt(sum(c * c for c in d))
+    d = [c / dn for c in d]
+    axis = [d[1], -d[0], 0.0]  # (-Z) x d
+    sun_q = axis_angle(axis, math.acos(-d[2]))
+    cam_q = axis_angle([1.0, 0.0, 0.0], math.radians(-15.0))
+
+    doc = {
+        "asset": asset(),
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"name": "Sun", "type": "directional", "color": [1.0, 0.95, 0.85], "intensity": 1.6},
+        ]}},
+        "scene": 0,
+        "scenes": [{"name": "Scene", "nodes": [0, 1, 2, 3]}],
+        "nodes": [
+            {"name": "Ball", "mesh": 0, "translation": [0.2, 0.0, 0.0]},
+            {"name": "Floor", "mesh": 1},
+            {"name": "Cam", "camera": 0, "translation": [0.0, 1.2, 4.5], "rotation": cam_q},
+            {"name": "Sun", "rotation": sun_q, "extensions": {"KHR_lights_punctual": {"light": 0}}},
+        ],
+        "cameras": [{"name": "Cam", "type": "perspective", "perspective": {
+            "yfov": 0.7, "aspectRatio": 4.0 / 3.0, "znear": 0.1, "zfar": 100.0}}],
+        "meshes": [
+            {"name": "Ball", "primitives": [{
+                "attributes": {"POSITION": a_pos, "NORMAL": a_nrm},
+                "indices": a_idx, "material": 0, "mode": TRIANGLES}]},
+            {"name": "Floor", "primitives": [{
+                "attributes": {"POSITION": a_floor},
+                "indices": a_fidx, "material": 1, "mode": TRIANGLES}]},
+        ],
+        "materials": [
+            {"name": "Orange", "pbrMetallicRoughness": {
+                "baseColorFactor": [0.9, 0.45, 0.2, 1.0], "metallicFactor": 0.3, "roughnessFactor": 0.4}},
+            {"name": "Grey", "pbrMetallicRoughness": {
+                "baseColorFactor": [0.6, 0.6, 0.6, 1.0], "metallicFactor": 0.0, "roughnessFactor": 1.0}},
+        ],
+        "accessors": b.accessors,
+        "bufferViews": b.buffer_views,
+        "buffers": [{"byteLength": len(b.padded_data()), "uri": b.data_uri()}],
+    }
+    write_text(os.path.join(GEN_DIR, "smooth_sphere.gltf"), dump_json(doc))
+
+
 # ---------------------------------------------------------------- c. two_primitives.glb
 
 def glb(doc, bin_data):
@@ -432,6 +499,7 @@ def make_bad():
 def main():
     make_interpolation()
     make_metal_rough()
+    make_smooth_sphere()
     make_two_primitives()
     make_bad()
     for d in (GEN_DIR, BAD_DIR):

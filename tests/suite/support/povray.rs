@@ -18,13 +18,26 @@ pub fn povray() -> Option<PathBuf> {
 /// POV-Ray's picture of `pov` at w × h (one ray a pixel, linear output, no alpha) as
 /// DIR/pov.png; POV-Ray failing fails the test with its messages.
 pub fn povray_png(povray: &Path, dir: &Path, pov: &Path, w: u32, h: u32) -> PathBuf {
+    povray_png_encoded(povray, dir, pov, (w, h), "1.0")
+}
+
+/// `povray_png` with the output encoded by `gamma` (POV-Ray's `File_Gamma`: `1.0` writes
+/// the linear values, `srgb` sRGB-encodes them as a linear-light scene's frame is).
+pub fn povray_png_encoded(
+    povray: &Path,
+    dir: &Path,
+    pov: &Path,
+    (w, h): (u32, u32),
+    gamma: &str,
+) -> PathBuf {
     let theirs = dir.join("pov.png");
     let out = std::process::Command::new(povray)
         .current_dir(dir)
         .arg(format!("+I{}", pov.display()))
         .arg(format!("+O{}", theirs.display()))
         .args([&format!("+W{w}"), &format!("+H{h}"), "-A", "-D", "+FN8"])
-        .args(["File_Gamma=1.0", "Output_Alpha=off", "-V", "-GA"])
+        .arg(format!("File_Gamma={gamma}"))
+        .args(["Output_Alpha=off", "-V", "-GA"])
         .output()
         .unwrap();
     assert!(

@@ -88,7 +88,18 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
             if mirrored {
                 triangles.iter_mut().for_each(|t| t.swap(1, 2));
             }
-            let flat = normals.is_empty();
+            // A zero or non-finite normal (an exporter's degenerate vertex, a skin whose
+            // weights sum to zero) would make `Mesh::from_raw` drop every normal and then
+            // smooth the faces at 30 degrees, as for an OBJ without normals: a glTF
+            // primitive without usable normals is flat instead (SPEC §18), with a warning.
+            let unusable = normals.iter().any(|v| !v.is_finite() || *v == DVec3::ZERO);
+            if unusable {
+                warnings.push(format!(
+                    "{}: meshes[{m}].primitives[{k}] has a zero or non-finite normal; it is drawn flat",
+                    rig.file
+                ));
+            }
+            let flat = normals.is_empty() || unusable;
             let raw = Raw {
                 positions,
                 normals,

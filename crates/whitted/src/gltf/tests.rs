@@ -40,6 +40,24 @@ fn box_reads_its_24_vertices_and_12_triangles() {
 }
 
 #[test]
+fn a_zero_normal_makes_its_primitive_flat_with_a_warning() {
+    // Box with its first normal zeroed: flat (no normals kept), not smoothed at 30°.
+    let m = model("Box.gltf").unwrap();
+    let mut rig = (*m.rig).clone();
+    rig.meshes[0][0].normals[0] = DVec3::ZERO;
+    let m = Model {
+        rig: std::sync::Arc::new(rig),
+        ..m
+    };
+    let scene = m.scene_at(0.0, &[], &[]).unwrap();
+    let mesh = &scene.meshes[0];
+    assert!(mesh.normals.is_empty());
+    assert_eq!((mesh.vertices.len(), mesh.triangles.len()), (24, 12));
+    assert!(mesh.warnings.iter().any(|w| w
+        .ends_with("meshes[0].primitives[0] has a zero or non-finite normal; it is drawn flat")));
+}
+
+#[test]
 fn a_sparse_accessor_replaces_its_three_positions() {
     let m = model("SimpleSparseAccessor.gltf").unwrap();
     let p = &m.rig.meshes[0][0].positions;
