@@ -255,6 +255,11 @@ def body():
         tube("skin", [0.0, 1.57, 0.0], [0.0, 1.80, 0.005], rounded(0.1, 0.1, 0.5),
              lambda p: {J["Head"]: 1.0}, rings=18, segs=24, squash=1.1)
     )
+    # A nose, so that the head shows which way it faces (+z).
+    parts.append(
+        tube("skin", [0.0, 1.69, 0.07], [0.0, 1.66, 0.125], rounded(0.022, 0.016, 0.4),
+             lambda p: {J["Head"]: 1.0}, rings=8, segs=10)
+    )
     for side, sx in (("L", 1.0), ("R", -1.0)):
         up, low = J["UpperArm." + side], J["LowerArm." + side]
         sh = WORLD["UpperArm." + side]
@@ -267,7 +272,9 @@ def body():
         def arm_w(p, up=up, low=low, sh=sh, elbow_y=elbow_y):
             t = smooth(elbow_y + 0.05, elbow_y - 0.05, p[1])
             w = {up: 1.0 - t, low: t}
-            c = smooth(sh[1] - 0.07, sh[1] + 0.02, p[1])
+            # The shoulder: the arm's top keeps a little of the chest's motion (a full
+            # blend would pinch the arm when it is raised over the head).
+            c = 0.35 * smooth(sh[1] - 0.03, sh[1] + 0.04, p[1])
             if c > 0:
                 w = {k: x * (1.0 - c) for k, x in w.items()}
                 w[J["Chest"]] = w.get(J["Chest"], 0.0) + c
@@ -409,7 +416,7 @@ def walk(shoes):
 
 def wave():
     times = [0.0, 0.4, 0.6, 0.8, 1.0, 1.2, 1.4, 1.6, 2.0]
-    raise_ = quat_mul(quat_axis(Z, -135.0), quat_axis(X, -10.0))
+    raise_ = quat_mul(quat_axis(Z, -125.0), quat_axis(X, -10.0))
     rest = [0.0, 0.0, 0.0, 1.0]
     upper = [rest] + [raise_] * 7 + [rest]
     fore = [rest]
@@ -474,11 +481,11 @@ def material(name, colour, roughness):
 def build():
     looks = ["shirt", "skin", "trousers", "shoes"]
     materials = [
-        material("Shirt", [0.04, 0.11, 0.32], 0.6),
+        material("Shirt", [0.025, 0.07, 0.2], 0.6),
         material("Skin", [0.38, 0.22, 0.15], 0.7),
         material("Trousers", [0.09, 0.08, 0.07], 0.9),
         material("Shoes", [0.05, 0.03, 0.02], 0.4),
-        material("Ground", [0.2, 0.2, 0.2], 1.0),
+        material("Ground", [0.12, 0.12, 0.12], 1.0),
     ]
     parts = body()
     w = Writer()
@@ -532,7 +539,7 @@ def build():
             node["children"] = kids
         nodes.append(node)
     nodes.append({"name": "Ground", "mesh": 1})
-    eye, chest = [2.5, 1.6, 4.0], [0.0, 1.25, 0.0]
+    eye, chest = [2.5, 1.6, 4.0], [0.0, 1.2, 0.0]
     nodes.append({"name": "Cam", "camera": 0, "translation": eye,
                   "rotation": look_rotation(eye, chest)})
     sun_from = [-3.0, 6.0, 4.0]
@@ -574,7 +581,7 @@ def build():
                    "joints": [first_joint + k for k in range(len(JOINTS))]}],
         "materials": materials,
         "cameras": [{"name": "Cam", "type": "perspective",
-                     "perspective": {"yfov": 0.6, "aspectRatio": 4.0 / 3.0, "znear": 0.05,
+                     "perspective": {"yfov": 0.62, "aspectRatio": 4.0 / 3.0, "znear": 0.05,
                                      "zfar": 100.0}}],
         "extensions": {"KHR_lights_punctual": {"lights": [
             {"name": "Sun", "type": "directional", "color": [1.0, 0.96, 0.9],
