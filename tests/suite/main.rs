@@ -50,6 +50,7 @@ mod focus;
 mod frame_cli;
 mod frame_specs;
 mod gltf_cli;
+mod gltf_walker;
 mod golden_frames;
 mod image_povray;
 mod image_textures;
