@@ -51,6 +51,7 @@ mod frame_cli;
 mod frame_specs;
 mod gltf_cli;
 mod gltf_povray;
+mod gltf_walker;
 mod golden_frames;
 mod image_povray;
 mod image_textures;

@@ -14,7 +14,9 @@ fn every_shipped_file_exists_and_loads() {
     for path in shipped::scenes() {
         Scene::load(&path).unwrap_or_else(|e| panic!("{e}"));
     }
-    for path in shipped::animations() {
+    let gltf = shipped::GLTF_ANIMATIONS.iter();
+    let gltf = gltf.map(|n| shipped::root().join("animations").join(n));
+    for path in shipped::animations().into_iter().chain(gltf) {
         Project::load(&path).unwrap_or_else(|e| panic!("{e}"));
     }
 }
@@ -36,11 +38,13 @@ fn the_list_is_what_git_tracks() {
     let mut listed: Vec<String> = shipped::SCENES
         .iter()
         .chain(shipped::MESH_FILES)
+        .chain(shipped::MODEL_FILES)
         .map(|n| format!("scenes/{n}"))
         .chain(
             shipped::ANIMATIONS
                 .iter()
                 .chain(shipped::SPD_ANIMATIONS)
+                .chain(shipped::GLTF_ANIMATIONS)
                 .map(|n| format!("animations/{n}")),
         )
         .collect();

@@ -38,6 +38,10 @@ pub const SCENES: &[&str] = &[
 /// `benches/gen_meshes.py`).
 pub const MESH_FILES: &[&str] = &["meshes/gem.obj", "meshes/trefoil.ply"];
 
+/// The glTF models, in `scenes/` (each written by the script beside it), and their
+/// scripts: `walk.toml` plays the walker.
+pub const MODEL_FILES: &[&str] = &["models/make_walker.py", "models/walker.glb"];
+
 /// The shipped manifests, in `animations/`.
 pub const ANIMATIONS: &[&str] = &[
     "bounce.toml",
@@ -53,6 +57,11 @@ pub const ANIMATIONS: &[&str] = &[
 /// beside the repository (`../shared/spd`, not in it): listed apart, since they load only
 /// where that copy is (`tests/suite/nff.rs` loads them there, and skips elsewhere).
 pub const SPD_ANIMATIONS: &[&str] = &["sphereflake.toml"];
+
+/// The shipped manifests that play a glTF file's animation without `frames`: listed
+/// apart, since they count their frames from the file, which must be beside them (the
+/// parsers' seeds are parsed from text alone).
+pub const GLTF_ANIMATIONS: &[&str] = &["walk.toml"];
 
 /// The repository's root.
 pub fn root() -> &'static Path {
