@@ -116,24 +116,11 @@ pub fn direct_rec<O: Occluders + ?Sized, R: Record>(
                 spec,
             );
         }
-        Highlight::Phong { ks, shine } => {
+        // A glTF material's highlight is a Phong term too (its emission is added with
+        // the extension's lights, which a glTF scene always has: `add_lights`), so this
+        // match keeps the two arms the orbit's code was measured with.
+        Highlight::Phong { ks, shine } | Highlight::Gltf(Pbr { ks, shine, .. }) => {
             let spec = |i: f64, vr: f64| ks * i * vr.powf(shine);
-            out = lit(
-                occluders,
-                lights,
-                At { p, n, v, color, kd },
-                out,
-                shadow_rays,
-                rec,
-                spec,
-            );
-        }
-        Highlight::Gltf(pbr) => {
-            let spec = |i: f64, vr: f64| pbr.ks * i * vr.powf(pbr.shine);
-            if R::ACTIVE {
-                rec.emission(pbr.emission);
-            }
-            out += pbr.emission;
             out = lit(
                 occluders,
                 lights,
@@ -162,7 +149,8 @@ struct At {
 }
 
 /// `out` plus each of `lights`' diffuse and specular at `p`, shadowed, telling `rec` each
-/// term: the extension's lights (`lights::build`), after `direct_rec`. Out of line and
+/// term: the extension's lights (`lights::build`), after `direct_rec`; and a glTF
+/// material's emission, added here because a glTF scene always has such lights. Out of line and
 /// called only when a scene has such lights: a test for them inside `direct` cost the
 /// orbit (which has none) 2.2 % more instructions.
 #[allow(clippy::too_many_arguments)]
@@ -180,6 +168,13 @@ pub fn add_lights<O: Occluders + ?Sized, L: LightSource, R: Record>(
     rec: &mut R,
 ) -> Color {
     let kd = material.kd;
+    let mut out = out;
+    if let Highlight::Gltf(pbr) = &material.highlight {
+        if R::ACTIVE {
+            rec.emission(pbr.emission);
+        }
+        out += pbr.emission;
+    }
     match material.highlight {
         Highlight::Report => {
             let spec = |i: f64, vr: f64| (1.0 - kd) * i * vr.powi(SHININESS);
