@@ -334,8 +334,9 @@ fn skinned_rig(n: usize) -> whitted::gltf::Model {
         mesh_weights: vec![vec![]],
         looks: vec![whitted::mesh::Look {
             texture: Texture::Uniform(Color::ONE),
-            material: whitted::gltf::material::terms(Color::ONE, 0.0, 1.0, 0.0, 1.0),
+            material: whitted::gltf::material::terms(Color::ONE, 0.0, 1.0, 0.0, 1.0, 0).0,
         }],
+        pbr: vec![whitted::gltf::material::terms(Color::ONE, 0.0, 1.0, 0.0, 1.0, 0).1],
         double_sided: vec![false],
         skins: vec![Skin {
             joints: vec![1, 2],

@@ -103,16 +103,17 @@ fn mesh2(scene: &Scene, k: usize, gltf: &Path, dir: &Path) -> String {
     };
     let mesh = &scene.meshes[handle.id as usize];
     let m = &obj.material;
-    let Highlight::Gltf(pbr) = m.highlight else {
+    let Highlight::Gltf { ks, shine, look } = m.highlight else {
         panic!("a glTF material has a glTF highlight");
     };
+    let pbr = &scene.pbr[look as usize];
     assert_eq!(m.kt, 0.0, "no transmission in these scenes");
     let finish = format!(
         "finish {{ ambient 0.2 diffuse {:.9} phong {:.9} phong_size {:.9} \
          reflection {{ {} }} emission {} }}",
         m.kd,
-        pbr.ks,
-        pbr.shine,
+        ks,
+        shine,
         rgb(m.kr * pbr.tint),
         rgb(pbr.emission)
     );

@@ -13,7 +13,7 @@
 
 use crate::base::Color;
 use crate::lights::{LightSource, Occluders, PointLight};
-use crate::object::{Highlight, Material, Object, Pbr};
+use crate::object::{Highlight, Material, Object};
 use crate::optics::Ray;
 use crate::record::{NoRecord, Record};
 use glam::DVec3;
@@ -116,10 +116,22 @@ pub fn direct_rec<O: Occluders + ?Sized, R: Record>(
                 spec,
             );
         }
-        // A glTF material's highlight is a Phong term too (its emission is added with
-        // the extension's lights, which a glTF scene always has: `add_lights`), so this
-        // match keeps the two arms the orbit's code was measured with.
-        Highlight::Phong { ks, shine } | Highlight::Gltf(Pbr { ks, shine, .. }) => {
+        Highlight::Phong { ks, shine } => {
+            let spec = |i: f64, vr: f64| ks * i * vr.powf(shine);
+            out = lit(
+                occluders,
+                lights,
+                At { p, n, v, color, kd },
+                out,
+                shadow_rays,
+                rec,
+                spec,
+            );
+        }
+        // A glTF material's highlight is a Phong term (its tint and emission are the
+        // tracer's to add, from `Scene::pbr`).
+        Highlight::Gltf { ks, shine, .. } => {
+            let (ks, shine) = (f64::from(ks), f64::from(shine));
             let spec = |i: f64, vr: f64| ks * i * vr.powf(shine);
             out = lit(
                 occluders,
@@ -149,8 +161,7 @@ struct At {
 }
 
 /// `out` plus each of `lights`' diffuse and specular at `p`, shadowed, telling `rec` each
-/// term: the extension's lights (`lights::build`), after `direct_rec`; and a glTF
-/// material's emission, added here because a glTF scene always has such lights. Out of line and
+/// term: the extension's lights (`lights::build`), after `direct_rec`. Out of line and
 /// called only when a scene has such lights: a test for them inside `direct` cost the
 /// orbit (which has none) 2.2 % more instructions.
 #[allow(clippy::too_many_arguments)]
@@ -168,13 +179,6 @@ pub fn add_lights<O: Occluders + ?Sized, L: LightSource, R: Record>(
     rec: &mut R,
 ) -> Color {
     let kd = material.kd;
-    let mut out = out;
-    if let Highlight::Gltf(pbr) = &material.highlight {
-        if R::ACTIVE {
-            rec.emission(pbr.emission);
-        }
-        out += pbr.emission;
-    }
     match material.highlight {
         Highlight::Report => {
             let spec = |i: f64, vr: f64| (1.0 - kd) * i * vr.powi(SHININESS);
@@ -188,7 +192,20 @@ pub fn add_lights<O: Occluders + ?Sized, L: LightSource, R: Record>(
                 spec,
             )
         }
-        Highlight::Phong { ks, shine } | Highlight::Gltf(Pbr { ks, shine, .. }) => {
+        Highlight::Phong { ks, shine } => {
+            let spec = |i: f64, vr: f64| ks * i * vr.powf(shine);
+            lit(
+                occluders,
+                lights,
+                At { p, n, v, color, kd },
+                out,
+                shadow_rays,
+                rec,
+                spec,
+            )
+        }
+        Highlight::Gltf { ks, shine, .. } => {
+            let (ks, shine) = (f64::from(ks), f64::from(shine));
             let spec = |i: f64, vr: f64| ks * i * vr.powf(shine);
             lit(
                 occluders,

@@ -51,6 +51,7 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
         lens: Default::default(),
         ext: Extension::default(),
         meshes: Vec::new(),
+        pbr: rig.pbr.clone(),
         parallel: None,
         linear: true,
         model: None,

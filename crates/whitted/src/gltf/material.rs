@@ -26,26 +26,38 @@ pub use reading::read;
 /// The largest Phong exponent a smooth surface takes.
 pub const MAX_SHINE: f64 = 1000.0;
 
-/// §2's terms of a material with these factors.
-pub fn terms(base: Color, metallic: f64, roughness: f64, kt: f64, ior: f64) -> Material {
+/// §2's terms of a material with these factors, its tint and emission (none) being
+/// entry `look` of the scene's `Scene::pbr`.
+pub fn terms(
+    base: Color,
+    metallic: f64,
+    roughness: f64,
+    kt: f64,
+    ior: f64,
+    look: u32,
+) -> (Material, Pbr) {
     let (m, r) = (metallic.clamp(0.0, 1.0), roughness.clamp(0.0, 1.0));
     let kt = kt.clamp(0.0, 1.0) * (1.0 - m);
     let kr = m * (1.0 - r);
     let alpha = (r * r).max(1e-6);
     let shine = (2.0 / (alpha * alpha) - 2.0).clamp(1.0, MAX_SHINE);
-    Material {
+    let material = Material {
         kd: (1.0 - kr - kt).max(0.0),
         kr,
         kt,
         ior,
         bump: Bump::None,
-        highlight: Highlight::Gltf(Pbr {
-            ks: (1.0 - r) * (1.0 - r),
-            shine,
-            tint: DVec3::splat(1.0 - m) + m * base,
-            emission: Color::ZERO,
-        }),
-    }
+        highlight: Highlight::Gltf {
+            ks: ((1.0 - r) * (1.0 - r)) as f32,
+            shine: shine as f32,
+            look,
+        },
+    };
+    let pbr = Pbr {
+        tint: DVec3::splat(1.0 - m) + m * base,
+        emission: Color::ZERO,
+    };
+    (material, pbr)
 }
 
 /// Reading the file's materials and images (with the `gltf` crate).
@@ -59,7 +71,6 @@ mod reading {
     use crate::gltf::rig::Rig;
     use crate::gltf::source::{Named, Origin};
     use crate::mesh::Look;
-    use crate::object::Highlight;
     use crate::texture::{ImageTexture, Interp, MapKind, Pixels, Texture, Wrap};
     use glam::DVec3;
     use std::sync::Arc;
@@ -91,17 +102,16 @@ mod reading {
             } else {
                 1.0
             };
-            let mut material = terms(
+            let (material, mut extra) = terms(
                 base,
                 f64::from(pbr.metallic_factor()),
                 f64::from(pbr.roughness_factor()),
                 kt,
                 ior,
+                rig.looks.len() as u32,
             );
             let strength = mat.emissive_strength().map_or(1.0, f64::from);
-            if let Highlight::Gltf(p) = &mut material.highlight {
-                p.emission = v3(mat.emissive_factor()) * strength;
-            }
+            extra.emission = v3(mat.emissive_factor()) * strength;
             let texture = match pbr.base_color_texture() {
                 Some(info) => {
                     if info.tex_coord() != 0 {
@@ -169,13 +179,16 @@ mod reading {
                 ));
             }
             rig.looks.push(Look { texture, material });
+            rig.pbr.push(extra);
             rig.double_sided.push(mat.double_sided());
         }
         // glTF's default material: metallic 1, roughness 1, white.
+        let (material, extra) = terms(Color::ONE, 1.0, 1.0, 0.0, 1.0, rig.looks.len() as u32);
         rig.looks.push(Look {
             texture: Texture::Uniform(Color::ONE),
-            material: terms(Color::ONE, 1.0, 1.0, 0.0, 1.0),
+            material,
         });
+        rig.pbr.push(extra);
         rig.double_sided.push(false);
         Ok(())
     }
@@ -222,35 +235,36 @@ mod reading {
 mod tests {
     use super::*;
 
+    /// The highlight's weight and exponent, widened.
+    fn phong(m: &Material) -> (f64, f64) {
+        match m.highlight {
+            Highlight::Gltf { ks, shine, .. } => (f64::from(ks), f64::from(shine)),
+            _ => panic!("a glTF material has a glTF highlight"),
+        }
+    }
+
     #[test]
     fn the_corners_of_metallic_and_roughness_by_hand() {
         let c = DVec3::new(0.8, 0.4, 0.2);
-        // Dielectric, rough: purely diffuse.
-        let m = terms(c, 0.0, 1.0, 0.0, 1.0);
+        // Dielectric, rough: purely diffuse, no highlight, a white tint.
+        let (m, p) = terms(c, 0.0, 1.0, 0.0, 1.0, 7);
         assert_eq!((m.kd, m.kr, m.kt), (1.0, 0.0, 0.0));
-        let Highlight::Gltf(p) = m.highlight else {
-            panic!()
-        };
-        assert_eq!(p.ks, 0.0);
+        assert_eq!(phong(&m).0, 0.0);
+        assert!(matches!(m.highlight, Highlight::Gltf { look: 7, .. }));
         assert_eq!(p.tint, Color::ONE);
         // Smooth metal: a mirror tinted by the base colour, the exponent capped.
-        let m = terms(c, 1.0, 0.0, 0.0, 1.0);
+        let (m, p) = terms(c, 1.0, 0.0, 0.0, 1.0, 0);
         assert_eq!((m.kd, m.kr), (0.0, 1.0));
-        let Highlight::Gltf(p) = m.highlight else {
-            panic!()
-        };
-        assert_eq!((p.ks, p.shine, p.tint), (1.0, MAX_SHINE, c));
+        assert_eq!(phong(&m), (1.0, MAX_SHINE));
+        assert_eq!(p.tint, c);
         // glTF's default (metallic 1, roughness 1): matte.
-        let m = terms(Color::ONE, 1.0, 1.0, 0.0, 1.0);
+        let (m, _) = terms(Color::ONE, 1.0, 1.0, 0.0, 1.0, 0);
         assert_eq!((m.kd, m.kr), (1.0, 0.0));
         // Roughness ½: α = ¼, exponent 2/α² − 2 = 30, Ks = ¼; metallic ½: Kr = ¼.
-        let m = terms(c, 0.5, 0.5, 0.0, 1.0);
-        let Highlight::Gltf(p) = m.highlight else {
-            panic!()
-        };
-        assert_eq!((p.shine, p.ks, m.kr, m.kd), (30.0, 0.25, 0.25, 0.75));
+        let (m, _) = terms(c, 0.5, 0.5, 0.0, 1.0, 0);
+        assert_eq!((phong(&m), m.kr, m.kd), ((0.25, 30.0), 0.25, 0.75));
         // Transmission 0.6 on a dielectric.
-        let m = terms(c, 0.0, 1.0, 0.6, 1.5);
+        let (m, _) = terms(c, 0.0, 1.0, 0.6, 1.5, 0);
         assert_eq!((m.kt, m.ior), (0.6, 1.5));
         assert!((m.kd - 0.4).abs() < 1e-15);
     }

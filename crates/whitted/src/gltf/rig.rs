@@ -169,6 +169,9 @@ pub struct Rig {
     pub mesh_weights: Vec<Vec<f64>>,
     /// The materials, then the default material (the last).
     pub looks: Vec<Look>,
+    /// Per look: its tint and emission (`Scene::pbr`; its material's `Highlight::Gltf`
+    /// indexes it).
+    pub pbr: Vec<crate::object::Pbr>,
     /// Per look: whether its back faces are drawn (`doubleSided`).
     pub double_sided: Vec<bool>,
     /// The cameras.

@@ -76,11 +76,12 @@ fn draw_row(
     match shot.pinhole() {
         // One pinhole ray a pixel (the report's case): the row's own loop, so that the
         // per-pixel call and its sample grid stay out of the orbit's inner loop.
-        Some(camera) if n == 1 => {
+        // (A scene in linear light takes the general loop, which encodes its colours.)
+        Some(camera) if n == 1 && !tracer.scene().linear => {
             for (i, px) in row.chunks_exact_mut(3).enumerate() {
                 let hint = view.map(|v| v.hint(i as u32, j as u32));
                 let ray = camera.ray(i as f64 + 0.5, j as f64 + 0.5);
-                let c = tracer.primary_in(hint, &ray, &mut count);
+                let c = tracer.primary_raw(hint, &ray, &mut count);
                 px.copy_from_slice(&to_rgb(c));
             }
         }

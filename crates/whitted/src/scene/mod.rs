@@ -74,6 +74,9 @@ pub struct Scene {
     /// indexes this): shared, so that copies of a scene (an animation's frames) share
     /// their triangles.
     pub meshes: Vec<std::sync::Arc<crate::mesh::Mesh>>,
+    /// What glTF materials add besides their highlight (`Highlight::Gltf`'s `look`
+    /// indexes it): empty for every other scene.
+    pub pbr: Vec<crate::object::Pbr>,
     /// An orthographic view's height in the world (a glTF orthographic camera's 2·ymag):
     /// parallel camera rays instead of the pinhole's. `None` for every other scene.
     pub parallel: Option<f64>,

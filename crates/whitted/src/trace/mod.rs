@@ -171,6 +171,14 @@ impl<'a> Tracer<'a> {
         c
     }
 
+    /// The row loop's camera ray (`render::draw_row`, for a scene not in linear light):
+    /// `primary_in` without the encoding check, so that the report's loop is the code it
+    /// was.
+    #[inline(always)]
+    pub(crate) fn primary_raw(&self, tile: Option<Hint>, ray: &Ray, count: &mut RayCount) -> Color {
+        self.primary_value(tile, ray, count, &mut NoRecord)
+    }
+
     /// `primary_rec`'s colour before a linear-light scene's encoding.
     #[inline(always)]
     fn primary_value<R: Record>(
@@ -183,15 +191,24 @@ impl<'a> Tracer<'a> {
         count.primary += 1;
         let ray = &ray.with_t_min(self.scene.t_min);
         let objects = &self.scene.objects;
-        let mut hit = match tile.and_then(|h| h.nearest(objects, ray)) {
+        let hit = match tile.and_then(|h| h.nearest(objects, ray)) {
             Some(found) => found.map(|(t, i)| (t, i, NO_PART)),
             None => self.accel.nearest_hit(ray).map(|h| (h.t, h.index, h.part)),
         };
-        if let Some((t, i, part)) = hit {
-            if part != NO_PART && self.culled(&objects[i], part, ray) {
-                hit = self.past_culled(ray, t);
-            }
-        }
+        self.primary_shade(hit, tile, ray, count, rec)
+    }
+
+    /// The colour of a camera ray whose first hit is `hit` (t, object, triangle).
+    #[inline(always)]
+    fn primary_shade<R: Record>(
+        &self,
+        hit: Option<(f64, usize, u32)>,
+        tile: Option<Hint>,
+        ray: &Ray,
+        count: &mut RayCount,
+        rec: &mut R,
+    ) -> Color {
+        let objects = &self.scene.objects;
         match hit {
             Some((t, i, part)) => {
                 // A mesh is shaded as the triangle hit (the object itself otherwise).
@@ -199,6 +216,9 @@ impl<'a> Tracer<'a> {
                 let obj = if part == NO_PART {
                     &objects[i]
                 } else {
+                    if self.culled(&objects[i], part, ray) {
+                        return self.primary_past(t, ray, count, rec);
+                    }
                     surface = self.surface_of(&objects[i], part, ray.at(t));
                     &*surface
                 };
@@ -226,6 +246,21 @@ impl<'a> Tracer<'a> {
                 self.scene.fog.apply(background, f64::INFINITY)
             }
         }
+    }
+
+    /// A camera ray's colour past a back face it does not see at `t` (out of line: only
+    /// a glTF mesh comes here).
+    #[cold]
+    #[inline(never)]
+    fn primary_past<R: Record>(
+        &self,
+        t: f64,
+        ray: &Ray,
+        count: &mut RayCount,
+        rec: &mut R,
+    ) -> Color {
+        let hit = self.past_culled(ray, t);
+        self.primary_shade(hit, None, ray, count, rec)
     }
 
     /// Whether triangle `part` of mesh object `obj` is a back face that camera rays do
@@ -360,6 +395,14 @@ impl<'a> Tracer<'a> {
             let ext = &self.ext_lights[..];
             let shadow = &mut count.shadow;
             out = shading::add_lights(self, ext, out, p, n, v, c, m, shadow, rec);
+            // A glTF material's emission (a glTF scene always has such lights).
+            if let Highlight::Gltf { look, .. } = m.highlight {
+                let e = self.scene.pbr[look as usize].emission;
+                if R::ACTIVE {
+                    rec.emission(e);
+                }
+                out += e;
+            }
         }
         if depth >= self.rules.max_depth {
             return out;
@@ -378,8 +421,8 @@ impl<'a> Tracer<'a> {
                 None => self.nearest_part(&r),
             };
             let mut reflected = m.kr * self.trace_hit(&r, hit, depth + 1, weight * m.kr, count);
-            if let Highlight::Gltf(pbr) = &m.highlight {
-                reflected *= pbr.tint;
+            if let Highlight::Gltf { look, .. } = m.highlight {
+                reflected *= self.scene.pbr[look as usize].tint;
             }
             if R::ACTIVE {
                 rec.reflection(reflected);

@@ -153,8 +153,8 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
     if let Some(model) = &scene.model {
         f(11.0);
         format!(
-            "{:?}{:?}{}{:?}",
-            model.posed, model.options, scene.linear, scene.parallel
+            "{:?}{:?}{}{:?}{:?}",
+            model.posed, model.options, scene.linear, scene.parallel, scene.pbr
         )
         .bytes()
         .for_each(|b| f(f64::from(b)));

@@ -205,6 +205,7 @@ pub fn parse(src: &str, file: &str) -> std::result::Result<Scene, SceneError> {
         },
         ext: Default::default(),
         meshes: Vec::new(),
+        pbr: Vec::new(),
         parallel: None,
         linear: false,
         model: None,

@@ -384,6 +384,7 @@ fn records<'a>(p: &mut Parser<'a>, src: &'a str, file: &str) -> Result<Scene> {
         lens: crate::camera::Lens::default(),
         ext: extension,
         meshes: Vec::new(),
+        pbr: Vec::new(),
         parallel: None,
         linear: false,
         model: None,
