@@ -81,6 +81,7 @@ mod production_shared;
 mod progress;
 mod provenance_inputs;
 mod raytrace_cli;
+mod raytrace_info;
 mod readonly_folder;
 mod reliability_four;
 mod reliability_three;

@@ -66,6 +66,7 @@ pub mod display;
 pub mod exit;
 pub mod fileloc;
 pub mod fog;
+pub mod info;
 pub mod input;
 pub mod lights;
 pub mod limits;
