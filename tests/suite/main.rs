@@ -24,6 +24,7 @@ mod animate_provenance;
 mod animate_records;
 mod animate_reliability;
 mod animate_tracks;
+mod background_record;
 mod balance;
 mod camera_tracks;
 mod check_bounded;

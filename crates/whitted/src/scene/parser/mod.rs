@@ -370,6 +370,7 @@ fn records<'a>(p: &mut Parser<'a>, src: &'a str, file: &str) -> Result<Scene> {
         };
         return Err(counts.explain(src, file, record, p.error(&tok, msg, "")));
     }
+    let background = extension.background.unwrap_or(Color::ZERO);
     Ok(Scene {
         width: width as u32,
         height: height as u32,
@@ -379,7 +380,7 @@ fn records<'a>(p: &mut Parser<'a>, src: &'a str, file: &str) -> Result<Scene> {
         objects,
         specs,
         lights,
-        background: Color::ZERO,
+        background,
         t_min: crate::optics::T_MIN,
         lens: crate::camera::Lens::default(),
         ext: extension,

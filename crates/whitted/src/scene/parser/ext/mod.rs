@@ -21,6 +21,7 @@
 //! point Px Py Pz R G B Intensity                                    [name N] [fade D P]
 //! area  Px Py Pz A1(3) A2(3) N1 N2 R G B Intensity                  [name N] [fade D P]
 //! focus Aperture Distance Samples
+//! background R G B
 //! ```
 //!
 //! Each record is checked against §16's bounds (`scene::ext::check`) as soon as it is
@@ -102,6 +103,8 @@ impl<'a> Ext<'_, 'a> {
             self.out.lights.push(light);
         } else if word == "focus" {
             self.focus(tok)?;
+        } else if word == "background" {
+            self.background(tok)?;
         } else {
             return Err(self.unknown(&tok));
         }
@@ -193,7 +196,7 @@ impl<'a> Ext<'_, 'a> {
                 quote(tok.text)
             );
         } else {
-            msg += " (extension records start with sphere, plane, box, cylinder, cone, disc, torus, triangle, mesh, union, intersection, difference, directional, spot, point, area or focus)";
+            msg += " (extension records start with sphere, plane, box, cylinder, cone, disc, torus, triangle, mesh, union, intersection, difference, directional, spot, point, area, focus or background)";
         }
         self.p.error(tok, msg, "")
     }

@@ -204,6 +204,17 @@ impl<'a> Ext<'_, 'a> {
         Ok(())
     }
 
+    /// The `background R G B` record (at most one), each in 0..1.
+    pub(super) fn background(&mut self, tok: Token<'a>) -> Result<()> {
+        self.enter("background", None, None);
+        if self.out.background.is_some() {
+            let msg = "the file has a second background record (at most one)".to_string();
+            return Err(self.p.error(&tok, msg, ""));
+        }
+        self.out.background = Some(self.p.color(["R", "G", "B"])?);
+        Ok(())
+    }
+
     /// The modifiers after a record: any of `allowed`, each at most once, in any order.
     /// Inside a CSG block (`in_csg`) a child takes no name (the block is what is named).
     pub(super) fn modifiers(&mut self, allowed: &[&str], in_csg: bool) -> Result<Modifiers> {
