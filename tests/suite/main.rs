@@ -60,6 +60,7 @@ mod lights_povray;
 mod malformed_scenes;
 mod mesh_budgets;
 mod mesh_data;
+mod mesh_epsilon;
 mod mesh_files;
 mod mesh_normals;
 mod mesh_placing;

@@ -24,6 +24,7 @@
 
 pub mod build;
 pub mod check;
+pub mod epsilon;
 
 use crate::base::Color;
 use crate::fileloc::FileLoc;

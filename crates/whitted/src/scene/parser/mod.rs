@@ -264,6 +264,7 @@ impl<'a> Parser<'a> {
 pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
     let mut scene = read(src, file)?;
     crate::scene::ext::build::draw(&mut scene)?;
+    scene.t_min = crate::scene::ext::epsilon::small_scene(&scene.objects);
     Ok(scene)
 }
 
