@@ -89,6 +89,7 @@ mod reliability_four;
 mod reliability_three;
 mod robust_parsers;
 mod scene_parsing;
+mod shape_placing;
 mod shape_properties;
 mod shapes_povray;
 mod shipped_files;

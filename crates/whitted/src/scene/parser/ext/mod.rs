@@ -14,7 +14,8 @@
 //! triangle P1(3) P2(3) P3(3)                    TEXTURE MATERIAL
 //! mesh     "file.obj|file.ply"                  TEXTURE MATERIAL
 //!     then any of: name N | scale x y z | rotate x y z | translate x y z
-//!     (a mesh also: smooth Angle | flat | fit Size | pivot center | pivot x y z)
+//!     | fit Size | pivot center | pivot x y z   (not on a plane: it has no bounds)
+//!     (a mesh also: smooth Angle | flat)
 //! union|intersection|difference  SOLID SOLID… end  [name N] [scale …] [rotate …] [translate …]
 //! directional Dx Dy Dz R G B Intensity                              [name N]
 //! spot  Px Py Pz Tx Ty Tz R G B Intensity Radius Falloff Tightness  [name N] [fade D P]

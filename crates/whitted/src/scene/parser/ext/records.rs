@@ -72,7 +72,16 @@ impl<'a> Ext<'_, 'a> {
         let texture = self.p.texture()?;
         let material = self.p.material()?;
         let allowed: &[&str] = match keyword {
-            "cylinder" | "cone" => &["name", "open", "scale", "rotate", "translate"],
+            "cylinder" | "cone" => &[
+                "name",
+                "open",
+                "scale",
+                "rotate",
+                "translate",
+                "fit",
+                "pivot",
+            ],
+            "plane" => &["name", "scale", "rotate", "translate"],
             "mesh" => &[
                 "name",
                 "scale",
@@ -83,7 +92,7 @@ impl<'a> Ext<'_, 'a> {
                 "fit",
                 "pivot",
             ],
-            _ => &["name", "scale", "rotate", "translate"],
+            _ => &["name", "scale", "rotate", "translate", "fit", "pivot"],
         };
         let mods = self.modifiers(allowed, within.is_some())?;
         Ok(ExtObject {
@@ -231,6 +240,9 @@ impl<'a> Ext<'_, 'a> {
                     "fade" if record == "directional" => {
                         "fade does not apply to a directional light (it is infinitely far)"
                             .to_string()
+                    }
+                    "fit" | "pivot" if record == "plane" => {
+                        format!("'{word}' does not apply to a plane: it is unbounded (fit and pivot need an object with bounds)")
                     }
                     _ => format!("'{word}' does not apply to a {record} record"),
                 };
