@@ -19,6 +19,7 @@ mod animate_cli;
 mod animate_encode;
 mod animate_faults;
 mod animate_ffmpeg;
+mod animate_mesh_warnings;
 mod animate_preview;
 mod animate_provenance;
 mod animate_records;
