@@ -100,6 +100,11 @@ pub struct Args {
     /// eye_hits, reflect, refract, shadow) and the seconds taken (wall_s, cpu_s).
     #[arg(long)]
     pub stats: bool,
+    /// Draw nothing: print each object and light (number, name, kind, triangles, world
+    /// bounds) and the camera, and warn of a camera inside an object's bounds or an
+    /// object under a pixel.
+    #[arg(long, conflicts_with_all = ["out", "passes", "pass", "display", "stats", "exr_depth", "colour"])]
+    pub info: bool,
 }
 
 impl Args {

@@ -1,8 +1,9 @@
 //! `raytrace [SCENE] [-o OUT] [--size WxH] [--fov DEG] [--roll DEG]
 //! [--samples N | --aa adaptive[:T[:D]]] [--threads N] [--display tev] [--passes LIST] [--pass NAME] [--exr-depth half|float]
-//! [--colour srgb|linear] [--spd] [--stats]`: one image from a Scene.txt (the report's main()) or an NFF file
+//! [--colour srgb|linear] [--spd] [--stats] [--info]`: one image from a Scene.txt (the report's main()) or an NFF file
 //! (`*.nff`; `--spd` draws it by the SPD's testing procedure, `--stats` prints the ray
-//! counts as a JSON line last on standard error). It parses the command line (`cli`),
+//! counts as a JSON line last on standard error; `--info` draws nothing and prints what the
+//! scene holds, `whitted::info`). It parses the command line (`cli`),
 //! shows a progress bar, and calls the library (`whitted::still::Job`); exit statuses
 //! follow `whitted::exit` (2 bad input, 1 a failed write, 130/143 stopped by SIGINT/SIGTERM).
 
@@ -36,7 +37,22 @@ fn progress(rows: u32, quiet: bool) -> (ProgressBar, Option<RowPoller>) {
     (bar, Some(poll))
 }
 
+/// `--info`: what the scene holds on standard output, its warnings on standard error.
+fn info(args: &Args) -> anyhow::Result<()> {
+    let info = whitted::info::describe(&args.request())?;
+    if !args.quiet {
+        for w in &info.warnings {
+            eprintln!("raytrace: warning: {w}");
+        }
+    }
+    print!("{info}");
+    Ok(())
+}
+
 fn run(args: Args) -> anyhow::Result<()> {
+    if args.info {
+        return info(&args);
+    }
     let started = std::time::Instant::now();
     process::exit_on_signals();
     let job = Job::prepare(&args.request())?;

@@ -59,9 +59,10 @@ fn a_far_cube_fitted_and_pivoted_draws_as_the_unit_cube() {
         e.contains("DIR/scene.txt:4:") && e.contains("Size must be greater than 0"),
         "{e}"
     );
-    let e = render(d, &format!("sphere 0 1 0 1 {RED} pivot center\n")).unwrap_err();
+    let e = render(d, &format!("plane 0 1 0  0 1 0 {RED} pivot center\n")).unwrap_err();
     assert!(
-        e.contains("'pivot' does not apply to a sphere record"),
+        e.contains("DIR/scene.txt:4:")
+            && e.contains("'pivot' does not apply to a plane: it is unbounded"),
         "{e}"
     );
 }

@@ -67,6 +67,7 @@ pub mod exit;
 pub mod fileloc;
 pub mod fog;
 pub mod gltf;
+pub mod info;
 pub mod input;
 pub mod lights;
 pub mod limits;

@@ -27,6 +27,8 @@ pub trait Record {
     fn transmission(&mut self, _c: Color) {}
     /// The fog fraction f at the hit (1 − f scales every term; f·white is added).
     fn fog(&mut self, _f: f64) {}
+    /// The ray hit nothing and sees the scene's background colour `c` (before fog).
+    fn background(&mut self, _c: Color) {}
 }
 
 /// The recorder of the beauty-only path: zero-sized, hears nothing.

@@ -56,9 +56,13 @@ pub fn announce(anim: &Animation, frames: usize, raw: bool) {
     }
 }
 
-/// Before frames whose pixels are not square, that warning (`Animation::non_square`).
+/// Before frames whose pixels are not square, that warning (`Animation::non_square`);
+/// and the scene's mesh warnings (`Animation::mesh_warnings`), as `raytrace` prints them.
 pub fn warn_if_non_square(anim: &Animation) {
     if let Some(w) = anim.non_square() {
+        eprintln!("animate: warning: {w}");
+    }
+    for w in anim.mesh_warnings() {
         eprintln!("animate: warning: {w}");
     }
 }

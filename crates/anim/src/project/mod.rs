@@ -219,6 +219,14 @@ impl<'p> Animation<'p> {
         )
     }
 
+    /// The warnings of the scene's mesh files (what each holds and the tracer does not
+    /// use, a material or image it cannot read), one line per kind, as `raytrace` prints
+    /// them.
+    pub fn mesh_warnings(&self) -> Vec<String> {
+        let meshes = self.timeline.base.meshes.iter();
+        meshes.flat_map(|m| m.warnings.iter().cloned()).collect()
+    }
+
     /// The warning for frames whose pixels are not square (the report's view plane at
     /// a resolution of another shape, without `[camera] fov`).
     pub fn non_square(&self) -> Option<NonSquare> {

@@ -10,7 +10,11 @@
 //! specular, each times the light's shadow transmission) + reflection + transmission, and
 //! fog makes the beauty `colour·(1 − f) + white·f`. Each of the five terms is stored times
 //! (1 − f) and the `fog` layer is `f·white`, so the six layers sum to the beauty (to
-//! rounding, 1e-5 relative being the contract). A ray that hits nothing has only fog.
+//! rounding, 1e-5 relative being the contract). A ray that hits nothing has only fog, and
+//! the scene's background times (1 − f): a scene whose background is not black (a
+//! `background` record, an NFF's `b`) gains a `background` layer beside the light split
+//! (`BACKGROUND`), so that the seven still sum to the beauty; a black one writes none,
+//! and its files keep their bytes.
 
 use super::crypto::{self, Ranked};
 use super::{CameraMatrices, Channel, CryptoHeader, Layers, Pass, PassSet};
@@ -34,6 +38,8 @@ pub struct Sample {
     pub terms: [Color; 5],
     /// The fog fraction.
     pub fog: f64,
+    /// The background seen by a ray that hit nothing, before fog.
+    pub background: Color,
 }
 
 impl Record for Sample {
@@ -59,6 +65,9 @@ impl Record for Sample {
     }
     fn fog(&mut self, f: f64) {
         self.fog = f;
+    }
+    fn background(&mut self, c: Color) {
+        self.background = c;
     }
 }
 
@@ -97,6 +106,8 @@ pub struct PixelSum {
     pub albedo: Color,
     /// Σ of the light split's six layers.
     pub light: [Color; 6],
+    /// Σ background seen by the samples that hit nothing, times (1 − f).
+    pub background: Color,
     /// (object index, samples) for each object seen, when a Cryptomatte is asked for.
     pub objects: Vec<(usize, u32)>,
     /// The samples that hit an object.
@@ -114,6 +125,7 @@ impl PixelSum {
             *sum += term * keep;
         }
         self.light[5] += Color::splat(s.fog);
+        self.background += s.background * keep;
         match s.hit {
             Some((index, t)) => {
                 self.hits += 1;
@@ -225,6 +237,17 @@ pub fn finish(
             }
         }
     }
+    let light = Pass::LIGHT.iter().any(|&p| passes.has(p));
+    if light && scene.background != Color::ZERO {
+        let vals: Vec<Color> = sums.iter().map(|s| s.background / k).collect();
+        for (axis, name) in BACKGROUND.iter().enumerate() {
+            let values = vals.iter().map(|v| v[axis] as f32).collect();
+            channels.push(Channel {
+                name: name.to_string(),
+                values,
+            });
+        }
+    }
     channels.extend(crypto_channels);
     Layers {
         width,
@@ -236,6 +259,10 @@ pub fn finish(
         alpha: Some(sums.iter().map(|s| coverage(s.hits, k)).collect()),
     }
 }
+
+/// The channels of the `background` layer a frame of the light split gains when its
+/// scene's background is not black.
+pub const BACKGROUND: [&str; 3] = ["background.R", "background.G", "background.B"];
 
 /// `hits` of `k` samples as a fraction.
 fn coverage(hits: u32, k: f64) -> f32 {

@@ -152,24 +152,45 @@ mod tests {
 
     #[test]
     fn one_sample_beauty_is_the_pictures_colour_and_the_split_sums_to_it() {
-        let scene = crate::Scene::parse(SCENE, "t.txt").unwrap();
-        let tracer = Tracer::new(&scene);
-        let camera = scene.camera();
-        let all = PassSet::of(&Pass::ALL);
-        let (layers, rays) = render_layers(&tracer, &camera, 8, 6, 1, all);
-        let (frame, plain_rays) = render(&tracer, &camera, 8, 6, 1);
-        assert_eq!(layers.to_frame(), frame);
-        assert_eq!(rays, plain_rays, "one trace per sample");
-        for (k, b) in layers.beauty.iter().enumerate() {
-            let sum: Color = Pass::LIGHT
-                .iter()
-                .map(|p| {
-                    let [r, g, bl] = p.channels().map(|c| layers.channel(&c).unwrap().values[k]);
-                    Color::new(r.into(), g.into(), bl.into())
-                })
-                .sum();
-            let err = (sum - *b).abs().max_element() / b.abs().max_element().max(1e-3);
-            assert!(err < 1e-5, "pixel {k}: {sum} vs {b}");
+        // Black behind (no background layer), then a `background` record: the rays that
+        // miss see it, fogged, in a layer of its own, and the layers still sum.
+        // Linear fog to 20 whitens the misses wholly; without fog they show the colour.
+        let back = "background 0.2 0.4 0.9\n";
+        for (fog, back, layer) in [
+            ("1 20", "", false),
+            ("1 20", back, true),
+            ("0 20", back, true),
+        ] {
+            // The eye lowered to y = 0: the top rows look over the floor's horizon.
+            let text = SCENE.replacen("0 1 6  0 0 0  1 20", &format!("0 0 6  0 0 0  {fog}"), 1);
+            let text = format!("{text}\n{back}");
+            let scene = crate::Scene::parse(&text, "t.txt").unwrap();
+            let tracer = Tracer::new(&scene);
+            let camera = scene.camera();
+            let all = PassSet::of(&Pass::ALL);
+            let (layers, rays) = render_layers(&tracer, &camera, 8, 6, 1, all);
+            let (frame, plain_rays) = render(&tracer, &camera, 8, 6, 1);
+            assert_eq!(layers.to_frame(), frame);
+            assert_eq!(rays, plain_rays, "one trace per sample");
+            let names = crate::passes::record::BACKGROUND;
+            assert_eq!(layers.channel(names[0]).is_some(), layer);
+            let mut seen = 0;
+            for (k, b) in layers.beauty.iter().enumerate() {
+                let at = |c: &str| layers.channel(c).map_or(0.0, |c| f64::from(c.values[k]));
+                let back = Color::new(at(names[0]), at(names[1]), at(names[2]));
+                seen += usize::from(back.z > 0.0);
+                let sum: Color = Pass::LIGHT
+                    .iter()
+                    .map(|p| {
+                        let [r, g, bl] = p.channels().map(|c| at(&c));
+                        Color::new(r, g, bl)
+                    })
+                    .sum::<Color>()
+                    + back;
+                let err = (sum - *b).abs().max_element() / b.abs().max_element().max(1e-3);
+                assert!(err < 1e-5, "pixel {k}: {sum} vs {b}");
+            }
+            assert_eq!(seen > 0, fog == "0 20" && layer, "{seen} pixels see it");
         }
     }
 

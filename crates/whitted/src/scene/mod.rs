@@ -62,7 +62,8 @@ pub struct Scene {
     /// What a ray that hits nothing sees: black for a Scene.txt, NFF's `b`.
     pub background: Color,
     /// A hit counts only past this distance: the report's 0.01 for a Scene.txt, a
-    /// length scaled to the scene for an NFF (`nff::epsilon`).
+    /// length scaled to the scene for an NFF (`nff::epsilon`) and for a small scene of
+    /// meshes (`ext::epsilon`).
     pub t_min: f64,
     /// The scene's own framing: the report's for a Scene.txt; an NFF view's angle
     /// (between the outer pixel centres) and up.

@@ -241,6 +241,7 @@ impl<'a> Tracer<'a> {
                 if R::ACTIVE {
                     let f = self.scene.fog.amount(f64::INFINITY);
                     rec.fog(f);
+                    rec.background(background);
                     return self.scene.fog.apply_amount(background, f);
                 }
                 self.scene.fog.apply(background, f64::INFINITY)

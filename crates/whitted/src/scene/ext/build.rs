@@ -63,7 +63,7 @@ pub fn objects(ext: &Extension) -> Result<Drawn, SceneError> {
                         out.meshes.push(Arc::new(mesh));
                         (Shape::Mesh(handle), 0.5 * (handle.lo + handle.hi))
                     }
-                    _ => (shape(o)?, anchor(&o.shape, &o.mods)),
+                    _ => (shape(o)?, anchor(o)),
                 };
                 let spec = ShapeSpec::Ext {
                     item: item as u32,
@@ -132,9 +132,10 @@ pub fn frame(m: &Modifiers) -> Option<Transform> {
     )
 }
 
-/// The point a camera looks at for this object: its defining centre, moved by its frame.
-pub(super) fn anchor(s: &ExtShape, m: &Modifiers) -> DVec3 {
-    let p = match *s {
+/// The point a camera looks at for this object: its defining centre, moved by its frame
+/// (its placing included).
+pub(super) fn anchor(o: &ExtObject) -> DVec3 {
+    let p = match o.shape {
         ExtShape::Sphere { center, .. }
         | ExtShape::Disc { center, .. }
         | ExtShape::Torus { center, .. } => center,
@@ -145,7 +146,30 @@ pub(super) fn anchor(s: &ExtShape, m: &Modifiers) -> DVec3 {
         // Its box's centre, which `objects` knows once the file is read.
         ExtShape::Mesh { .. } | ExtShape::Gltf { .. } => DVec3::ZERO,
     };
-    frame(m).map_or(p, |f| f.point_to_world(p))
+    placed_frame(o).map_or(p, |f| f.point_to_world(p))
+}
+
+/// The frame of a record other than a mesh: its `fit` and `pivot` (`place::prefix`,
+/// measured on the record as written), then its scale, rotate and translate.
+fn placed_frame(o: &ExtObject) -> Result<Transform, SceneError> {
+    let singular = || {
+        refused(
+            &o.loc,
+            o.shape.keyword(),
+            "the scale, rotate and translate make a singular frame",
+        )
+    };
+    let own = frame(&o.mods).ok_or_else(singular)?;
+    if o.mods.placing == crate::mesh::Placing::default() {
+        return Ok(own);
+    }
+    let written = ExtObject {
+        mods: place::unplaced(&o.mods),
+        ..o.clone()
+    };
+    let bounds = shape(&written)?.bounds();
+    let before = place::prefix(&o.mods.placing, bounds, &o.loc, o.shape.keyword())?;
+    before.then(&own).ok_or_else(singular)
 }
 
 /// The drawn shape of one record (its bounds were checked by the reader; what still
@@ -158,7 +182,7 @@ pub fn shape(o: &ExtObject) -> Result<Shape, SceneError> {
 pub(super) fn shape_in(o: &ExtObject, outer: &Transform) -> Result<Shape, SceneError> {
     let bad = |why: &str| refused(&o.loc, o.shape.keyword(), why);
     let singular = || bad("the scale, rotate and translate make a singular frame");
-    let own = frame(&o.mods).ok_or_else(singular)?;
+    let own = placed_frame(o)?;
     let f = if outer.is_identity() {
         own
     } else {
@@ -221,6 +245,8 @@ pub(super) fn shape_in(o: &ExtObject, outer: &Transform) -> Result<Shape, SceneE
 
 #[path = "build_csg.rs"]
 mod csg;
+#[path = "place.rs"]
+mod place;
 
 #[cfg(test)]
 #[path = "build_tests.rs"]

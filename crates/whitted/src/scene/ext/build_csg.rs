@@ -4,7 +4,7 @@
 //! around it, innermost first; each child keeps its own TEXTURE and MATERIAL, and the
 //! block's object carries its first solid's (what shadow rays through it see).
 
-use super::{anchor, frame, refused, shape_in};
+use super::{anchor, frame, place, refused, shape_in};
 use crate::object::Object;
 use crate::scene::ext::{Csg as Block, CsgOp, ExtItem};
 use crate::scene::SceneError;
@@ -87,7 +87,7 @@ fn build(block: &Block) -> Result<(Csg, DVec3), SceneError> {
                     let why = "a CSG block takes solids only (sphere, plane, box, capped cylinder or cone, torus)";
                     return Err(refused(&o.loc, o.shape.keyword(), why));
                 }
-                first.get_or_insert_with(|| outer.point_to_world(anchor(&o.shape, &o.mods)));
+                first.get_or_insert_with(|| outer.point_to_world(anchor(o)));
                 gathered.push(Node::Leaf(Object {
                     shape,
                     texture: o.texture.clone(),
@@ -122,7 +122,18 @@ fn block_frame(block: &Block, outer: &Transform) -> Result<Transform, SceneError
             "the scale, rotate and translate make a singular frame",
         )
     };
-    let own = frame(&block.mods).ok_or_else(singular)?;
+    let mut own = frame(&block.mods).ok_or_else(singular)?;
+    if block.mods.placing != crate::mesh::Placing::default() {
+        // The block as written (no frame, no placing) measures the box its placing needs.
+        let written = Block {
+            mods: place::unplaced(&block.mods),
+            ..block.clone()
+        };
+        let bounds = build(&written)?.0.bounds();
+        let word = block.op.keyword();
+        let before = place::prefix(&block.mods.placing, bounds, &block.loc, word)?;
+        own = before.then(&own).ok_or_else(singular)?;
+    }
     own.then(outer).ok_or_else(singular)
 }
 

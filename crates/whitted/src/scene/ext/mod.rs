@@ -19,10 +19,12 @@
 //! spot 0 5 0  0 0 0  1 1 1  1  20 30 1   name key  fade 10 2
 //! area 0 6 0  2 0 0  0 0 2  4 4  1 1 1  1
 //! focus 0.2 8 3                                            # Aperture Distance Samples
+//! background 0.2 0.3 0.5                                   # R G B: what misses see
 //! ```
 
 pub mod build;
 pub mod check;
+pub mod epsilon;
 
 use crate::base::Color;
 use crate::fileloc::FileLoc;
@@ -40,12 +42,18 @@ pub struct Extension {
     pub lights: Vec<ExtLight>,
     /// The `focus` record, if the file has one (at most one).
     pub focus: Option<Focus>,
+    /// The `background R G B` record (SPEC §18), if the file has one (at most one): what
+    /// a ray that hits nothing sees, instead of black.
+    pub background: Option<crate::base::Color>,
 }
 
 impl Extension {
     /// True when the file had no extension record: it renders as the report's.
     pub fn is_empty(&self) -> bool {
-        self.objects.is_empty() && self.lights.is_empty() && self.focus.is_none()
+        self.objects.is_empty()
+            && self.lights.is_empty()
+            && self.focus.is_none()
+            && self.background.is_none()
     }
 }
 

@@ -264,6 +264,7 @@ impl<'a> Parser<'a> {
 pub(super) fn parse(src: &str, file: &str) -> Result<Scene> {
     let mut scene = read(src, file)?;
     crate::scene::ext::build::draw(&mut scene)?;
+    scene.t_min = crate::scene::ext::epsilon::small_scene(&scene.objects);
     Ok(scene)
 }
 
@@ -370,6 +371,7 @@ fn records<'a>(p: &mut Parser<'a>, src: &'a str, file: &str) -> Result<Scene> {
         };
         return Err(counts.explain(src, file, record, p.error(&tok, msg, "")));
     }
+    let background = extension.background.unwrap_or(Color::ZERO);
     Ok(Scene {
         width: width as u32,
         height: height as u32,
@@ -379,7 +381,7 @@ fn records<'a>(p: &mut Parser<'a>, src: &'a str, file: &str) -> Result<Scene> {
         objects,
         specs,
         lights,
-        background: Color::ZERO,
+        background,
         t_min: crate::optics::T_MIN,
         lens: crate::camera::Lens::default(),
         ext: extension,

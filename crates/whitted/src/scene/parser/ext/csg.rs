@@ -122,7 +122,8 @@ impl<'a> Ext<'_, 'a> {
             return Err(self.p.error(&done.tok, msg, ""));
         }
         self.enter(done.op.keyword(), index, within);
-        let mods = self.modifiers(&["name", "scale", "rotate", "translate"], within.is_some())?;
+        let allowed = ["name", "scale", "rotate", "translate", "fit", "pivot"];
+        let mods = self.modifiers(&allowed, within.is_some())?;
         Ok(Csg {
             op: done.op,
             children: done.children,

@@ -24,7 +24,7 @@ pub(super) const MODIFIERS: [&str; 10] = [
     "pivot",
 ];
 /// Every other word of the grammar.
-pub(super) const OTHERS: [&str; 2] = ["focus", "end"];
+pub(super) const OTHERS: [&str; 3] = ["focus", "background", "end"];
 
 /// Every keyword of the extension grammar.
 pub(super) fn all() -> impl Iterator<Item = &'static str> {

@@ -14,13 +14,15 @@
 //! triangle P1(3) P2(3) P3(3)                    TEXTURE MATERIAL
 //! mesh     "file.obj|file.ply"                  TEXTURE MATERIAL
 //!     then any of: name N | scale x y z | rotate x y z | translate x y z
-//!     (a mesh also: smooth Angle | flat | fit Size | pivot center | pivot x y z)
+//!     | fit Size | pivot center | pivot x y z   (not on a plane: it has no bounds)
+//!     (a mesh also: smooth Angle | flat)
 //! union|intersection|difference  SOLID SOLID… end  [name N] [scale …] [rotate …] [translate …]
 //! directional Dx Dy Dz R G B Intensity                              [name N]
 //! spot  Px Py Pz Tx Ty Tz R G B Intensity Radius Falloff Tightness  [name N] [fade D P]
 //! point Px Py Pz R G B Intensity                                    [name N] [fade D P]
 //! area  Px Py Pz A1(3) A2(3) N1 N2 R G B Intensity                  [name N] [fade D P]
 //! focus Aperture Distance Samples
+//! background R G B
 //! ```
 //!
 //! Each record is checked against §16's bounds (`scene::ext::check`) as soon as it is
@@ -102,6 +104,8 @@ impl<'a> Ext<'_, 'a> {
             self.out.lights.push(light);
         } else if word == "focus" {
             self.focus(tok)?;
+        } else if word == "background" {
+            self.background(tok)?;
         } else {
             return Err(self.unknown(&tok));
         }
@@ -193,7 +197,7 @@ impl<'a> Ext<'_, 'a> {
                 quote(tok.text)
             );
         } else {
-            msg += " (extension records start with sphere, plane, box, cylinder, cone, disc, torus, triangle, mesh, union, intersection, difference, directional, spot, point, area or focus)";
+            msg += " (extension records start with sphere, plane, box, cylinder, cone, disc, torus, triangle, mesh, union, intersection, difference, directional, spot, point, area, focus or background)";
         }
         self.p.error(tok, msg, "")
     }

@@ -72,7 +72,16 @@ impl<'a> Ext<'_, 'a> {
         let texture = self.p.texture()?;
         let material = self.p.material()?;
         let allowed: &[&str] = match keyword {
-            "cylinder" | "cone" => &["name", "open", "scale", "rotate", "translate"],
+            "cylinder" | "cone" => &[
+                "name",
+                "open",
+                "scale",
+                "rotate",
+                "translate",
+                "fit",
+                "pivot",
+            ],
+            "plane" => &["name", "scale", "rotate", "translate"],
             "mesh" => &[
                 "name",
                 "scale",
@@ -83,7 +92,7 @@ impl<'a> Ext<'_, 'a> {
                 "fit",
                 "pivot",
             ],
-            _ => &["name", "scale", "rotate", "translate"],
+            _ => &["name", "scale", "rotate", "translate", "fit", "pivot"],
         };
         let mods = self.modifiers(allowed, within.is_some())?;
         Ok(ExtObject {
@@ -204,6 +213,17 @@ impl<'a> Ext<'_, 'a> {
         Ok(())
     }
 
+    /// The `background R G B` record (at most one), each in 0..1.
+    pub(super) fn background(&mut self, tok: Token<'a>) -> Result<()> {
+        self.enter("background", None, None);
+        if self.out.background.is_some() {
+            let msg = "the file has a second background record (at most one)".to_string();
+            return Err(self.p.error(&tok, msg, ""));
+        }
+        self.out.background = Some(self.p.color(["R", "G", "B"])?);
+        Ok(())
+    }
+
     /// The modifiers after a record: any of `allowed`, each at most once, in any order.
     /// Inside a CSG block (`in_csg`) a child takes no name (the block is what is named).
     pub(super) fn modifiers(&mut self, allowed: &[&str], in_csg: bool) -> Result<Modifiers> {
@@ -220,6 +240,9 @@ impl<'a> Ext<'_, 'a> {
                     "fade" if record == "directional" => {
                         "fade does not apply to a directional light (it is infinitely far)"
                             .to_string()
+                    }
+                    "fit" | "pivot" if record == "plane" => {
+                        format!("'{word}' does not apply to a plane: it is unbounded (fit and pivot need an object with bounds)")
                     }
                     _ => format!("'{word}' does not apply to a {record} record"),
                 };
