@@ -84,6 +84,19 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
             if prim.triangles.is_empty() {
                 continue;
             }
+            if let Some(skin) = node.skin {
+                let joints = rig.skins[skin].joints.len();
+                if !prim.joints.is_empty() && prim.max_joint as usize >= joints {
+                    return Err(at(
+                        &rig.file,
+                        format!("meshes[{m}].primitives[{k}].attributes.JOINTS_0"),
+                        format!(
+                            "joint {} is past the {joints} joints of skins[{skin}]",
+                            prim.max_joint
+                        ),
+                    ));
+                }
+            }
             let (positions, normals, mirrored) = pose::place(rig, pose, n, prim);
             let mut triangles = prim.triangles.clone();
             if mirrored {

@@ -85,6 +85,18 @@ impl Channel {
 
     /// The value at time `t`.
     pub fn sample(&self, t: f64) -> Vec<f64> {
+        let mut out = self.between(t);
+        if self.path == Path::Rotation {
+            let len = out.iter().map(|x| x * x).sum::<f64>().sqrt();
+            if len > 0.0 {
+                out.iter_mut().for_each(|x| *x /= len);
+            }
+        }
+        out
+    }
+
+    /// The value at `t` before a rotation is normalised.
+    fn between(&self, t: f64) -> Vec<f64> {
         let mid = usize::from(self.interp == Interp::Cubic);
         let n = self.times.len();
         if n == 0 {
@@ -101,7 +113,7 @@ impl Channel {
         let (t0, t1) = (self.times[i], self.times[i + 1]);
         let td = t1 - t0;
         let s = if td > 0.0 { (t - t0) / td } else { 0.0 };
-        let mut out = match self.interp {
+        match self.interp {
             Interp::Step => self.element(i, 0).to_vec(),
             Interp::Linear if self.path == Path::Rotation => {
                 slerp(self.element(i, 0), self.element(i + 1, 0), s)
@@ -120,14 +132,7 @@ impl Channel {
                     .map(|c| h00 * v0[c] + h10 * td * b0[c] + h01 * v1[c] + h11 * td * a1[c])
                     .collect()
             }
-        };
-        if self.path == Path::Rotation {
-            let len = out.iter().map(|x| x * x).sum::<f64>().sqrt();
-            if len > 0.0 {
-                out.iter_mut().for_each(|x| *x /= len);
-            }
         }
-        out
     }
 }
 

@@ -229,9 +229,16 @@ fn read_meshes(doc: &gltf::Document, b: &Buffers, rig: &mut Rig) -> Result<(), G
             if let Some(a) = p.get(&Semantic::Joints(0)) {
                 prim.joints = b.indices::<4>(&a, n, u64::from(u32::MAX))?;
                 same("JOINTS_0", prim.joints.len())?;
-                if let Some(w) = p.get(&Semantic::Weights(0)) {
-                    prim.weights = b.floats::<4>(&w, n)?;
-                    same("WEIGHTS_0", prim.weights.len())?;
+                prim.max_joint = prim.joints.iter().flatten().copied().max().unwrap_or(0);
+                match p.get(&Semantic::Weights(0)) {
+                    Some(w) => {
+                        prim.weights = b.floats::<4>(&w, n)?;
+                        same("WEIGHTS_0", prim.weights.len())?;
+                    }
+                    None => rig.warn(format!(
+                        "{}: {path} has JOINTS_0 without WEIGHTS_0: drawn unskinned",
+                        rig.file
+                    )),
                 }
             }
             for s in p.attributes().map(|(s, _)| s) {

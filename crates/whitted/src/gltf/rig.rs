@@ -84,6 +84,8 @@ pub struct Prim {
     pub joints: Vec<[u32; 4]>,
     /// WEIGHTS_0: four weights per vertex.
     pub weights: Vec<[f64; 4]>,
+    /// The largest joint number of JOINTS_0 (checked against the node's skin).
+    pub max_joint: u32,
 }
 
 /// A camera's projection.

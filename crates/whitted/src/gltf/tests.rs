@@ -203,3 +203,20 @@ fn camera_rays_do_not_see_the_back_of_a_single_sided_material() {
     assert_ne!(back_of_triangle(true), [0, 0, 0]);
     assert_eq!(back_of_triangle(false), [0, 0, 0]);
 }
+
+#[test]
+fn a_joint_number_past_its_skin_is_refused() {
+    // SimpleSkin's vertices use joints 0 and 1; a skin of one joint has no joint 1.
+    let text = std::fs::read_to_string(sample("SimpleSkin.gltf")).unwrap();
+    let mut json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    json["skins"][0]["joints"] = serde_json::json!([1]);
+    json["skins"][0]
+        .as_object_mut()
+        .unwrap()
+        .remove("inverseBindMatrices");
+    let bytes = json.to_string().into_bytes();
+    let m = Model::read(&sample("SimpleSkin.gltf"), &bytes, Options::default()).unwrap();
+    let e = m.scene_at(0.0, &[], &[]).unwrap_err().to_string();
+    assert!(e.contains("meshes[0].primitives[0].attributes.JOINTS_0"), "{e}");
+    assert!(e.contains("joint 1 is past the 1 joints"), "{e}");
+}
