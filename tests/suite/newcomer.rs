@@ -71,7 +71,7 @@ fn a_key_of_another_camera_path_says_which_path_it_belongs_to() {
     let stderr = refused(animate().arg(&path));
     let want = format!(
         "{}:5:1: camera: unknown key `radius` (a key of path = \"circle\"); \
-         [camera] without a path takes `path`, `look_at`, `fov`, `roll`",
+         [camera] without a path takes `path`, `name`, `look_at`, `fov`, `roll`",
         path.display()
     );
     assert!(stderr.contains(&want), "{stderr}");
