@@ -43,10 +43,12 @@ pub(super) fn seeds() -> Vec<(String, String)> {
     ];
     for p in shipped::scenes() {
         if let Ok(text) = std::fs::read_to_string(&p) {
-            // A mesh record names its file from the scene's folder: made absolute, so
-            // that the seed and its prefixes parse under any name.
+            // A mesh record names its file from the scene's folder (meshes/ or models/):
+            // made absolute, so that the seed and its prefixes parse under any name.
             let dir = p.parent().unwrap().display().to_string();
-            let text = text.replace("mesh \"meshes/", &format!("mesh \"{dir}/meshes/"));
+            let text = text
+                .replace("mesh \"meshes/", &format!("mesh \"{dir}/meshes/"))
+                .replace("mesh \"models/", &format!("mesh \"{dir}/models/"));
             out.push((p.file_name().unwrap().to_string_lossy().into_owned(), text));
         }
     }

@@ -25,6 +25,7 @@ pub const SCENES: &[&str] = &[
     "13-exp-fog.txt",
     "14-exp2-fog.txt",
     "bounce.txt",
+    "bunny.txt",
     "csg-piece.txt",
     "glass-cluster.txt",
     "meshes.txt",
@@ -38,13 +39,21 @@ pub const SCENES: &[&str] = &[
 /// `benches/gen_meshes.py`).
 pub const MESH_FILES: &[&str] = &["meshes/gem.obj", "meshes/trefoil.ply"];
 
-/// The glTF models, in `scenes/` (each written by the script beside it), and their
-/// scripts: `walk.toml` plays the walker.
-pub const MODEL_FILES: &[&str] = &["models/make_walker.py", "models/walker.glb"];
+/// The models, in `scenes/` (each written by the script beside it), their scripts and
+/// the page that credits them: `walk.toml` plays the walker (glTF); `bunny.txt` reads the
+/// Stanford bunny (a PLY converted from an OBJ by `obj_to_ply.py`).
+pub const MODEL_FILES: &[&str] = &[
+    "models/README.md",
+    "models/bunny.ply",
+    "models/make_walker.py",
+    "models/obj_to_ply.py",
+    "models/walker.glb",
+];
 
 /// The shipped manifests, in `animations/`.
 pub const ANIMATIONS: &[&str] = &[
     "bounce.toml",
+    "bunny-turntable.toml",
     "flythrough.toml",
     "fog.toml",
     "orbit-passes.toml",
