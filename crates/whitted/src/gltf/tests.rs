@@ -217,6 +217,9 @@ fn a_joint_number_past_its_skin_is_refused() {
     let bytes = json.to_string().into_bytes();
     let m = Model::read(&sample("SimpleSkin.gltf"), &bytes, Options::default()).unwrap();
     let e = m.scene_at(0.0, &[], &[]).unwrap_err().to_string();
-    assert!(e.contains("meshes[0].primitives[0].attributes.JOINTS_0"), "{e}");
+    assert!(
+        e.contains("meshes[0].primitives[0].attributes.JOINTS_0"),
+        "{e}"
+    );
     assert!(e.contains("joint 1 is past the 1 joints"), "{e}");
 }
