@@ -8,17 +8,17 @@ use super::*;
 fn unknown_keys_are_located_and_the_valid_ones_named() {
     assert_eq!(
         refusal(&with("bogus = 1")),
-        "3:1: unknown key `bogus`; the top level takes `scene`, `frames`, `fps`, `loop`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`"
+        "3:1: unknown key `bogus`; the top level takes `scene`, `frames`, `fps`, `loop`, `[camera]`, `[animation]`, `[output]`, `[render]`, `[check]`, `[[track]]`"
     );
     assert_eq!(
         refusal(&format!("scene = \"s\"\nframes = 3\n{CIRCLE}  spin = 2\n")),
-        "8:3: camera: unknown key `spin`; [camera] with path = \"circle\" takes `path`, `center`, `radius`, `height`, `start_angle`, `turns`, `look_at`, `fov`, `roll`"
+        "8:3: camera: unknown key `spin`; [camera] with path = \"circle\" takes `path`, `name`, `center`, `radius`, `height`, `start_angle`, `turns`, `look_at`, `fov`, `roll`"
     );
     // A circle's key in a spline is unknown too, and the spline's keys are named.
     let src = TOUR.replace("closed = false", "radius = 3.0");
     assert_eq!(
         refusal(&src),
-        "5:1: camera: unknown key `radius` (a key of path = \"circle\"); [camera] with path = \"spline\" takes `path`, `closed`, `constant_speed`, `look_at`, `fov`, `roll`, `keys`"
+        "5:1: camera: unknown key `radius` (a key of path = \"circle\"); [camera] with path = \"spline\" takes `path`, `name`, `closed`, `constant_speed`, `look_at`, `fov`, `roll`, `keys`"
     );
     let src = TOUR.replace("{ frame = 120,", "{ frame = 120, fov = 2,");
     assert_eq!(
@@ -37,8 +37,8 @@ fn misspelt_tables_and_keys_are_all_located_with_the_nearest_name() {
                keys = [{ frame = 0, vlaue = 1 }]\n";
     assert_eq!(
         refusal(src),
-        "3:2: unknown table `[outptu]` (did you mean `[output]`?); the top level takes `scene`, `frames`, `fps`, `loop`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`\n\
-         5:2: unknown table `[camra]` (did you mean `[camera]`?); the top level takes `scene`, `frames`, `fps`, `loop`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`\n\
+        "3:2: unknown table `[outptu]` (did you mean `[output]`?); the top level takes `scene`, `frames`, `fps`, `loop`, `[camera]`, `[animation]`, `[output]`, `[render]`, `[check]`, `[[track]]`\n\
+         5:2: unknown table `[camra]` (did you mean `[camera]`?); the top level takes `scene`, `frames`, `fps`, `loop`, `[camera]`, `[animation]`, `[output]`, `[render]`, `[check]`, `[[track]]`\n\
          8:1: render: unknown key `samles` (did you mean `samples`?); [render] takes `width`, `height`, `samples`, `motion_blur`, `antialias`\n\
          9:17: render.motion_blur: unknown key `shuter` (did you mean `shutter`?); motion_blur takes `shutter`, `samples`\n\
          12:22: track[0].keys[0]: unknown key `vlaue` (did you mean `value`?); a track key takes `frame`, `time`, `value`, `ease`"
@@ -118,7 +118,7 @@ fn the_camera_path_is_checked() {
     let src = "scene = \"s\"\nframes = 3\n[camera]\nradius = 1\n";
     assert_eq!(
         refusal(src),
-        "4:1: camera: unknown key `radius` (a key of path = \"circle\"); [camera] without a path takes `path`, `look_at`, `fov`, `roll`"
+        "4:1: camera: unknown key `radius` (a key of path = \"circle\"); [camera] without a path takes `path`, `name`, `look_at`, `fov`, `roll`"
     );
     let src = "scene = \"s\"\nframes = 3\n[camera]\npath = \"spiral\"\n";
     assert!(refusal(src)

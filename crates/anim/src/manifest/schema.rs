@@ -333,7 +333,7 @@ mod tests {
         assert_eq!(
             found[1].1,
             "unknown table `[camra]` (did you mean `[camera]`?); the top level takes `scene`, \
-             `frames`, `fps`, `loop`, `[camera]`, `[output]`, `[render]`, `[check]`, `[[track]]`"
+             `frames`, `fps`, `loop`, `[camera]`, `[animation]`, `[output]`, `[render]`, `[check]`, `[[track]]`"
         );
         assert_eq!(
             found[2].1,
@@ -368,7 +368,7 @@ mod tests {
         assert_eq!(
             found[0].1,
             "camera: unknown key `radius` (a key of path = \"circle\"); \
-             [camera] without a path takes `path`, `look_at`, `fov`, `roll`"
+             [camera] without a path takes `path`, `name`, `look_at`, `fov`, `roll`"
         );
         assert!(unknown_keys("[camera]\npath = 'circle'\nradius = 3\n").is_empty());
         // An unknown path accepts any camera key: the path is what is refused.
