@@ -5,6 +5,10 @@
 //! from it, so an animation's frames share everything that does not move.
 
 use crate::mesh::Look;
+use std::path::PathBuf;
+
+/// The files a glTF file named, with their SHA-256, in the order they were read.
+pub type Named = Vec<(PathBuf, [u8; 32])>;
 use glam::{DMat4, DQuat, DVec3};
 
 /// A node's transform relative to its parent.
@@ -187,7 +191,7 @@ pub struct Rig {
     /// One line per kind of thing the file holds and the tracer does not use.
     pub warnings: Vec<String>,
     /// The files the glTF file named, with their SHA-256.
-    pub named: super::source::Named,
+    pub named: Named,
     /// The SHA-256 of the glTF file itself.
     pub source: [u8; 32],
 }

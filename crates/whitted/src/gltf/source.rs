@@ -14,8 +14,7 @@ use crate::limits::MAX_MESH_BYTES;
 use base64::Engine;
 use std::path::{Component, Path, PathBuf};
 
-/// The files a glTF file named, with their SHA-256, in the order they were read.
-pub type Named = Vec<(PathBuf, [u8; 32])>;
+pub use super::rig::Named;
 
 /// Where the glTF file is, for what it names.
 pub struct Origin<'a> {
