@@ -250,4 +250,14 @@ fn hostile_obj_files_name_their_cause() {
         m.warnings
     );
     assert_eq!(m.looks[0].texture, Texture::Uniform(DVec3::X));
+    // A usemtl of a name no .mtl defines: named once, with its first line.
+    let src = format!("mtllib m.mtl\n{tri}usemtl b\nf 1 2 3\nusemtl b\nf 1 2 3\n");
+    let m = load(&dir, "y.obj", src.as_bytes()).unwrap();
+    let w: Vec<&String> = m.warnings.iter().filter(|w| w.contains("usemtl")).collect();
+    assert_eq!(w.len(), 1, "{:?}", m.warnings);
+    assert!(
+        w[0].contains("y.obj:5: usemtl 'b' names no material"),
+        "{}",
+        w[0]
+    );
 }

@@ -137,6 +137,7 @@ pub fn read(bytes: &[u8], path: &str, dir: &Path) -> Result<Raw, MeshError> {
     let uvs = every(&|m| m.texcoords.len() / 2 == m.positions.len() / 3);
     let colors = every(&|m| m.vertex_color.len() == m.positions.len());
     let materials = materials.unwrap_or_default();
+    undefined_materials(bytes, &materials, path, &mut raw.warnings);
     raw.looks = mtl::looks(&materials, dir, path, uvs, &mut raw.warnings);
     let looks = models.iter().any(|m| m.mesh.material_id.is_some()) && !raw.looks.is_empty();
     for model in &models {
@@ -197,4 +198,32 @@ pub fn read(bytes: &[u8], path: &str, dir: &Path) -> Result<Raw, MeshError> {
         });
     }
     Ok(raw)
+}
+
+/// A warning for the first `usemtl` of each name that no `.mtl` material has (its faces
+/// take the record's TEXTURE and MATERIAL), with its line.
+fn undefined_materials(
+    bytes: &[u8],
+    materials: &[tobj::Material],
+    path: &str,
+    warnings: &mut Vec<String>,
+) {
+    let mut named: Vec<&[u8]> = Vec::new();
+    for (line, text) in obj_scan::lines(bytes) {
+        let mut words = text
+            .split(|b| b.is_ascii_whitespace())
+            .filter(|w| !w.is_empty());
+        if words.next() != Some(b"usemtl".as_slice()) {
+            continue;
+        }
+        let Some(name) = words.next() else { continue };
+        let known = materials.iter().any(|m| m.name.as_bytes() == name);
+        if !known && !named.contains(&name) {
+            named.push(name);
+            warnings.push(format!(
+                "{path}:{line}: usemtl '{}' names no material of the .mtl files: its faces take the record's TEXTURE and MATERIAL",
+                String::from_utf8_lossy(name)
+            ));
+        }
+    }
 }
