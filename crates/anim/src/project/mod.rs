@@ -7,10 +7,12 @@
 //! than Kt) shares one acceleration structure, built once, across all frames; otherwise
 //! each sample builds its own from its scene.
 
+mod settings;
+pub use settings::Settings;
+
 use super::error::AnimError;
 use super::manifest::Manifest;
-use super::timeline::{Field, MotionBlur, Snapshot, Timeline};
-use serde::Serialize;
+use super::timeline::{Field, Snapshot, Timeline};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, OnceLock};
 use whitted::accel::Accel;
@@ -93,31 +95,6 @@ impl Project {
         (!self.timeline.moves_geometry())
             .then(|| Arc::clone(self.accel.get_or_init(|| Arc::new(Accel::for_scene(base)))))
     }
-}
-
-/// Everything besides the scene and camera that decides a frame's bytes.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
-pub struct Settings {
-    /// The frame's width in pixels.
-    pub width: u32,
-    /// The frame's height in pixels.
-    pub height: u32,
-    /// n of the n×n supersampling grid.
-    pub samples: u32,
-    /// The motion blur, if any.
-    pub motion_blur: Option<MotionBlur>,
-    /// Adaptive anti-aliasing, if set (left out of the digest's JSON when not, so that
-    /// frames drawn before it existed stay up to date).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub antialias: Option<Adaptive>,
-    /// The file format the frame is written in.
-    pub format: ImageFormat,
-    /// `PIXEL_VERSION` of the library that drew it.
-    pub pixel_version: u32,
-    /// The view plane's width and height and the roll, when they are not the report's
-    /// (left out of the record then, so frames of the report's framing keep their digest).
-    #[serde(skip_serializing_if = "Option::is_none")]
-    pub view: Option<[f64; 3]>,
 }
 
 /// A project ready to draw any of its frames at a size.

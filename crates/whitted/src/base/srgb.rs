@@ -68,6 +68,18 @@ impl Transfer {
     }
 }
 
+/// A linear-light colour (a glTF scene's, SPEC §18) as the display value the frame
+/// stores: each channel sRGB-encoded (negative values, which no term makes, map to 0).
+#[cold]
+#[inline(never)]
+pub fn display(c: super::Color) -> super::Color {
+    super::Color::new(
+        encode(c.x.max(0.0)),
+        encode(c.y.max(0.0)),
+        encode(c.z.max(0.0)),
+    )
+}
+
 /// The sRGB EOTF: a display value to linear light.
 pub fn decode(v: f64) -> f64 {
     let a = v.abs();

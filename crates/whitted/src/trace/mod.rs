@@ -21,13 +21,15 @@
 //! passes `NoRecord`, compiles to the code it had before passes existed.
 
 mod count;
+mod query;
 pub mod rules;
 mod surface;
+mod unseen;
 pub use count::RayCount;
 pub use rules::Rules;
 pub use surface::{facing, surface_at};
 
-use crate::accel::{Accel, Hint, Hit, LightBuffer, NO_PART};
+use crate::accel::{Accel, Hint, LightBuffer, NO_PART};
 use crate::base::Color;
 use crate::lights::Occluders;
 use crate::lights::{self, SceneLight};
@@ -83,30 +85,6 @@ impl<'a> Tracer<'a> {
         }
     }
 
-    /// This tracer with other limits (the SPD's testing procedure: `Rules::spd`).
-    pub fn with_rules(mut self, rules: Rules) -> Tracer<'a> {
-        self.rules = rules;
-        self
-    }
-
-    /// The limits this tracer follows.
-    pub fn rules(&self) -> Rules {
-        self.rules
-    }
-
-    /// The acceleration structure, to share with `with_accel`.
-    pub fn accel(&self) -> &Arc<Accel> {
-        &self.accel
-    }
-
-    /// The nearest object hit, with its t: the first object in file order among those at
-    /// the smallest t, exactly as a linear scan in file order finds it.
-    #[inline]
-    pub fn nearest(&self, ray: &Ray) -> Option<(f64, &'a Object)> {
-        let objects = &self.scene.objects;
-        self.nearest_index(ray).map(|(t, i)| (t, &objects[i]))
-    }
-
     /// The nearest hit as `trace_hit` takes it: t, the object, and the mesh triangle.
     #[inline]
     fn nearest_part(&self, ray: &Ray) -> Option<(f64, &'a Object, u32)> {
@@ -114,26 +92,6 @@ impl<'a> Tracer<'a> {
         self.accel
             .nearest_hit(ray)
             .map(|h| (h.t, &objects[h.index], h.part))
-    }
-
-    /// `nearest`, naming the object by its index in the scene's objects.
-    #[inline]
-    pub fn nearest_index(&self, ray: &Ray) -> Option<(f64, usize)> {
-        self.accel.nearest(ray)
-    }
-
-    /// `nearest_index` with, on a mesh, the triangle hit (`accel::Hit`).
-    #[inline]
-    pub fn nearest_hit(&self, ray: &Ray) -> Option<Hit> {
-        self.accel.nearest_hit(ray)
-    }
-
-    /// What a shadow ray from `p` towards a light `dist` away along the unit `to_light`
-    /// lets through: exactly `shading::transmission(&scene.objects, ..)`.
-    #[inline]
-    pub fn transmission(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color {
-        self.accel
-            .transmission(&self.scene.objects, p, to_light, dist)
     }
 
     /// The colour seen along a camera ray: the traced colour with the scene's fog, not
@@ -166,7 +124,7 @@ impl<'a> Tracer<'a> {
     ) -> Color {
         let c = self.primary_value(tile, ray, count, rec);
         if self.scene.linear {
-            return display(c);
+            return crate::base::srgb::display(c);
         }
         c
     }
@@ -247,56 +205,6 @@ impl<'a> Tracer<'a> {
                 self.scene.fog.apply(background, f64::INFINITY)
             }
         }
-    }
-
-    /// A camera ray's colour past a back face it does not see at `t` (out of line: only
-    /// a glTF mesh comes here).
-    #[cold]
-    #[inline(never)]
-    fn primary_past<R: Record>(
-        &self,
-        t: f64,
-        ray: &Ray,
-        count: &mut RayCount,
-        rec: &mut R,
-    ) -> Color {
-        let hit = self.past_culled(ray, t);
-        self.primary_shade(hit, None, ray, count, rec)
-    }
-
-    /// Whether triangle `part` of mesh object `obj` is a back face that camera rays do
-    /// not see (a glTF material that is not `doubleSided`; SPEC §18). Every other surface
-    /// is two-sided.
-    #[cold]
-    #[inline(never)]
-    fn culled(&self, obj: &Object, part: u32, ray: &Ray) -> bool {
-        let crate::shapes::Shape::Mesh(m) = &obj.shape else {
-            return false;
-        };
-        let mesh = &self.scene.meshes[m.id as usize];
-        if !mesh.single_sided {
-            return false;
-        }
-        let [a, b, c] = mesh.corners(part);
-        (b - a).cross(c - a).dot(ray.dir) > 0.0
-    }
-
-    /// The first hit of a camera ray past back faces it does not see: the same ray, its
-    /// hits counted only past the one culled (distances stay the eye's).
-    #[cold]
-    #[inline(never)]
-    fn past_culled(&self, ray: &Ray, mut t: f64) -> Option<(f64, usize, u32)> {
-        let objects = &self.scene.objects;
-        // A bound on the surfaces passed, against a pathological file.
-        for _ in 0..1024 {
-            let further = ray.with_t_min(t + self.scene.t_min);
-            let h = self.accel.nearest_hit(&further)?;
-            if h.part == NO_PART || !self.culled(&objects[h.index], h.part, ray) {
-                return Some((h.t, h.index, h.part));
-            }
-            t = h.t;
-        }
-        None
     }
 
     /// The colour along a secondary ray at recursion `depth` with path weight `weight`.
@@ -451,19 +359,6 @@ impl<'a> Tracer<'a> {
         }
         out
     }
-}
-
-/// A linear-light colour (a glTF scene's, SPEC §18) as the display value the frame
-/// stores: each channel sRGB-encoded (negative values, which no term makes, map to 0).
-#[cold]
-#[inline(never)]
-pub fn display(c: Color) -> Color {
-    use crate::base::srgb::encode;
-    Color::new(
-        encode(c.x.max(0.0)),
-        encode(c.y.max(0.0)),
-        encode(c.z.max(0.0)),
-    )
 }
 
 impl Occluders for Tracer<'_> {
