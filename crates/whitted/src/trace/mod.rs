@@ -390,4 +390,11 @@ impl Occluders for Tracer<'_> {
                 .transmission_to(objects, light, p, to_light, dist),
         }
     }
+
+    /// Through the shadow cache's slot of `key` (an extension light's ray).
+    #[inline]
+    fn transmission_keyed(&self, key: usize, p: DVec3, to_light: DVec3, dist: f64) -> Color {
+        self.accel
+            .transmission_keyed(&self.scene.objects, key, p, to_light, dist)
+    }
 }
