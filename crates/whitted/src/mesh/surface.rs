@@ -30,7 +30,7 @@ impl Mesh {
     }
 
     /// The weights of triangle `k`'s corners at its point `p` (barycentric).
-    fn weights(&self, k: u32, p: DVec3) -> [f64; 3] {
+    pub(super) fn weights(&self, k: u32, p: DVec3) -> [f64; 3] {
         let [a, b, c] = self.corners(k);
         let (e1, e2, d) = (b - a, c - a, p - a);
         let (d11, d12, d22) = (e1.dot(e1), e1.dot(e2), e2.dot(e2));
