@@ -14,9 +14,12 @@
 //! - `transmission`: black when an opaque object blocks the shadow ray, otherwise the
 //!   product of `Kt·C` over the crossings of transparent objects, multiplied in object
 //!   order and, within an object, in t order — the linear scan's order, so that the
-//!   rounding of the product is the same.
+//!   rounding of the product is the same. A glTF mesh with coverage (MASK, BLEND) is
+//!   crossed like a transparent one, each crossing letting through what its point's
+//!   alpha lets (`cover`).
 
 mod bvh;
+mod cover;
 mod dirgrid;
 mod lightbuf;
 mod shadow;
@@ -74,6 +77,10 @@ pub struct Accel {
     glass_all: Vec<u32>,
     /// Whether one of them is a mesh.
     glass_mesh: bool,
+    /// Whether shadow rays collect the crossings in one walk (`transmission_collecting`):
+    /// past `GLASS_LINEAR_MAX` transparent objects, none of them a mesh with coverage
+    /// (`cover`).
+    collect: bool,
     /// This build's name in the threads' shadow caches (`shadow_cache`; 0 for none).
     id: u64,
     /// Whether shadow rays walk a tree (not only flat lists), where the shadow cache
@@ -165,12 +172,13 @@ impl Accel {
         let mut shapes: Vec<ShapePrim> = Vec::new();
         let unify = shares_tree(objects);
         for (i, o) in objects.iter().enumerate() {
+            let (glass, opaque) = cover::flags(o, meshes);
             let prim = |part: u32, mesh: u32| ShapePrim {
                 index: i as u32,
                 part,
                 mesh,
-                glass: is_glass(o),
-                opaque: is_opaque(o),
+                glass,
+                opaque,
             };
             match &o.shape {
                 Shape::Sphere(sphere) if unify => {
@@ -183,7 +191,7 @@ impl Accel {
                         continue;
                     };
                     // A glass mesh keeps its copies: each crossing of a shadow ray counts.
-                    let parts = if is_glass(o) {
+                    let parts = if glass {
                         (0..mesh.triangles.len() as u32).collect()
                     } else {
                         unique::triangles(mesh)
@@ -242,6 +250,9 @@ impl Accel {
         let tris = in_tree_order(&mut shapes, ShapePrim::TRI, &tris);
         let spheres = in_tree_order(&mut shapes, ShapePrim::SPHERE, &spheres);
         let tree = Bvh::build(prims, Prim::bounds);
+        let glass_all: Vec<u32> = (0..objects.len() as u32)
+            .filter(|&i| cover::flags(&objects[i as usize], meshes).0)
+            .collect();
         Accel {
             id: shadow_cache::new_id(),
             cached: !tree.is_flat() || !shapes.is_flat(),
@@ -255,12 +266,11 @@ impl Accel {
             unbounded: unbounded(&|_| true),
             unbounded_opaque: unbounded(&is_opaque).into_iter().map(|(_, s)| s).collect(),
             unbounded_glass: unbounded(&is_glass).into_iter().map(|(i, _)| i).collect(),
-            glass_all: (0..objects.len() as u32)
-                .filter(|&i| is_glass(&objects[i as usize]))
-                .collect(),
+            glass_all: glass_all.clone(),
             glass_mesh: objects
                 .iter()
-                .any(|o| is_glass(o) && matches!(o.shape, Shape::Mesh(_))),
+                .any(|o| cover::flags(o, meshes).0 && matches!(o.shape, Shape::Mesh(_))),
+            collect: glass_all.len() > GLASS_LINEAR_MAX && !cover::any(objects, meshes),
         }
     }
 

@@ -3,7 +3,7 @@
 //! parent module for the order of the product).
 
 use super::shadow_cache::{self, Blocker};
-use super::{Accel, ShapePrim, CROSSINGS_MAX, GLASS_LINEAR_MAX};
+use super::{Accel, ShapePrim, CROSSINGS_MAX};
 use crate::base::Color;
 use crate::object::Object;
 use crate::optics::Ray;
@@ -78,7 +78,7 @@ impl Accel {
                 return Color::ZERO;
             }
         }
-        if self.glass_all.len() > GLASS_LINEAR_MAX {
+        if self.collect {
             return self.transmission_collecting(objects, light, &ray, dist);
         }
         // Few transparent objects: the tree only looks for an opaque blocker ...
@@ -125,8 +125,8 @@ impl Accel {
         for &i in &self.glass_all {
             let obj = &objects[i as usize];
             if let Shape::Mesh(m) = obj.shape {
-                for t in self.mesh_crossings(m.id, ray, dist) {
-                    through *= obj.material.kt * obj.texture.color_at(ray.at(t));
+                for (t, part) in self.mesh_crossings(m.id, ray, dist) {
+                    through *= self.crossing(obj, m.id, part, ray.at(t));
                 }
                 continue;
             }
@@ -137,17 +137,18 @@ impl Accel {
         through
     }
 
-    /// Every crossing of mesh `id`'s triangles with ray.t_min < t < dist, ascending.
+    /// Every crossing (t, triangle) of mesh `id`'s triangles with ray.t_min < t < dist,
+    /// ascending.
     #[cold]
-    fn mesh_crossings(&self, id: u32, ray: &Ray, dist: f64) -> Vec<f64> {
+    fn mesh_crossings(&self, id: u32, ray: &Ray, dist: f64) -> Vec<(f64, u32)> {
         let mut ts = Vec::new();
         self.shapes.traverse_any(ray, dist, |prim, limit| {
             if prim.mesh == id {
-                ts.extend(self.shape_hit(prim, ray, dist));
+                ts.extend(self.shape_hit(prim, ray, dist).map(|t| (t, prim.part)));
             }
             Some(limit)
         });
-        ts.sort_by(f64::total_cmp);
+        ts.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         ts
     }
 
