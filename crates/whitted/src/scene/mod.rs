@@ -140,6 +140,14 @@ impl Scene {
             .map_err(|e| e.to_string())
     }
 
+    /// The warning for a picture of `size` of a glTF scene whose camera's `aspectRatio`
+    /// is another shape (`gltf::view::aspect_warning`); `None` for any other scene.
+    pub fn aspect_warning(&self, size: (u32, u32)) -> Option<String> {
+        let model = self.model.as_ref()?;
+        let name = model.options.camera.as_deref();
+        crate::gltf::view::aspect_warning(&model.rig, name, size)
+    }
+
     /// The objects' names, in order: `KIND N`, N counted from 1 per kind in file order
     /// (`sphere 3`: the file's third sphere; an extension record continues its kind's
     /// count after the report's), or the record's `name` when it has one (the count still
