@@ -14,12 +14,9 @@
 //! - `transmission`: black when an opaque object blocks the shadow ray, otherwise the
 //!   product of `Kt·C` over the crossings of transparent objects, multiplied in object
 //!   order and, within an object, in t order — the linear scan's order, so that the
-//!   rounding of the product is the same. A glTF mesh with coverage (MASK, BLEND) is
-//!   crossed like a transparent one, each crossing letting through what its point's
-//!   alpha lets (`cover`).
+//!   rounding of the product is the same.
 
 mod bvh;
-mod cover;
 mod dirgrid;
 mod lightbuf;
 mod shadow;
@@ -77,10 +74,6 @@ pub struct Accel {
     glass_all: Vec<u32>,
     /// Whether one of them is a mesh.
     glass_mesh: bool,
-    /// Whether shadow rays collect the crossings in one walk (`transmission_collecting`):
-    /// past `GLASS_LINEAR_MAX` transparent objects, none of them a mesh with coverage
-    /// (`cover`).
-    collect: bool,
     /// This build's name in the threads' shadow caches (`shadow_cache`; 0 for none).
     id: u64,
     /// Whether shadow rays walk a tree (not only flat lists), where the shadow cache
@@ -105,6 +98,28 @@ pub const NO_PART: u32 = u32::MAX;
 /// Kt > 0: shadow rays cross it (the linear scan's second loop).
 fn is_glass(o: &Object) -> bool {
     o.material.kt > 0.0
+}
+
+/// A mesh some of whose triangles shadow rays cross: the record's Kt > 0 where a
+/// triangle takes the record's material, a file material's (`.mtl` `d`) where it takes
+/// its own; or a glTF mesh with coverage (MASK, BLEND), every triangle of which is
+/// crossed, each crossing letting through what its point's alpha lets (`Mesh::filter`).
+fn mesh_glass(o: &Object, mesh: &Mesh) -> bool {
+    if mesh.face_looks.is_empty() {
+        return is_glass(o) || mesh.has_coverage();
+    }
+    let glass = |k| mesh.face_material(k, &o.material).kt > 0.0;
+    mesh.has_coverage() || (0..mesh.triangles.len() as u32).any(glass)
+}
+
+/// An object shadow rays may cross: Kt > 0, or a mesh with a triangle of Kt > 0.
+fn glass_object(o: &Object, meshes: &[Arc<Mesh>]) -> bool {
+    match o.shape {
+        Shape::Mesh(m) => meshes
+            .get(m.id as usize)
+            .is_some_and(|mesh| mesh_glass(o, mesh)),
+        _ => is_glass(o),
+    }
 }
 
 /// Kt ≤ 0: it stops shadow rays (the linear scan's first loop). Not simply `!is_glass`:
@@ -172,13 +187,12 @@ impl Accel {
         let mut shapes: Vec<ShapePrim> = Vec::new();
         let unify = shares_tree(objects);
         for (i, o) in objects.iter().enumerate() {
-            let (glass, opaque) = cover::flags(o, meshes);
             let prim = |part: u32, mesh: u32| ShapePrim {
                 index: i as u32,
                 part,
                 mesh,
-                glass,
-                opaque,
+                glass: is_glass(o),
+                opaque: is_opaque(o),
             };
             match &o.shape {
                 Shape::Sphere(sphere) if unify => {
@@ -191,12 +205,21 @@ impl Accel {
                         continue;
                     };
                     // A glass mesh keeps its copies: each crossing of a shadow ray counts.
-                    let parts = if glass {
+                    // Its triangles stop or cross shadow rays by their own Kt (`.mtl`).
+                    let parts = if mesh_glass(o, mesh) {
                         (0..mesh.triangles.len() as u32).collect()
                     } else {
                         unique::triangles(mesh)
                     };
-                    shapes.extend(parts.into_iter().map(|k| prim(k, m.id)));
+                    let covered = mesh.has_coverage();
+                    shapes.extend(parts.into_iter().map(|k| {
+                        let kt = mesh.face_material(k, &o.material).kt;
+                        ShapePrim {
+                            glass: kt > 0.0 || covered,
+                            opaque: kt <= 0.0 && !covered,
+                            ..prim(k, m.id)
+                        }
+                    }));
                 }
                 // A smooth triangle is hit as its flat one (`SmoothTriangle::hit`).
                 Shape::Triangle(t) | Shape::Smooth(SmoothTriangle { flat: t, .. }) => {
@@ -250,9 +273,6 @@ impl Accel {
         let tris = in_tree_order(&mut shapes, ShapePrim::TRI, &tris);
         let spheres = in_tree_order(&mut shapes, ShapePrim::SPHERE, &spheres);
         let tree = Bvh::build(prims, Prim::bounds);
-        let glass_all: Vec<u32> = (0..objects.len() as u32)
-            .filter(|&i| cover::flags(&objects[i as usize], meshes).0)
-            .collect();
         Accel {
             id: shadow_cache::new_id(),
             cached: !tree.is_flat() || !shapes.is_flat(),
@@ -266,11 +286,12 @@ impl Accel {
             unbounded: unbounded(&|_| true),
             unbounded_opaque: unbounded(&is_opaque).into_iter().map(|(_, s)| s).collect(),
             unbounded_glass: unbounded(&is_glass).into_iter().map(|(i, _)| i).collect(),
-            glass_all: glass_all.clone(),
+            glass_all: (0..objects.len() as u32)
+                .filter(|&i| glass_object(&objects[i as usize], meshes))
+                .collect(),
             glass_mesh: objects
                 .iter()
-                .any(|o| cover::flags(o, meshes).0 && matches!(o.shape, Shape::Mesh(_))),
-            collect: glass_all.len() > GLASS_LINEAR_MAX && !cover::any(objects, meshes),
+                .any(|o| matches!(o.shape, Shape::Mesh(_)) && glass_object(o, meshes)),
         }
     }
 
@@ -372,5 +393,7 @@ mod grid_tests;
 #[cfg(test)]
 mod tests;
 
+#[cfg(test)]
+mod face_tests;
 #[cfg(test)]
 mod mesh_tests;

@@ -124,8 +124,9 @@ impl Mesh {
         }
     }
 
-    /// Whether shadow rays must look at each crossing of this mesh (its alpha mode is
-    /// not `OPAQUE`) rather than stop at the first.
+    /// Whether shadow rays cross every triangle of this mesh (its alpha mode is not
+    /// `OPAQUE`), each crossing letting through what `shadow_through` says, rather than
+    /// stop at the first.
     pub fn has_coverage(&self) -> bool {
         self.extra
             .as_ref()

@@ -126,9 +126,7 @@ impl<'a> Tracer<'a> {
         let c = self.primary_value(tile, ray, count, rec);
         if self.scene.linear {
             let shown = crate::base::srgb::display(c);
-            if R::ACTIVE {
-                rec.encoded(c, shown);
-            }
+            rec.encoded(c, shown);
             return shown;
         }
         c
