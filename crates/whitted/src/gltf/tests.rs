@@ -280,12 +280,31 @@ fn an_emissive_texture_is_read_on_its_coordinate_set() {
 }
 
 /// Where the shadow ray from the floor (y = −1) of alpha_modes.gltf towards its sun
-/// crosses the quads' plane z = 0 at `(x, y)`: the light it lets through.
+/// crosses the quads' plane z = 0 at `(x, y)`: the light it lets through, the same on
+/// both of the accelerator's shadow walks (three transparent objects: the linear loop;
+/// with four glass spheres no ray meets, seven: the collecting walk).
 fn shadow_through(x: f64, y: f64) -> crate::base::Color {
+    let few = shadow_with(x, y, 0);
+    assert_eq!(
+        few,
+        shadow_with(x, y, 4),
+        "the two walks differ at ({x}, {y})"
+    );
+    few
+}
+
+fn shadow_with(x: f64, y: f64, far: usize) -> crate::base::Color {
     use crate::lights::punctual::Shape;
     use crate::scene::ext::LightKind;
     let m = model("generated/alpha_modes.gltf").unwrap();
-    let scene = m.scene_at(0.0, &[], &[]).unwrap();
+    let mut scene = m.scene_at(0.0, &[], &[]).unwrap();
+    for k in 0..far {
+        let mut glass = scene.objects[0].clone();
+        let centre = DVec3::new(100.0 + 10.0 * k as f64, 100.0, 100.0);
+        glass.shape = crate::shapes::Shape::Sphere(crate::shapes::Sphere::new(centre, 1.0));
+        glass.material.kt = 0.5;
+        scene.objects.push(glass);
+    }
     let LightKind::Punctual(Shape::Directional { direction: d }, _) = scene.ext.lights[0].kind
     else {
         panic!("the sun is directional");
