@@ -33,7 +33,7 @@ pub use surface::{facing, surface_at};
 use crate::accel::{Accel, Hint, LightBuffer, NO_PART};
 use crate::base::Color;
 use crate::lights::Occluders;
-use crate::lights::{self, SceneLight};
+use crate::lights::SceneLight;
 use crate::object::{Highlight, Object};
 use crate::optics::{reflect, refract, Ray};
 pub use crate::record::{NoRecord, Record};
@@ -62,30 +62,6 @@ pub struct Tracer<'a> {
 }
 
 impl<'a> Tracer<'a> {
-    /// The scene this tracer draws.
-    pub fn scene(&self) -> &'a Scene {
-        self.scene
-    }
-
-    /// Prepares `scene` for tracing: builds its BVH (once; every frame shares it).
-    pub fn new(scene: &'a Scene) -> Tracer<'a> {
-        Tracer::with_accel(scene, Arc::new(Accel::for_scene(scene)))
-    }
-
-    /// A tracer for `scene` that reuses `accel`, built by `Accel::new` from objects with
-    /// the same shapes and the same transparency (Kt > 0 or not) as `scene`'s: only
-    /// colours, other coefficients and lights may differ. The caller guarantees it. (The
-    /// light buffer, which depends on the lights too, is built here from `scene`.)
-    pub fn with_accel(scene: &'a Scene, accel: Arc<Accel>) -> Tracer<'a> {
-        Tracer {
-            scene,
-            accel,
-            lights: LightBuffer::for_scene(scene),
-            ext_lights: lights::build(&scene.ext),
-            rules: Rules::default(),
-        }
-    }
-
     /// The nearest hit as `trace_hit` takes it: t, the object, and the mesh triangle.
     #[inline]
     fn nearest_part(&self, ray: &Ray) -> Option<(f64, &'a Object, u32)> {

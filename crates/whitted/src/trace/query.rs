@@ -1,16 +1,42 @@
-//! What callers ask of a tracer besides a camera ray's colour: its rules and tree, the
-//! nearest object along a ray (picking, the passes' tests) and a shadow ray's
-//! transmission, each exactly as the trace itself finds them.
+//! Making a tracer for a scene, and what callers ask of it besides a camera ray's
+//! colour: its rules and tree, the nearest object along a ray (picking, the passes'
+//! tests) and a shadow ray's transmission, each exactly as the trace itself finds them.
 
 use super::{Rules, Tracer};
-use crate::accel::{Accel, Hit};
+use crate::accel::{Accel, Hit, LightBuffer};
 use crate::base::Color;
+use crate::lights;
 use crate::object::Object;
 use crate::optics::Ray;
+use crate::scene::Scene;
 use glam::DVec3;
 use std::sync::Arc;
 
 impl<'a> Tracer<'a> {
+    /// The scene this tracer draws.
+    pub fn scene(&self) -> &'a Scene {
+        self.scene
+    }
+
+    /// Prepares `scene` for tracing: builds its BVH (once; every frame shares it).
+    pub fn new(scene: &'a Scene) -> Tracer<'a> {
+        Tracer::with_accel(scene, Arc::new(Accel::for_scene(scene)))
+    }
+
+    /// A tracer for `scene` that reuses `accel`, built by `Accel::new` from objects with
+    /// the same shapes and the same transparency (Kt > 0 or not) as `scene`'s: only
+    /// colours, other coefficients and lights may differ. The caller guarantees it. (The
+    /// light buffer, which depends on the lights too, is built here from `scene`.)
+    pub fn with_accel(scene: &'a Scene, accel: Arc<Accel>) -> Tracer<'a> {
+        Tracer {
+            scene,
+            accel,
+            lights: LightBuffer::for_scene(scene),
+            ext_lights: lights::build(&scene.ext),
+            rules: Rules::default(),
+        }
+    }
+
     /// This tracer with other limits (the SPD's testing procedure: `Rules::spd`).
     pub fn with_rules(mut self, rules: Rules) -> Tracer<'a> {
         self.rules = rules;
