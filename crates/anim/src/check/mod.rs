@@ -263,10 +263,10 @@ pub fn bless(
                     colour: whitted::base::Transfer::Linear,
                     ..Default::default()
                 });
-                whitted::output::write_atomic_layers(&path, layers, exr, &record)
+                whitted::output::write_atomic(&path, layers, exr, &record)
             } else {
                 let (image, _) = anim.render(frame)?;
-                whitted::output::write_atomic_with(&path, &image, ImageFormat::Png, &record)
+                whitted::output::write_atomic(&path, &image, ImageFormat::Png, &record)
             };
             written.map_err(|source| AnimError::Write { frame, source })?;
             let changed = before
@@ -339,7 +339,7 @@ fn check_frame(
     } else {
         create_dir(&opts.report)?;
         let write = |path: &PathBuf, img: &Frame| {
-            write_atomic(path, img, ImageFormat::Png)
+            write_atomic(path, img, ImageFormat::Png, &[])
                 .map_err(|source| AnimError::Write { frame, source })
                 .map(|()| Some(path.clone()))
         };

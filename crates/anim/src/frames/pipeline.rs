@@ -36,9 +36,7 @@ use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
-use whitted::output::{
-    encode, temp_beside, write_atomic_layers, write_atomic_with, ImageFormat, OutputError,
-};
+use whitted::output::{encode, temp_beside, write_atomic, ImageFormat, OutputError};
 use whitted::trace::RayCount;
 use whitted_cmd::process::stopped;
 
@@ -88,12 +86,11 @@ fn write_frame(
     let rays = if format.is_layered() {
         // EXR: the beauty unclamped and the passes, provenance in the header.
         let (layers, rays) = anim.render_layers(frame, format.passes())?;
-        write_atomic_layers(&path, layers, format, &stamp)
-            .map_err(|e| write(with_path(&path, e)))?;
+        write_atomic(&path, layers, format, &stamp).map_err(|e| write(with_path(&path, e)))?;
         rays
     } else {
         let (image, rays) = anim.render(frame)?;
-        write_atomic_with(&path, &image, format, &stamp).map_err(|e| write(with_path(&path, e)))?;
+        write_atomic(&path, &image, format, &stamp).map_err(|e| write(with_path(&path, e)))?;
         if format == ImageFormat::Raw {
             stamp.push(provenance::pixels_line(&image.pixels));
             write_raw_record(&path, &stamp).map_err(|source| {
@@ -317,7 +314,7 @@ pub(crate) fn render_to_stream(
                 let start = Instant::now();
                 let (image, rays) = anim.render_picture(frame)?;
                 let mut bytes = Vec::with_capacity(image.pixels.len() + 32);
-                encode(&image, format, &mut bytes)
+                encode(&image, format, &[], &mut bytes)
                     .map_err(|source| AnimError::Write { frame, source })?;
                 Ok((bytes, rays, start.elapsed().as_secs_f64()))
             })

@@ -25,9 +25,7 @@ use whitted::passes::record::{finish, Sums};
 use whitted::passes::{Layers, PassSet};
 use whitted::pick::Pick;
 use whitted::render::layers::camera_matrices;
-use whitted::render::{
-    control, render_add_with, render_layers_add, render_with, Adaptive, Antialias,
-};
+use whitted::render::{control, render, Adaptive, Antialias, LayeredSum, Options, Picture, Sum};
 use whitted::scene::{Scene, SceneError};
 use whitted::trace::{RayCount, Tracer};
 
@@ -275,16 +273,18 @@ impl<'p> Animation<'p> {
 
     fn draw(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
         let (w, h) = (self.width, self.height);
-        let n = self
+        let aa = self
             .antialias
             .map_or(Antialias::Grid(self.samples), Antialias::Adaptive);
+        let options = Options::new(w, h, aa);
         let times = self.timeline.times(frame);
         if let [t] = times[..] {
             let state = self.timeline.at(t);
             let camera = self
                 .camera(&state)
                 .ok_or_else(|| self.camera_error(frame))?;
-            return Ok(render_with(&self.tracer(&state.scene), &camera, w, h, n));
+            let tracer = self.tracer(&state.scene);
+            return Ok(render(&tracer, &camera, &options, Picture::new()));
         }
         let mut sum = vec![Color::ZERO; w as usize * h as usize];
         let mut rays = RayCount::default();
@@ -296,7 +296,8 @@ impl<'p> Animation<'p> {
             let camera = self
                 .camera(&state)
                 .ok_or_else(|| self.camera_error(frame))?;
-            rays = rays + render_add_with(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
+            let tracer = self.tracer(&state.scene);
+            rays = rays + render(&tracer, &camera, &options, Sum(&mut sum));
         }
         Ok((Frame::from_sum(&sum, times.len() as u32, w, h), rays))
     }
@@ -327,6 +328,7 @@ impl<'p> Animation<'p> {
     ) -> Result<(Layers, RayCount), AnimError> {
         let _drawing = control::frame_in_progress();
         let (w, h, n) = (self.width, self.height, self.samples);
+        let options = Options::grid(w, h, n);
         let times = self.timeline.times(frame);
         let mut sums = Sums::new(w as usize * h as usize, passes);
         let mut rays = RayCount::default();
@@ -336,7 +338,7 @@ impl<'p> Animation<'p> {
                 .camera(&state)
                 .ok_or_else(|| self.camera_error(frame))?;
             let tracer = self.tracer(&state.scene);
-            rays = rays + render_layers_add(&tracer, &camera, w, h, n, passes, &mut sums);
+            rays = rays + render(&tracer, &camera, &options, LayeredSum(passes, &mut sums));
         }
         // A signal stopped the row loops: the frame is incomplete and must not be kept.
         if let Some(sig) = control::cancelled() {

@@ -82,7 +82,7 @@ pub fn draw(
         Encoding::Raw => image.pixels,
         Encoding::Png => {
             let mut out = Vec::new();
-            encode(&image, ImageFormat::Png, &mut out)
+            encode(&image, ImageFormat::Png, &[], &mut out)
                 .map_err(|e| AnimError::Write { frame, source: e })?;
             out
         }

@@ -74,7 +74,7 @@ fn every_format_carries_its_digest() {
         ImageFormat::Ppm,
     ] {
         let path = dir.path().join(format!("f.{}", format.extension()));
-        whitted::output::write_atomic_with(&path, &frame, format, &meta).unwrap();
+        whitted::output::write_atomic(&path, &frame, format, &meta).unwrap();
         assert_eq!(
             recorded_digest(&path, format).as_deref(),
             Some("ab12"),
@@ -117,7 +117,7 @@ fn a_frame_is_sound_only_where_its_format_ends() {
         ImageFormat::Exr(Default::default()),
     ] {
         let path = dir.path().join(format!("f.{}", format.extension()));
-        whitted::output::write_atomic_with(&path, &frame, format, &meta).unwrap();
+        whitted::output::write_atomic(&path, &frame, format, &meta).unwrap();
         assert!(sound(&path, format, 2), "{format:?}");
         if matches!(format, ImageFormat::Ppm | ImageFormat::Exr(_)) {
             assert!(!sound(&path, format, 3), "{format:?}: another size");
