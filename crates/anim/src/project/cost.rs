@@ -84,14 +84,15 @@ impl<'p> Animation<'p> {
     /// (on one thread) apart.
     pub fn render_timed(&self, frame: u32) -> Result<Timed, AnimError> {
         let format = self.format();
+        let plan = self.plan(frame);
         let mut bytes = Vec::new();
         let start = Instant::now();
         let (encoded, rays, render_s) = if format.is_layered() {
-            let (layers, rays) = self.render_layers(frame, format.passes())?;
+            let (layers, rays) = self.render_layers(&plan, format.passes())?;
             let render_s = start.elapsed().as_secs_f64();
             (encode(layers, format, &[], &mut bytes), rays, render_s)
         } else {
-            let (image, rays) = self.render(frame)?;
+            let (image, rays) = self.render(&plan)?;
             let render_s = start.elapsed().as_secs_f64();
             (encode(&image, format, &[], &mut bytes), rays, render_s)
         };

@@ -1,5 +1,6 @@
 use super::*;
-use whitted::render::render;
+use whitted::render::{render, Options, Picture};
+use whitted::trace::Tracer;
 
 /// A still of `scene` through `cam` at 16×12, one sample a pixel.
 fn still(scene: &Scene, cam: &Camera) -> Frame {
@@ -43,7 +44,7 @@ fn motion_blur_is_the_mean_of_the_sub_frames() {
     let blur = "[render]\nmotion_blur = { shutter = 1.0, samples = 4 }\n";
     let (_d, p) = project(&format!("{blur}{track}"), SCENE);
     let anim = Animation::new(&p).unwrap();
-    let (frame, _) = anim.render(5).unwrap();
+    let (frame, _) = anim.render(&anim.plan(5)).unwrap();
     // Each sub-frame drawn on its own, as a still of the scene at t_k.
     let stills: Vec<Frame> = p
         .timeline
@@ -76,7 +77,7 @@ fn one_structure_serves_frames_whose_geometry_holds() {
     // Drawn through the shared structure, frame 4 is the still of its scene.
     let s = p.timeline.at(4.0);
     let cam = Camera::new(s.eye, s.look_at, 16, 12).unwrap();
-    assert_eq!(anim.render(4).unwrap().0, still(&s.scene, &cam));
+    assert_eq!(anim.render(&anim.plan(4)).unwrap().0, still(&s.scene, &cam));
     let moving = "[[track]]\ntarget = \"sphere 1 radius\"\nkeys = [{ frame = 0, value = 1.0 }, { frame = 9, value = 0.5 }]\n";
     let (_d, p) = project(moving, SCENE);
     assert!(Animation::new(&p).unwrap().shared.is_none());

@@ -77,7 +77,7 @@ pub fn draw(
 ) -> Result<(Vec<u8>, u32, u32), AnimError> {
     let (w, h) = scaled_size(project, scale);
     let anim = Animation::with_size(project, w, h)?;
-    let (image, _) = anim.render_picture(frame)?;
+    let (image, _) = anim.render_picture(&anim.plan(frame))?;
     let bytes = match encoding {
         Encoding::Raw => image.pixels,
         Encoding::Png => {

@@ -17,7 +17,7 @@ fn load(dir: &Path, scene: &str, extra: &str) -> Project {
 fn digests(dir: &Path, scene: &str, extra: &str) -> Vec<String> {
     let p = load(dir, scene, extra);
     let anim = Animation::new(&p).unwrap();
-    (0..4).map(|f| digest(&anim, f)).collect()
+    (0..4).map(|f| anim.plan(f).digest().to_string()).collect()
 }
 
 #[test]
