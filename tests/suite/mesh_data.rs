@@ -2,7 +2,8 @@
 //! with `vt` coordinates under the `uv` image map (POV-Ray: `mesh2` with `uv_vectors` and
 //! a `uv_mapping` image), a PLY quad with `red green blue` vertex colours (POV-Ray:
 //! `mesh2` with a `texture_list` per vertex), and an OBJ whose `.mtl` gives the colour
-//! and a `map_Kd` picture. Bound as the other mesh comparisons.
+//! and a `map_Kd` picture, and whose `d` filters the shadow rays crossing its faces.
+//! Bound as the other mesh comparisons.
 
 use crate::image_povray::texture_picture;
 use crate::mesh_povray::compare;
@@ -150,5 +151,70 @@ fn the_uv_map_needs_coordinates_and_hostile_files_are_named() {
     assert!(
         e.contains("raytrace: warning: DIR/w.obj: material 'a': map_Kd 'gone.png' cannot be read"),
         "{e}"
+    );
+}
+
+/// A floor seen from the report's camera, lit by one light behind and above the camera;
+/// the mesh record `mesh` (if any) hangs out of view between them, its shadow covering
+/// the bottom of the picture.
+fn shadow_scene(dir: &std::path::Path, mesh: &str) -> image::RgbImage {
+    let scene = dir.join("shadow.txt");
+    std::fs::write(
+        &scene,
+        format!(
+            "64 48  0 1 5  0 0.9 0  0 0  0 1 0 1
+0 0 0  0 1 0   1 0.8 0.8 0.8   1 0 0 1 0 0
+0 10 10  1 1 1  1
+{mesh}"
+        ),
+    )
+    .unwrap();
+    let png = dir.join("shadow.png");
+    let out = raytrace().arg(&scene).arg("-o").arg(&png).output().unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    image::open(&png).unwrap().to_rgb8()
+}
+
+#[test]
+fn a_faces_own_d_filters_the_shadow_rays_that_cross_it() {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path();
+    // A 2 × 2 card at y = 5 over z 4..6: its shadow from (0, 10, 10) covers the floor
+    // from z = −2 to 2, x = −2 to 2 (the picture's bottom rows).
+    let card = "v -1 5 4\nv 1 5 4\nv 1 5 6\nv -1 5 6\nusemtl m\nf 1 2 3 4\n";
+    let mtl = |d: &str| format!("newmtl m\nKd 1 0 0\nKs 0 0 0\nillum 1\nd {d}\n");
+    std::fs::write(d.join("card.obj"), format!("mtllib card.mtl\n{card}")).unwrap();
+    // The record is opaque: only the file's `d` can let light through.
+    let record = "mesh \"card.obj\" 1 1 1 1  0.7 0 0 1 0 0\n";
+    let lit = shadow_scene(d, "");
+    std::fs::write(d.join("card.mtl"), mtl("1")).unwrap();
+    let dark = shadow_scene(d, record);
+    std::fs::write(d.join("card.mtl"), mtl("0.5")).unwrap();
+    let red = shadow_scene(d, record);
+    let (x, y) = (32, 45);
+    let (l, k, r) = (
+        lit.get_pixel(x, y),
+        dark.get_pixel(x, y),
+        red.get_pixel(x, y),
+    );
+    assert!(
+        l[1] > k[1] + 60,
+        "the card shadows the floor: lit {l:?}, dark {k:?}"
+    );
+    // Kt = 1 − d = 0.5 and colour (1, 0, 0): the lights' terms halve in red, vanish in
+    // green and blue; ambient stays.
+    let half = (u16::from(l[0]) + u16::from(k[0])) / 2;
+    assert!(
+        u16::from(r[0]).abs_diff(half) <= 1,
+        "red {r:?}: want {half} of lit {l:?}, dark {k:?}"
+    );
+    assert_eq!(
+        (r[1], r[2]),
+        (k[1], k[2]),
+        "green and blue as in the full shadow"
     );
 }

@@ -72,6 +72,7 @@ pub mod info;
 pub mod input;
 pub mod lights;
 pub mod limits;
+pub mod load;
 pub mod mesh;
 pub mod noise;
 pub mod object;

@@ -14,7 +14,7 @@ use glam::DVec3;
 use proptest::prelude::*;
 
 /// `n` random small triangles in a 4-unit cube, as one mesh.
-fn soup(n: usize, seed: u64) -> Mesh {
+pub(super) fn soup(n: usize, seed: u64) -> Mesh {
     let mut rng = Rng(seed);
     let mut raw = Raw::default();
     for k in 0..n as u32 {

@@ -100,6 +100,26 @@ fn is_glass(o: &Object) -> bool {
     o.material.kt > 0.0
 }
 
+/// A mesh some of whose triangles shadow rays cross: the record's Kt > 0 where a
+/// triangle takes the record's material, a file material's (`.mtl` `d`) where it takes
+/// its own.
+fn mesh_glass(o: &Object, mesh: &Mesh) -> bool {
+    if mesh.face_looks.is_empty() {
+        return is_glass(o);
+    }
+    (0..mesh.triangles.len() as u32).any(|k| mesh.face_material(k, &o.material).kt > 0.0)
+}
+
+/// An object shadow rays may cross: Kt > 0, or a mesh with a triangle of Kt > 0.
+fn glass_object(o: &Object, meshes: &[Arc<Mesh>]) -> bool {
+    match o.shape {
+        Shape::Mesh(m) => meshes
+            .get(m.id as usize)
+            .is_some_and(|mesh| mesh_glass(o, mesh)),
+        _ => is_glass(o),
+    }
+}
+
 /// Kt ≤ 0: it stops shadow rays (the linear scan's first loop). Not simply `!is_glass`:
 /// an object with a NaN Kt is in neither loop.
 fn is_opaque(o: &Object) -> bool {
@@ -183,12 +203,20 @@ impl Accel {
                         continue;
                     };
                     // A glass mesh keeps its copies: each crossing of a shadow ray counts.
-                    let parts = if is_glass(o) {
+                    // Its triangles stop or cross shadow rays by their own Kt (`.mtl`).
+                    let parts = if mesh_glass(o, mesh) {
                         (0..mesh.triangles.len() as u32).collect()
                     } else {
                         unique::triangles(mesh)
                     };
-                    shapes.extend(parts.into_iter().map(|k| prim(k, m.id)));
+                    shapes.extend(parts.into_iter().map(|k| {
+                        let kt = mesh.face_material(k, &o.material).kt;
+                        ShapePrim {
+                            glass: kt > 0.0,
+                            opaque: kt <= 0.0,
+                            ..prim(k, m.id)
+                        }
+                    }));
                 }
                 // A smooth triangle is hit as its flat one (`SmoothTriangle::hit`).
                 Shape::Triangle(t) | Shape::Smooth(SmoothTriangle { flat: t, .. }) => {
@@ -256,11 +284,11 @@ impl Accel {
             unbounded_opaque: unbounded(&is_opaque).into_iter().map(|(_, s)| s).collect(),
             unbounded_glass: unbounded(&is_glass).into_iter().map(|(i, _)| i).collect(),
             glass_all: (0..objects.len() as u32)
-                .filter(|&i| is_glass(&objects[i as usize]))
+                .filter(|&i| glass_object(&objects[i as usize], meshes))
                 .collect(),
             glass_mesh: objects
                 .iter()
-                .any(|o| is_glass(o) && matches!(o.shape, Shape::Mesh(_))),
+                .any(|o| matches!(o.shape, Shape::Mesh(_)) && glass_object(o, meshes)),
         }
     }
 
@@ -362,5 +390,7 @@ mod grid_tests;
 #[cfg(test)]
 mod tests;
 
+#[cfg(test)]
+mod face_tests;
 #[cfg(test)]
 mod mesh_tests;

@@ -3,7 +3,7 @@
 //! parent module for the order of the product).
 
 use super::shadow_cache::{self, Blocker};
-use super::{Accel, ShapePrim, CROSSINGS_MAX, GLASS_LINEAR_MAX};
+use super::{Accel, ShapePrim, CROSSINGS_MAX, GLASS_LINEAR_MAX, NO_PART};
 use crate::base::Color;
 use crate::object::Object;
 use crate::optics::Ray;
@@ -11,18 +11,19 @@ use crate::shapes::Shape;
 use arrayvec::ArrayVec;
 use glam::DVec3;
 
-/// The transparent crossings of one shadow ray: (object, t), at most `CROSSINGS_MAX`.
+/// The transparent crossings of one shadow ray: (object, mesh triangle or `NO_PART`, t),
+/// at most `CROSSINGS_MAX`.
 /// An `ArrayVec`, so that no buffer is zeroed per ray (a zeroed array of 32 cost gears
 /// 1.8 % of its instructions).
 struct Crossings {
-    buf: ArrayVec<(u32, f64), CROSSINGS_MAX>,
+    buf: ArrayVec<(u32, u32, f64), CROSSINGS_MAX>,
     overflow: bool,
 }
 
 impl Crossings {
     #[inline]
-    fn push(&mut self, i: u32, t: f64) {
-        if self.buf.try_push((i, t)).is_err() {
+    fn push(&mut self, i: u32, part: u32, t: f64) {
+        if self.buf.try_push((i, part, t)).is_err() {
             self.overflow = true;
         }
     }
@@ -121,12 +122,19 @@ impl Accel {
             }
             return through;
         }
-        // The same loop, a transparent mesh's crossings found through the tree.
+        // The same loop, a transparent mesh's crossings found through the tree, each
+        // triangle filtering by its own material and colour.
         for &i in &self.glass_all {
             let obj = &objects[i as usize];
             if let Shape::Mesh(m) = obj.shape {
-                for t in self.mesh_crossings(m.id, ray, dist) {
-                    through *= obj.material.kt * obj.texture.color_at(ray.at(t));
+                let mesh = &self.meshes[m.id as usize];
+                let plain = mesh.plain(&obj.texture);
+                for (t, k) in self.mesh_crossings(m.id, ray, dist) {
+                    through *= if plain {
+                        obj.material.kt * obj.texture.color_at(ray.at(t))
+                    } else {
+                        mesh.filter(k, ray.at(t), &obj.texture, &obj.material)
+                    };
                 }
                 continue;
             }
@@ -137,17 +145,18 @@ impl Accel {
         through
     }
 
-    /// Every crossing of mesh `id`'s triangles with ray.t_min < t < dist, ascending.
+    /// Every crossing (t, triangle) of mesh `id`'s transparent triangles with
+    /// ray.t_min < t < dist, ascending in t (then triangle).
     #[cold]
-    fn mesh_crossings(&self, id: u32, ray: &Ray, dist: f64) -> Vec<f64> {
+    fn mesh_crossings(&self, id: u32, ray: &Ray, dist: f64) -> Vec<(f64, u32)> {
         let mut ts = Vec::new();
         self.shapes.traverse_any(ray, dist, |prim, limit| {
-            if prim.mesh == id {
-                ts.extend(self.shape_hit(prim, ray, dist));
+            if prim.mesh == id && prim.glass {
+                ts.extend(self.shape_hit(prim, ray, dist).map(|t| (t, prim.part)));
             }
             Some(limit)
         });
-        ts.sort_by(f64::total_cmp);
+        ts.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.cmp(&b.1)));
         ts
     }
 
@@ -168,7 +177,7 @@ impl Accel {
         };
         for &i in &self.unbounded_glass {
             for t in objects[i as usize].shape.crossings(ray, dist) {
-                found.push(i, t);
+                found.push(i, NO_PART, t);
             }
         }
         let mut blocker = Blocker::None;
@@ -180,7 +189,7 @@ impl Accel {
                 }
             } else if prim.glass && !found.overflow {
                 for t in prim.sphere.roots(ray).crossings(ray.t_min, dist) {
-                    found.push(prim.index, t);
+                    found.push(prim.index, NO_PART, t);
                 }
             }
             Some(limit)
@@ -215,7 +224,9 @@ impl Accel {
         let crossings = &mut found.buf[..];
         // Insertion sort by object, then t: a mesh's triangles are met in the tree's
         // order; any other object's crossings come in t order already.
-        let after = |a: &(u32, f64), b: &(u32, f64)| a.0 > b.0 || (a.0 == b.0 && a.1 > b.1);
+        let after = |a: &(u32, u32, f64), b: &(u32, u32, f64)| {
+            a.0 > b.0 || (a.0 == b.0 && (a.2 > b.2 || (a.2 == b.2 && a.1 > b.1)))
+        };
         for k in 1..crossings.len() {
             let mut j = k;
             while j > 0 && after(&crossings[j - 1], &crossings[j]) {
@@ -224,9 +235,19 @@ impl Accel {
             }
         }
         let mut through = Color::ONE;
-        for &(i, t) in crossings.iter() {
+        for &(i, part, t) in crossings.iter() {
             let obj = &objects[i as usize];
-            through *= obj.material.kt * obj.color_at(ray.at(t));
+            through *= match obj.shape {
+                Shape::Mesh(m) if part != NO_PART => {
+                    let mesh = &self.meshes[m.id as usize];
+                    if mesh.plain(&obj.texture) {
+                        obj.material.kt * obj.color_at(ray.at(t))
+                    } else {
+                        mesh.filter(part, ray.at(t), &obj.texture, &obj.material)
+                    }
+                }
+                _ => obj.material.kt * obj.color_at(ray.at(t)),
+            };
         }
         through
     }
@@ -236,15 +257,20 @@ impl Accel {
     fn shape_crossings(&self, prim: &ShapePrim, ray: &Ray, dist: f64, found: &mut Crossings) {
         if prim.mesh == ShapePrim::SOLO {
             for t in self.solo[prim.part as usize].crossings(ray, dist) {
-                found.push(prim.index, t);
+                found.push(prim.index, NO_PART, t);
             }
         } else if prim.mesh == ShapePrim::SPHERE {
             let roots = self.spheres[prim.part as usize].roots(ray);
             for t in roots.crossings(ray.t_min, dist) {
-                found.push(prim.index, t);
+                found.push(prim.index, NO_PART, t);
             }
         } else if let Some(t) = self.shape_hit(prim, ray, dist) {
-            found.push(prim.index, t);
+            let part = if prim.mesh == ShapePrim::TRI {
+                NO_PART
+            } else {
+                prim.part
+            };
+            found.push(prim.index, part, t);
         }
     }
 

@@ -6,7 +6,8 @@
 //! light; the view from `view`. The scene is shaded in linear light.
 
 use super::error::{at, GltfError};
-use super::pose::{self, Pose};
+use super::model::{Model, Options};
+use super::pose::{self, Pose, Put};
 use super::rig::{LightType, Rig};
 use super::view::{self, View};
 use crate::base::Color;
@@ -20,13 +21,27 @@ use crate::scene::{Scene, ShapeSpec};
 use crate::shapes::{MeshRef, Shape, Transform};
 use crate::texture::{MapKind, Texture};
 use glam::DVec3;
+use std::path::Path;
 use std::sync::Arc;
 
-/// What picks the view: the camera's name (`raytrace --camera`), if any.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Options {
-    /// The camera to look through.
-    pub camera: Option<String>,
+impl Model {
+    /// The scene at `t` seconds with the clips `playing` and the values `puts` over
+    /// them.
+    pub fn scene_at(&self, t: f64, playing: &[usize], puts: &[Put]) -> Result<Scene, GltfError> {
+        let pose = Pose::at(&self.rig, t, playing, puts);
+        let mut scene = scene(&self.rig, &pose, &self.options)?;
+        scene.model = Some(Model {
+            posed: Some((t, playing.to_vec(), puts.to_vec())),
+            ..self.clone()
+        });
+        Ok(scene)
+    }
+}
+
+/// The scene of a glTF file as a still shows it: every animation at t = 0.
+pub fn load(path: &Path, bytes: &[u8], options: Options) -> Result<Scene, GltfError> {
+    let model = Model::read(path, bytes, options)?;
+    model.scene_at(0.0, &model.all_clips(), &[])
 }
 
 /// The scene of `rig` at `pose`.

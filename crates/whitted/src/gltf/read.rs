@@ -59,7 +59,7 @@ pub fn read(bytes: &[u8], file: &str, dir: &Path) -> Result<Rig, GltfError> {
     read_meshes(doc, &buffers, &mut rig)?;
     read_skins(doc, &buffers, &mut rig)?;
     read_cameras_and_lights(doc, &mut rig);
-    rig.clips = super::clip::read(doc, &buffers, &rig)?;
+    rig.clips = super::animations::read(doc, &buffers, &rig)?;
     Ok(rig)
 }
 

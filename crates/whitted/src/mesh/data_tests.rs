@@ -260,4 +260,24 @@ fn hostile_obj_files_name_their_cause() {
         "{}",
         w[0]
     );
+    // A usemtl before the mtllib that defines it: tobj leaves its faces the record's.
+    let src = format!(
+        "{tri}usemtl a
+f 1 2 3
+mtllib m.mtl
+"
+    );
+    let m = load(&dir, "z.obj", src.as_bytes()).unwrap();
+    let w: Vec<&String> = m.warnings.iter().filter(|w| w.contains("usemtl")).collect();
+    assert_eq!(w.len(), 1, "{:?}", m.warnings);
+    assert!(
+        w[0].contains("z.obj:4: usemtl 'a' comes before every mtllib line"),
+        "{}",
+        w[0]
+    );
+    assert!(
+        m.face_looks.iter().all(|&k| k == RECORD_LOOK),
+        "{:?}",
+        m.face_looks
+    );
 }

@@ -200,8 +200,9 @@ pub fn read(bytes: &[u8], path: &str, dir: &Path) -> Result<Raw, MeshError> {
     Ok(raw)
 }
 
-/// A warning for the first `usemtl` of each name that no `.mtl` material has (its faces
-/// take the record's TEXTURE and MATERIAL), with its line.
+/// A warning for the first `usemtl` of each name that no `.mtl` material has, or that
+/// comes before every `mtllib` line (tobj looks the name up when it meets it): its faces
+/// take the record's TEXTURE and MATERIAL. Each with its line.
 fn undefined_materials(
     bytes: &[u8],
     materials: &[tobj::Material],
@@ -209,19 +210,29 @@ fn undefined_materials(
     warnings: &mut Vec<String>,
 ) {
     let mut named: Vec<&[u8]> = Vec::new();
+    let mut libraries = false;
     for (line, text) in obj_scan::lines(bytes) {
         let mut words = text
             .split(|b| b.is_ascii_whitespace())
             .filter(|w| !w.is_empty());
-        if words.next() != Some(b"usemtl".as_slice()) {
+        let keyword = words.next();
+        if keyword == Some(b"mtllib".as_slice()) {
+            libraries = true;
+        }
+        if keyword != Some(b"usemtl".as_slice()) {
             continue;
         }
         let Some(name) = words.next() else { continue };
         let known = materials.iter().any(|m| m.name.as_bytes() == name);
-        if !known && !named.contains(&name) {
+        if (!known || !libraries) && !named.contains(&name) {
             named.push(name);
+            let why = if known {
+                "comes before every mtllib line"
+            } else {
+                "names no material of the .mtl files"
+            };
             warnings.push(format!(
-                "{path}:{line}: usemtl '{}' names no material of the .mtl files: its faces take the record's TEXTURE and MATERIAL",
+                "{path}:{line}: usemtl '{}' {why}: its faces take the record's TEXTURE and MATERIAL",
                 String::from_utf8_lossy(name)
             ));
         }

@@ -57,6 +57,34 @@ impl Mesh {
         Some((u, v))
     }
 
+    /// The MATERIAL triangle `k` is drawn with: its file material's (`.mtl`) where the
+    /// file gives one for the face, else the record's `material`.
+    #[inline]
+    pub fn face_material<'a>(&'a self, k: u32, material: &'a Material) -> &'a Material {
+        match self.face_looks.get(k as usize) {
+            Some(&i) if i != RECORD_LOOK => &self.looks[i as usize].material,
+            _ => material,
+        }
+    }
+
+    /// Whether every triangle is drawn with the record's own TEXTURE and MATERIAL alone:
+    /// no file materials, no vertex colours, no `uv` image (what a shadow ray's filter
+    /// then needs is the record's, as for any object).
+    #[inline]
+    pub fn plain(&self, texture: &Texture) -> bool {
+        self.face_looks.is_empty()
+            && self.colors.is_empty()
+            && !matches!(texture, Texture::Image(image) if image.map == MapKind::Uv)
+    }
+
+    /// What a shadow ray crossing triangle `k` at `p` lets through (§2's Kt × colour), the
+    /// triangle drawn as `surface` draws it: its own material, `uv` image and vertex
+    /// colours.
+    pub fn filter(&self, k: u32, p: DVec3, texture: &Texture, material: &Material) -> DVec3 {
+        let face = self.surface(k, p, texture, material);
+        face.material.kt * face.texture.color_at(p)
+    }
+
     /// Triangle `k` hit at `p` as the object shading draws, for a mesh object of
     /// `texture` and `material`.
     pub fn surface(&self, k: u32, p: DVec3, texture: &Texture, material: &Material) -> Object {

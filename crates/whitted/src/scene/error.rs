@@ -28,7 +28,7 @@ pub enum SceneError {
     },
     /// A glTF file's refusal (it names the file and the JSON path).
     #[error(transparent)]
-    Gltf(crate::gltf::GltfError),
+    Gltf(crate::gltf::error::GltfError),
 }
 
 impl SceneError {

@@ -1,7 +1,7 @@
 //! A scene as Scene.txt describes it (report III.1, SPEC §1) or an NFF file does (SPEC
-//! §17, `nff`), and loading one: `Scene::load` reads a `*.nff` with the NFF reader and
-//! anything else as a Scene.txt. Both produce the same `Scene`; the tracer never learns
-//! which format it came from.
+//! §17, `nff`), and parsing one. `Scene::load` (in `crate::load`, above this module and
+//! the glTF reader) picks the reader by the file's extension. Every reader produces the
+//! same `Scene`; the tracer never learns which format it came from.
 //!
 //! ```text
 //! 640 480                 # ResX ResY
@@ -18,7 +18,7 @@
 //! 4 marble); MATERIAL is `Kd Kr Kt Ior BumpType BumpValue`. Cylinders are
 //! `Ax Ay Az Px Py Pz Radius TEXTURE MATERIAL`, infinite, with an axis of any direction.
 
-mod decode;
+pub(crate) mod decode;
 mod error;
 pub mod ext;
 mod lexer;
@@ -34,7 +34,6 @@ use crate::fog::Fog;
 use crate::lights::PointLight;
 use crate::object::Object;
 use glam::DVec3;
-use std::path::Path;
 
 pub use crate::limits::{MAX_COUNT, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
 pub use spec::{direction, ShapeSpec};
@@ -86,58 +85,13 @@ pub struct Scene {
     pub linear: bool,
     /// The glTF file this scene was posed from, if any (what an animation poses again
     /// at every frame).
-    pub model: Option<crate::gltf::Model>,
+    pub model: Option<crate::gltf::model::Model>,
 }
 
 impl Scene {
     /// Parses Scene.txt source; `file` is the name errors carry.
     pub fn parse(src: &str, file: &str) -> Result<Scene, SceneError> {
         parser::parse(src, file)
-    }
-
-    /// Reads and parses a scene file.
-    pub fn load(path: &Path) -> Result<Scene, SceneError> {
-        Scene::load_with_bytes(path).map(|(scene, _)| scene)
-    }
-
-    /// Reads and parses a scene file, returning its bytes too (to fingerprint exactly
-    /// what was parsed).
-    pub fn load_with_bytes(path: &Path) -> Result<(Scene, Vec<u8>), SceneError> {
-        let name = path.display().to_string();
-        let limit = crate::limits::MAX_SCENE_BYTES;
-        let read = crate::input::read_regular(path, limit, "scene");
-        let bytes = read.map_err(|source| SceneError::Io {
-            path: name.clone(),
-            source,
-        })?;
-        if crate::gltf::is_gltf(path) {
-            let options = crate::gltf::Options::default();
-            let scene = crate::gltf::load(path, &bytes, options).map_err(SceneError::Gltf)?;
-            return Ok((scene, bytes));
-        }
-        let text = decode::decode(&bytes, &name)?;
-        let scene = if nff::is_nff(path) {
-            nff::parse(text, &name)?
-        } else {
-            Scene::parse(text, &name)?
-        };
-        Ok((scene, bytes))
-    }
-
-    /// The same glTF scene seen through its camera named `name` (`raytrace --camera`, a
-    /// manifest's `[camera] name`); a refusal for a scene of another format, or a name
-    /// the file does not have (with the names it has).
-    pub fn through_camera(&self, name: &str) -> Result<Scene, String> {
-        let Some(model) = &self.model else {
-            return Err(format!(
-                "a camera is picked by name in a glTF scene only; `{name}` cannot be looked for in a Scene.txt or NFF file"
-            ));
-        };
-        let (t, playing, puts) = model.posed.clone().unwrap_or_default();
-        let model = model.through(Some(name.to_string()));
-        model
-            .scene_at(t, &playing, &puts)
-            .map_err(|e| e.to_string())
     }
 
     /// The objects' names, in order: `KIND N`, N counted from 1 per kind in file order
