@@ -61,6 +61,9 @@ fn run(args: Args) -> anyhow::Result<()> {
         if let Some(w) = job.non_square() {
             eprintln!("raytrace: warning: {w}");
         }
+        if let Some(w) = job.aspect_warning() {
+            eprintln!("raytrace: warning: {w}");
+        }
         for w in job.mesh_warnings() {
             eprintln!("raytrace: warning: {w}");
         }

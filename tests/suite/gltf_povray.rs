@@ -28,6 +28,7 @@ use base64::Engine as _;
 use glam::DVec3;
 use std::path::Path;
 use whitted::lights::punctual::Shape as LightShape;
+use whitted::mesh::extra::{AlphaMode, Seen};
 use whitted::object::Highlight;
 use whitted::scene::ext::LightKind;
 use whitted::shapes::Shape;
@@ -130,7 +131,26 @@ fn mesh2(scene: &Scene, k: usize, gltf: &Path, dir: &Path) -> String {
             list(&mesh.normals)
         );
     }
+    // Coverage: BLEND is POV-Ray's `transmit` (unfiltered, the ray unbent), from the
+    // factor (a uniform colour) or the PNG's alpha channel (which POV-Ray's image_map
+    // takes as transmit); MASK leaves its masked triangles out (the file gives each
+    // triangle one alpha).
+    let extra = mesh.extra.as_deref();
+    let blend = extra.filter(|x| x.mode == AlphaMode::Blend);
+    if let Some(x) = extra {
+        assert!(
+            x.vertex.is_empty() && x.emissive.is_none(),
+            "no vertex alpha here"
+        );
+    }
     let pigment = match &obj.texture {
+        Texture::Uniform(c) if blend.is_some() => {
+            let t = 1.0 - blend.map_or(1.0, |x| x.factor);
+            format!(
+                "pigment {{ rgbt <{:.9}, {:.9}, {:.9}, {t:.9}> }}",
+                c.x, c.y, c.z
+            )
+        }
         Texture::Uniform(c) => format!("pigment {{ {} }}", rgb(*c)),
         Texture::Image(image) => {
             assert_eq!(image.map, MapKind::Uv);
@@ -155,7 +175,12 @@ fn mesh2(scene: &Scene, k: usize, gltf: &Path, dir: &Path) -> String {
         }
         other => panic!("no POV-Ray twin for {other:?}"),
     };
-    let tris = mesh.triangles.iter().map(|[a, b, c]| {
+    let shown = |k: usize| {
+        let [a, b, c] = mesh.corners(k as u32);
+        mesh.seen(k as u32, (a + b + c) / 3.0) != Seen::Skip
+    };
+    let kept = (0..mesh.triangles.len()).filter(|&k| shown(k));
+    let tris = kept.map(|k| mesh.triangles[k]).map(|[a, b, c]| {
         if mesh.colors.is_empty() {
             format!("<{a}, {b}, {c}>")
         } else {
@@ -305,4 +330,21 @@ fn uvs_and_texture_match_uv_mapping() {
     // the file places the camera and with the eye turned to see three faces.
     assert_close(compare("BoxTextured.gltf", "textured", None));
     assert_close(compare("BoxTextured.gltf", "textured-turned", Some(TURN)));
+}
+
+#[test]
+fn blend_is_transmit_and_mask_leaves_its_texels_out() {
+    // Three quads before a wall, over a floor, under a directional light: BLEND at the
+    // factor's alpha 0.5 (POV-Ray: transmit 0.5), BLEND by a texture's alpha 1, 0.75,
+    // 0.5, 0.25 (POV-Ray: the PNG's alpha as transmit) and MASK by a checker of alpha 0
+    // and 1 texels, one per cell of its 4 × 4 grid (POV-Ray: the masked cells absent).
+    // Their shadows on the floor are grey (1 − α) and holed, as POV-Ray's.
+    let gltf = shipped::root().join("tests/data/gltf/generated/alpha_modes.gltf");
+    let scene = Scene::load(&gltf).unwrap();
+    let modes: Vec<_> = (scene.meshes.iter())
+        .map(|m| m.extra.as_ref().map(|x| x.mode))
+        .collect();
+    let want = [AlphaMode::Blend, AlphaMode::Blend, AlphaMode::Mask(0.5)];
+    assert_eq!(modes, [want.map(Some).to_vec(), vec![None, None]].concat());
+    assert_close(compare("generated/alpha_modes.gltf", "alpha", None));
 }

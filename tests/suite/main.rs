@@ -51,6 +51,7 @@ mod farm_slurm;
 mod focus;
 mod frame_cli;
 mod frame_specs;
+mod gltf_alpha;
 mod gltf_cli;
 mod gltf_povray;
 mod gltf_walker;

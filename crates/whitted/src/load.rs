@@ -1,7 +1,8 @@
 //! Reading a scene file of any of the three formats, one door above the readers: the
 //! file's extension picks glTF (`.gltf`, `.glb`: `crate::gltf`), NFF (`.nff`:
 //! `scene::nff`) or Scene.txt (anything else: `scene::parser`); and a glTF scene seen
-//! again through another of its cameras. It sits above `scene` and `gltf`, which build
+//! again through another of its cameras, and the warning for a picture of another shape
+//! than its camera's. It sits above `scene` and `gltf`, which build
 //! `Scene`s, so that neither imports the other's reader.
 
 use crate::gltf;
@@ -54,5 +55,13 @@ impl Scene {
         model
             .scene_at(t, &playing, &puts)
             .map_err(|e| e.to_string())
+    }
+
+    /// The warning for a picture of `size` of a glTF scene whose camera's `aspectRatio`
+    /// is another shape (`gltf::view::aspect_warning`); `None` for any other scene.
+    pub fn aspect_warning(&self, size: (u32, u32)) -> Option<String> {
+        let model = self.model.as_ref()?;
+        let name = model.options.camera.as_deref();
+        gltf::view::aspect_warning(&model.rig, name, size)
     }
 }

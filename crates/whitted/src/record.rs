@@ -29,6 +29,15 @@ pub trait Record {
     fn fog(&mut self, _f: f64) {}
     /// The ray hit nothing and sees the scene's background colour `c` (before fog).
     fn background(&mut self, _c: Color) {}
+    /// The first surface the ray sees covers α of it (a glTF BLEND material): the terms
+    /// heard next, fog included, are that surface's, and weigh α.
+    fn cover(&mut self, _alpha: f64) {}
+    /// What the ray sees behind a surface that covers part of it, already weighted
+    /// (1 − α) and fogged: heard after that surface's terms.
+    fn behind(&mut self, _c: Color) {}
+    /// A scene in linear light: the sample's colour `linear`, as its terms sum to it, is
+    /// stored as the display value `shown` (each channel sRGB-encoded).
+    fn encoded(&mut self, _linear: Color, _shown: Color) {}
 }
 
 /// The recorder of the beauty-only path: zero-sized, hears nothing.

@@ -56,10 +56,15 @@ pub fn announce(anim: &Animation, frames: usize, raw: bool) {
     }
 }
 
-/// Before frames whose pixels are not square, that warning (`Animation::non_square`);
-/// and the scene's mesh warnings (`Animation::mesh_warnings`), as `raytrace` prints them.
+/// Before frames whose pixels are not square, that warning (`Animation::non_square`), and
+/// before frames of another shape than a glTF camera's `aspectRatio` that one; and the
+/// scene's mesh warnings (`Animation::mesh_warnings`), as `raytrace` prints them.
 pub fn warn_if_non_square(anim: &Animation) {
     if let Some(w) = anim.non_square() {
+        eprintln!("animate: warning: {w}");
+    }
+    let base = &anim.timeline.base;
+    if let Some(w) = base.aspect_warning((anim.width, anim.height)) {
         eprintln!("animate: warning: {w}");
     }
     for w in anim.mesh_warnings() {

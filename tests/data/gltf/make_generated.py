@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Generate small glTF 2.0 test files for the glTF reader.
 
-Pure standard library (json, struct, base64, math, os). Run from anywhere:
+Pure standard library (json, struct, base64, math, os, zlib). Run from anywhere:
 
     python3 tests/data/gltf/make_generated.py
 
@@ -16,6 +16,15 @@ Writes, next to this script:
                                    KHR_lights_punctual directional light (tests/suite/gltf_povray)
     generated/two_primitives.glb   binary GLB: TRIANGLE_STRIP + TRIANGLE_FAN primitives,
                                    duplicate node names, a mirrored (negative scale) node
+    generated/alpha_modes.gltf     BLEND (factor alpha; texture alpha), MASK (a checker of
+                                   alpha 0/1 texels, one cell of the quad each) before a
+                                   floor and a wall, a directional light casting their
+                                   shadows (tests/suite/gltf_povray)
+    generated/alpha_blend.gltf     three quads: BLEND at alpha 1, BLEND and MASK (cutoff
+                                   0.3) at factor 0.8 x texture (1 | 0.2) x COLOR_0 0.5
+    generated/emissive.gltf        an emissiveTexture read on TEXCOORD_1 (mirrored from
+                                   TEXCOORD_0) with emissive_strength 2, and a lit quad
+                                   with an emissiveFactor alone
     bad/*.gltf                     hostile files, each with exactly one intended fault
 
 Output is deterministic: running the script twice gives identical bytes.
@@ -26,6 +35,7 @@ import json
 import math
 import os
 import struct
+import zlib
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 GEN_DIR = os.path.join(HERE, "generated")
@@ -351,6 +361,215 @@ def make_smooth_sphere():
     write_text(os.path.join(GEN_DIR, "smooth_sphere.gltf"), dump_json(doc))
 
 
+# ---------------------------------------------------------------- alpha and emission
+
+def png_rgba(rows):
+    """A PNG (8-bit RGBA, no filter) of `rows`: lists of (r, g, b, a) bytes, top row first."""
+    h, w = len(rows), len(rows[0])
+    raw = b"".join(b"\x00" + bytes(c for px in row for c in px) for row in rows)
+
+    def chunk(tag, data):
+        return struct.pack(">I", len(data)) + tag + data + struct.pack(">I", zlib.crc32(tag + data))
+
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 6, 0, 0, 0))
+            + chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b""))
+
+
+def png_uri(rows):
+    return "data:image/png;base64," + base64.b64encode(png_rgba(rows)).decode("ascii")
+
+
+def grid_quad(x0, x1, y0, y1, z, n, mirror_u1=False):
+    """An n x n grid of cells over x0..x1, y0..y1 at z, facing +z, each cell with its own
+    four vertices and TEXCOORD_0 spanning exactly its texel of an n x n image (v down
+    from the top, glTF's way). Returns (pos, nrm, uv0, uv1, idx); uv1 is uv0 with u
+    mirrored (1 - u) when `mirror_u1`."""
+    pos, nrm, uv0, uv1, idx = [], [], [], [], []
+    for j in range(n):          # rows from the top
+        for i in range(n):      # columns from the left
+            base = len(pos) // 3
+            for (a, b) in ((0, 1), (1, 1), (1, 0), (0, 0)):  # bl, br, tr, tl in cell units
+                u, v = (i + a) / n, (j + b) / n
+                pos += [x0 + u * (x1 - x0), y1 - v * (y1 - y0), z]
+                nrm += [0.0, 0.0, 1.0]
+                uv0 += [u, v]
+                uv1 += [1.0 - u if mirror_u1 else u, v]
+            idx += [base, base + 1, base + 2, base, base + 2, base + 3]
+    return pos, nrm, uv0, uv1, idx
+
+
+def quad_mesh(b, name, x0, x1, y0, y1, z, n, material, colors=None, mirror_u1=False):
+    """A grid quad as a mesh of `b`'s accessors (TEXCOORD_1 only when mirrored; COLOR_0
+    a VEC4 per vertex when `colors` gives one RGBA for all)."""
+    pos, nrm, uv0, uv1, idx = grid_quad(x0, x1, y0, y1, z, n, mirror_u1)
+    attrs = {
+        "POSITION": b.accessor(pos, FLOAT, "VEC3", ARRAY_BUFFER, minmax=True),
+        "NORMAL": b.accessor(nrm, FLOAT, "VEC3", ARRAY_BUFFER),
+        "TEXCOORD_0": b.accessor(uv0, FLOAT, "VEC2", ARRAY_BUFFER),
+    }
+    if mirror_u1:
+        attrs["TEXCOORD_1"] = b.accessor(uv1, FLOAT, "VEC2", ARRAY_BUFFER)
+    if colors is not None:
+        attrs["COLOR_0"] = b.accessor(list(colors) * (len(pos) // 3), FLOAT, "VEC4", ARRAY_BUFFER)
+    a_idx = b.accessor(idx, UNSIGNED_SHORT, "SCALAR", ELEMENT_ARRAY_BUFFER)
+    return {"name": name, "primitives": [{
+        "attributes": attrs, "indices": a_idx, "material": material, "mode": TRIANGLES}]}
+
+
+def matte(name, rgba, **extra):
+    m = {"name": name, "pbrMetallicRoughness": {
+        "baseColorFactor": rgba, "metallicFactor": 0.0, "roughnessFactor": 1.0}}
+    m.update(extra)
+    return m
+
+
+NEAREST_CLAMP = {"magFilter": 9728, "minFilter": 9728, "wrapS": 33071, "wrapT": 33071}
+
+
+def make_alpha_modes():
+    b = Builder()
+    # Checker of alpha 255 / 0 over 4 x 4 texels; the opaque ones green or yellow.
+    checker = [[((40, 200, 70, 255) if i % 2 == 0 else (230, 200, 40, 255)) if (i + j) % 2 == 0
+                else (255, 0, 255, 0) for i in range(4)] for j in range(4)]
+    # 2 x 2 texels of alpha 1, 0.75 / 0.5, 0.25 (bytes 255, 191, 128, 64), all one blue.
+    graded = [[(60, 90, 220, 255), (60, 90, 220, 191)], [(60, 90, 220, 128), (60, 90, 220, 64)]]
+    meshes = [
+        quad_mesh(b, "Veil", -2.8, -1.2, -0.4, 1.2, 0.0, 1, 0),
+        quad_mesh(b, "Glass", -0.8, 0.8, -0.4, 1.2, 0.0, 2, 1),
+        quad_mesh(b, "Lattice", 1.2, 2.8, -0.4, 1.2, 0.0, 4, 2),
+    ]
+    floor = [-4.0, -1.0, -3.0, -4.0, -1.0, 2.5, 4.0, -1.0, 2.5, 4.0, -1.0, -3.0]
+    wall = [-4.5, -1.0, -2.5, 4.5, -1.0, -2.5, 4.5, 3.0, -2.5, -4.5, 3.0, -2.5]
+    for name, pts, mat in (("Floor", floor, 3), ("Wall", wall, 4)):
+        a_p = b.accessor(pts, FLOAT, "VEC3", ARRAY_BUFFER, minmax=True)
+        a_i = b.accessor([0, 1, 2, 0, 2, 3], UNSIGNED_SHORT, "SCALAR", ELEMENT_ARRAY_BUFFER)
+        meshes.append({"name": name, "primitives": [{
+            "attributes": {"POSITION": a_p}, "indices": a_i, "material": mat, "mode": TRIANGLES}]})
+    # The light travels along d = (-0.35, -0.7, -0.6): from the upper right, in front.
+    d = [-0.35, -0.7, -0.6]
+    dn = math.sqrt(sum(c * c for c in d))
+    d = [c / dn for c in d]
+    sun_q = axis_angle([d[1], -d[0], 0.0], math.acos(-d[2]))
+    cam_q = axis_angle([1.0, 0.0, 0.0], math.radians(-6.0))
+    doc = {
+        "asset": asset(),
+        "extensionsUsed": ["KHR_lights_punctual"],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"name": "Sun", "type": "directional", "color": [1.0, 1.0, 1.0], "intensity": 1.5},
+        ]}},
+        "scene": 0,
+        "scenes": [{"name": "Scene", "nodes": list(range(7))}],
+        "nodes": [
+            {"name": "Veil", "mesh": 0},
+            {"name": "Glass", "mesh": 1},
+            {"name": "Lattice", "mesh": 2},
+            {"name": "Floor", "mesh": 3},
+            {"name": "Wall", "mesh": 4},
+            {"name": "Cam", "camera": 0, "translation": [0.0, 0.8, 6.5], "rotation": cam_q},
+            {"name": "Sun", "rotation": sun_q, "extensions": {"KHR_lights_punctual": {"light": 0}}},
+        ],
+        "cameras": [{"name": "Cam", "type": "perspective", "perspective": {
+            "yfov": 0.75, "aspectRatio": 4.0 / 3.0, "znear": 0.1, "zfar": 100.0}}],
+        "meshes": meshes,
+        "materials": [
+            matte("Veil", [0.9, 0.2, 0.1, 0.5], alphaMode="BLEND", doubleSided=True),
+            matte("Glass", [1.0, 1.0, 1.0, 1.0], alphaMode="BLEND", doubleSided=True,
+                  pbrMetallicRoughness={"baseColorTexture": {"index": 1}, "metallicFactor": 0.0,
+                                        "roughnessFactor": 1.0}),
+            matte("Lattice", [1.0, 1.0, 1.0, 1.0], alphaMode="MASK", doubleSided=True,
+                  pbrMetallicRoughness={"baseColorTexture": {"index": 0}, "metallicFactor": 0.0,
+                                        "roughnessFactor": 1.0}),
+            matte("Floor", [0.6, 0.6, 0.6, 1.0]),
+            matte("Wall", [0.3, 0.5, 0.8, 1.0]),
+        ],
+        "textures": [{"sampler": 0, "source": 0}, {"sampler": 0, "source": 1}],
+        "samplers": [NEAREST_CLAMP],
+        "images": [{"uri": png_uri(checker)}, {"uri": png_uri(graded)}],
+        "accessors": b.accessors,
+        "bufferViews": b.buffer_views,
+        "buffers": [{"byteLength": len(b.padded_data()), "uri": b.data_uri()}],
+    }
+    write_text(os.path.join(GEN_DIR, "alpha_modes.gltf"), dump_json(doc))
+
+
+def make_alpha_blend():
+    b = Builder()
+    # 2 x 1 white texels of alpha 1 and 0.2 (byte 51).
+    texture = [[(255, 255, 255, 255), (255, 255, 255, 51)]]
+    half = [1.0, 1.0, 1.0, 0.5]
+    meshes = [
+        quad_mesh(b, "Whole", -2.5, -1.0, -0.75, 0.75, 0.0, 1, 0),
+        quad_mesh(b, "Blend", -0.75, 0.75, -0.75, 0.75, 0.0, 1, 1, colors=half),
+        quad_mesh(b, "Mask", 1.0, 2.5, -0.75, 0.75, 0.0, 1, 2, colors=half),
+    ]
+    textured = {"baseColorTexture": {"index": 0}, "baseColorFactor": [0.8, 0.8, 0.8, 0.8],
+                "metallicFactor": 0.0, "roughnessFactor": 1.0}
+    doc = {
+        "asset": asset(),
+        "scene": 0,
+        "scenes": [{"name": "Scene", "nodes": [0, 1, 2, 3]}],
+        "nodes": [
+            {"name": "Whole", "mesh": 0},
+            {"name": "Blend", "mesh": 1},
+            {"name": "Mask", "mesh": 2},
+            {"name": "Cam", "camera": 0, "translation": [0.0, 0.0, 4.0]},
+        ],
+        "cameras": [{"name": "Cam", "type": "perspective", "perspective": {
+            "yfov": 0.7, "aspectRatio": 2.0, "znear": 0.1, "zfar": 100.0}}],
+        "meshes": meshes,
+        "materials": [
+            matte("Whole", [0.8, 0.8, 0.8, 1.0], alphaMode="BLEND"),
+            matte("Blend", [0.8, 0.8, 0.8, 0.8], alphaMode="BLEND", pbrMetallicRoughness=textured),
+            matte("Mask", [0.8, 0.8, 0.8, 0.8], alphaMode="MASK", alphaCutoff=0.3,
+                  pbrMetallicRoughness=textured),
+        ],
+        "textures": [{"sampler": 0, "source": 0}],
+        "samplers": [NEAREST_CLAMP],
+        "images": [{"uri": png_uri(texture)}],
+        "accessors": b.accessors,
+        "bufferViews": b.buffer_views,
+        "buffers": [{"byteLength": len(b.padded_data()), "uri": b.data_uri()}],
+    }
+    write_text(os.path.join(GEN_DIR, "alpha_blend.gltf"), dump_json(doc))
+
+
+def make_emissive():
+    b = Builder()
+    # 2 x 1 sRGB texels: white, and (128, 64, 255).
+    texture = [[(255, 255, 255, 255), (128, 64, 255, 255)]]
+    meshes = [
+        quad_mesh(b, "Glow", -1.6, -0.1, -0.75, 0.75, 0.0, 1, 0, mirror_u1=True),
+        quad_mesh(b, "Lit", 0.1, 1.6, -0.75, 0.75, 0.0, 1, 1),
+    ]
+    doc = {
+        "asset": asset(),
+        "extensionsUsed": ["KHR_materials_emissive_strength"],
+        "scene": 0,
+        "scenes": [{"name": "Scene", "nodes": [0, 1, 2]}],
+        "nodes": [
+            {"name": "Glow", "mesh": 0},
+            {"name": "Lit", "mesh": 1},
+            {"name": "Cam", "camera": 0, "translation": [0.0, 0.0, 4.0]},
+        ],
+        "cameras": [{"name": "Cam", "type": "perspective", "perspective": {
+            "yfov": 0.7, "aspectRatio": 2.0, "znear": 0.1, "zfar": 100.0}}],
+        "meshes": meshes,
+        "materials": [
+            matte("Glow", [0.0, 0.0, 0.0, 1.0], emissiveFactor=[1.0, 0.5, 0.25],
+                  emissiveTexture={"index": 0, "texCoord": 1},
+                  extensions={"KHR_materials_emissive_strength": {"emissiveStrength": 2.0}}),
+            matte("Lit", [0.5, 0.5, 0.5, 1.0], emissiveFactor=[0.1, 0.2, 0.3]),
+        ],
+        "textures": [{"sampler": 0, "source": 0}],
+        "samplers": [NEAREST_CLAMP],
+        "images": [{"uri": png_uri(texture)}],
+        "accessors": b.accessors,
+        "bufferViews": b.buffer_views,
+        "buffers": [{"byteLength": len(b.padded_data()), "uri": b.data_uri()}],
+    }
+    write_text(os.path.join(GEN_DIR, "emissive.gltf"), dump_json(doc))
+
+
 # ---------------------------------------------------------------- c. two_primitives.glb
 
 def glb(doc, bin_data):
@@ -500,6 +719,9 @@ def main():
     make_interpolation()
     make_metal_rough()
     make_smooth_sphere()
+    make_alpha_modes()
+    make_alpha_blend()
+    make_emissive()
     make_two_primitives()
     make_bad()
     for d in (GEN_DIR, BAD_DIR):

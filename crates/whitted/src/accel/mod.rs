@@ -102,12 +102,14 @@ fn is_glass(o: &Object) -> bool {
 
 /// A mesh some of whose triangles shadow rays cross: the record's Kt > 0 where a
 /// triangle takes the record's material, a file material's (`.mtl` `d`) where it takes
-/// its own.
+/// its own; or a glTF mesh with coverage (MASK, BLEND), every triangle of which is
+/// crossed, each crossing letting through what its point's alpha lets (`Mesh::filter`).
 fn mesh_glass(o: &Object, mesh: &Mesh) -> bool {
     if mesh.face_looks.is_empty() {
-        return is_glass(o);
+        return is_glass(o) || mesh.has_coverage();
     }
-    (0..mesh.triangles.len() as u32).any(|k| mesh.face_material(k, &o.material).kt > 0.0)
+    let glass = |k| mesh.face_material(k, &o.material).kt > 0.0;
+    mesh.has_coverage() || (0..mesh.triangles.len() as u32).any(glass)
 }
 
 /// An object shadow rays may cross: Kt > 0, or a mesh with a triangle of Kt > 0.
@@ -209,11 +211,12 @@ impl Accel {
                     } else {
                         unique::triangles(mesh)
                     };
+                    let covered = mesh.has_coverage();
                     shapes.extend(parts.into_iter().map(|k| {
                         let kt = mesh.face_material(k, &o.material).kt;
                         ShapePrim {
-                            glass: kt > 0.0,
-                            opaque: kt <= 0.0,
+                            glass: kt > 0.0 || covered,
+                            opaque: kt <= 0.0 && !covered,
                             ..prim(k, m.id)
                         }
                     }));

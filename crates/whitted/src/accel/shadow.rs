@@ -58,6 +58,27 @@ impl Accel {
         self.shadow(objects, Some(light), p, to_light, dist)
     }
 
+    /// `transmission` for a shadow ray of an extension light, `key` naming the light and
+    /// its point (`lights::ext_key`): the same answer, through the thread's shadow cache
+    /// (its slots past the report's lights').
+    #[inline]
+    pub fn transmission_keyed(
+        &self,
+        objects: &[Object],
+        key: usize,
+        p: DVec3,
+        to_light: DVec3,
+        dist: f64,
+    ) -> Color {
+        self.shadow(
+            objects,
+            Some(shadow_cache::ext_slot(key)),
+            p,
+            to_light,
+            dist,
+        )
+    }
+
     #[inline(always)]
     fn shadow(
         &self,

@@ -1,5 +1,6 @@
 //! The shadow cache (Haines and Greenberg's "last blocker", 1986): for each thread and
-//! each of the scene's point lights, the opaque primitive that stopped the thread's last
+//! each of the scene's point lights (and each point of an extension light: an area
+//! light's grid point has its own), the opaque primitive that stopped the thread's last
 //! shadow ray towards that light. The next shadow ray to the same light tests it first,
 //! and when it blocks again the walk through the tree is skipped.
 //!
@@ -19,8 +20,19 @@ use super::{Prim, ShapePrim};
 use std::cell::Cell;
 use std::sync::atomic::{AtomicU64, Ordering};
 
-/// Lights with a slot of their own; light k uses slot k mod `SLOTS`.
-const SLOTS: usize = 8;
+/// Slots per thread: the report's point light k uses slot k mod `SLOTS` (one each for
+/// the first `REPORT_SLOTS`), an extension light's ray of key j (`lights::ext_key`: the
+/// light and its point on an area light's grid) slot `ext_slot(j)`.
+const SLOTS: usize = 64;
+
+/// The slots the report's first point lights have to themselves.
+const REPORT_SLOTS: usize = 8;
+
+/// The slot of an extension light's shadow rays of key `key`.
+#[inline(always)]
+pub(super) fn ext_slot(key: usize) -> usize {
+    REPORT_SLOTS + key % (SLOTS - REPORT_SLOTS)
+}
 
 /// The primitive that blocked: a sphere of the spheres' tree, or a primitive of the
 /// shapes' tree.
@@ -110,6 +122,14 @@ mod tests {
     }
 
     #[test]
+    fn extension_lights_have_slots_past_the_reports() {
+        // Light 2's grid point 5: key 2 × 4096 + 5 = 8197; 8197 mod 56 = 21, slot 29.
+        assert_eq!(crate::lights::ext_key(2, 5), 8197);
+        assert_eq!(ext_slot(8197), 29);
+        assert!((0..10_000).all(|key| (REPORT_SLOTS..SLOTS).contains(&ext_slot(key))));
+    }
+
+    #[test]
     fn each_thread_has_its_own_cache() {
         let a = new_id();
         put(a, 0, Blocker::Sphere(sphere_prim(1)));
@@ -149,6 +169,11 @@ mod tests {
                 let want = shading::transmission(objects, p, to, dist);
                 let got = accel.transmission_to(objects, light, p, to, dist);
                 assert_eq!(bits(got), bits(want), "{k} {light} {p:?}");
+                // An extension light's ray (an area light's grid point): its own slot.
+                let key = crate::lights::ext_key(light, k % 3);
+                tried += !matches!(get(accel.id, ext_slot(key)), Blocker::None) as usize;
+                let keyed = accel.transmission_keyed(objects, key, p, to, dist);
+                assert_eq!(bits(keyed), bits(want), "{k} {light} keyed {p:?}");
                 shadowed += (want == Color::ZERO) as usize;
             }
         }

@@ -2,18 +2,20 @@
 //! depth-first order of the scene's node tree, one object numbered `gltf N` and named by
 //! its node (`Wheel`, `Wheel#2` for the node's second primitive; a node without a name,
 //! or with a name used before, is known by its number); its vertices placed by `pose`,
-//! flat when the primitive has no normals; each light node a `KHR_lights_punctual`
-//! light; the view from `view`. The scene is shaded in linear light.
+//! flat when the primitive has no normals, its coverage and emissive texture in the
+//! mesh's `Extra`; each light node a `KHR_lights_punctual` light; the view from `view`.
+//! The scene is shaded in linear light.
 
 use super::error::{at, GltfError};
 use super::model::{Model, Options};
 use super::pose::{self, Pose, Put};
-use super::rig::{LightType, Rig};
+use super::rig::{LightType, LookExtra, Prim, Rig};
 use super::view::{self, View};
 use crate::base::Color;
 use crate::fileloc::FileLoc;
 use crate::fog::Fog;
 use crate::lights::punctual::{Shape as LightShape, EXPOSURE};
+use crate::mesh::extra::{AlphaMode, Emissive, Extra};
 use crate::mesh::{Mesh, Raw, Shading};
 use crate::object::Object;
 use crate::scene::ext::{ExtItem, ExtLight, ExtObject, ExtShape, Extension, LightKind, Modifiers};
@@ -129,10 +131,11 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
                 ));
             }
             let flat = normals.is_empty() || unusable;
+            let looks = &rig.extras[prim.look];
             let raw = Raw {
                 positions,
                 normals,
-                uvs: prim.uvs.clone(),
+                uvs: prim.uvs[looks.base_set].clone(),
                 colors: prim.colors.clone(),
                 triangles,
                 ..Raw::default()
@@ -156,9 +159,11 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
                 hi: mhi,
             };
             let single_sided = !rig.double_sided[prim.look];
+            let extra = extra_of(looks, &look.texture, prim, mesh.vertices.len());
             scene.meshes.push(Arc::new(Mesh {
                 source: rig.source,
                 single_sided,
+                extra,
                 ..mesh
             }));
             let name = base.as_ref().map(|b| {
@@ -273,4 +278,36 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
     (scene.width, scene.height) = view.size;
     scene.t_min = crate::scene::nff::epsilon(scene.eye, &scene.objects);
     Ok(scene)
+}
+
+/// What a primitive of `vertices` vertices drawn with the material `x` (its base colour
+/// `texture`) carries beyond its look: the coverage of a MASK or BLEND material (the
+/// texture's alpha channel, COLOR_0's alpha) and an emissive texture on its coordinate
+/// set; `None` for an opaque material without one.
+fn extra_of(x: &LookExtra, texture: &Texture, prim: &Prim, vertices: usize) -> Option<Arc<Extra>> {
+    let coverage = x.mode != AlphaMode::Opaque;
+    if !coverage && x.emissive.is_none() {
+        return None;
+    }
+    let texture = match texture {
+        Texture::Image(image) if coverage && image.pixels.has_alpha() => Some(Arc::clone(image)),
+        _ => None,
+    };
+    let vertex = if coverage && prim.alphas.len() == vertices {
+        prim.alphas.clone()
+    } else {
+        Vec::new()
+    };
+    let emissive = x.emissive.as_ref().map(|(texture, factor, set)| Emissive {
+        texture: Arc::clone(texture),
+        factor: *factor,
+        uvs: prim.uvs[*set].clone(),
+    });
+    Some(Arc::new(Extra {
+        mode: x.mode,
+        factor: x.factor,
+        texture,
+        vertex,
+        emissive,
+    }))
 }

@@ -11,10 +11,14 @@
 //!   equivalence), capped at 1000, so rougher surfaces have wider, weaker highlights;
 //! - `KHR_materials_transmission` is Kt; thin-walled (ior 1: rays pass unbent) unless
 //!   `KHR_materials_volume` gives a thickness, then `KHR_materials_ior` (1.5 without);
-//! - `emissiveFactor` (× `emissiveStrength`) is added unlit.
+//! - `emissiveFactor` (× `emissiveStrength`) × `emissiveTexture` is added unlit (the
+//!   factor alone in `Pbr::emission`; with a texture, by the mesh's `Extra` at the hit);
+//! - `alphaMode`, `alphaCutoff` and the base colour's alpha go to the mesh's `Extra`
+//!   (`mesh::extra`: MASK and BLEND).
 //!
-//! Colour textures are decoded from sRGB to linear light; the base colour factor is
-//! folded into the pixels; the sampler's wrap modes and magnification filter are kept.
+//! Colour textures are decoded from sRGB to linear light (`texture`); the base colour
+//! factor is folded into the pixels; the sampler's wrap modes and magnification filter
+//! are kept; a texture on TEXCOORD_1 is read on it.
 
 use crate::base::Color;
 use crate::bump::Bump;
@@ -60,23 +64,35 @@ pub fn terms(
     (material, pbr)
 }
 
-/// Reading the file's materials and images (with the `gltf` crate).
+/// Reading the file's materials (with the `gltf` crate; images in `texture`).
 #[cfg(feature = "gltf")]
 mod reading {
     use super::terms;
-    use crate::base::srgb::decode;
     use crate::base::Color;
     use crate::gltf::accessor::Buffers;
-    use crate::gltf::error::{at, GltfError};
-    use crate::gltf::rig::Rig;
+    use crate::gltf::error::GltfError;
+    use crate::gltf::rig::{LookExtra, Rig};
     use crate::gltf::source::{Named, Origin};
+    use crate::gltf::texture::Images;
+    use crate::mesh::extra::AlphaMode;
     use crate::mesh::Look;
-    use crate::texture::{ImageTexture, Interp, MapKind, Pixels, Texture, Wrap};
+    use crate::texture::Texture;
     use glam::DVec3;
-    use std::sync::Arc;
 
     fn v3(a: [f32; 3]) -> DVec3 {
         DVec3::new(f64::from(a[0]), f64::from(a[1]), f64::from(a[2]))
+    }
+
+    /// The coordinate set a texture is read on: its `texCoord` when the tracer reads
+    /// that set (0 or 1), else 0 with a warning.
+    fn set(rig: &mut Rig, file: &str, tex_coord: u32) -> usize {
+        if tex_coord > 1 {
+            rig.warn(format!(
+                "{file}: textures on TEXCOORD_{tex_coord} are read on TEXCOORD_0"
+            ));
+            return 0;
+        }
+        tex_coord as usize
     }
 
     /// Every material of `doc` into `rig.looks`, then the default material.
@@ -87,11 +103,10 @@ mod reading {
         named: &mut Named,
         rig: &mut Rig,
     ) -> Result<(), GltfError> {
-        let mut images: Vec<Option<Arc<Pixels>>> = vec![None; doc.images().len()];
-        let mut used = 0u64;
+        let mut images = Images::new(doc, b, origin);
         for mat in doc.materials() {
             let pbr = mat.pbr_metallic_roughness();
-            let [r, g, bl, _] = pbr.base_color_factor().map(f64::from);
+            let [r, g, bl, alpha] = pbr.base_color_factor().map(f64::from);
             let base = DVec3::new(r, g, bl);
             let kt = mat
                 .transmission()
@@ -111,48 +126,32 @@ mod reading {
                 rig.looks.len() as u32,
             );
             let strength = mat.emissive_strength().map_or(1.0, f64::from);
-            extra.emission = v3(mat.emissive_factor()) * strength;
+            let emission = v3(mat.emissive_factor()) * strength;
+            let mut look = LookExtra {
+                mode: match mat.alpha_mode() {
+                    gltf::material::AlphaMode::Opaque => AlphaMode::Opaque,
+                    gltf::material::AlphaMode::Mask => {
+                        AlphaMode::Mask(mat.alpha_cutoff().map_or(0.5, f64::from))
+                    }
+                    gltf::material::AlphaMode::Blend => AlphaMode::Blend,
+                },
+                factor: alpha,
+                ..LookExtra::default()
+            };
+            // An emissive texture is added where the hit's coordinates are known (the
+            // mesh's `Extra`); the factor alone, in every hit's shading.
+            match mat.emissive_texture() {
+                Some(info) if emission != Color::ZERO => {
+                    let set = set(rig, origin.file, info.tex_coord());
+                    let tex = images.texture(info.texture(), Color::ONE, named)?;
+                    look.emissive = Some((tex, emission, set));
+                }
+                _ => extra.emission = emission,
+            }
             let texture = match pbr.base_color_texture() {
                 Some(info) => {
-                    if info.tex_coord() != 0 {
-                        rig.warn(format!(
-                            "{}: textures on TEXCOORD_{} are read on TEXCOORD_0",
-                            origin.file,
-                            info.tex_coord()
-                        ));
-                    }
-                    let tex = info.texture();
-                    let index = tex.source().index();
-                    let pixels = match &images[index] {
-                        Some(p) => Arc::clone(p),
-                        None => {
-                            let p = Arc::new(image(doc, b, origin, named, index, used)?);
-                            used += p.count();
-                            images[index] = Some(Arc::clone(&p));
-                            p
-                        }
-                    };
-                    let sampler = tex.sampler();
-                    let wrap = |w: gltf::texture::WrappingMode| match w {
-                        gltf::texture::WrappingMode::ClampToEdge => Wrap::Clamp,
-                        gltf::texture::WrappingMode::MirroredRepeat => Wrap::Mirror,
-                        gltf::texture::WrappingMode::Repeat => Wrap::Repeat,
-                    };
-                    let f = base.as_vec3().to_array();
-                    let tinted = pixels
-                        .mapped(|p| [p[0] * f[0], p[1] * f[1], p[2] * f[2]])
-                        .wrapping([wrap(sampler.wrap_s()), wrap(sampler.wrap_t())]);
-                    let interp = match sampler.mag_filter() {
-                        Some(gltf::texture::MagFilter::Nearest) => Interp::Nearest,
-                        _ => Interp::Bilinear,
-                    };
-                    Texture::Image(Arc::new(ImageTexture {
-                        file: format!("images[{index}]"),
-                        map: MapKind::Uv,
-                        interp,
-                        size: 1.0,
-                        pixels: Arc::new(tinted),
-                    }))
+                    look.base_set = set(rig, origin.file, info.tex_coord());
+                    Texture::Image(images.texture(info.texture(), base, named)?)
                 }
                 None => Texture::Uniform(base),
             };
@@ -163,26 +162,16 @@ mod reading {
                 ),
                 (mat.normal_texture().is_some(), "normalTexture"),
                 (mat.occlusion_texture().is_some(), "occlusionTexture"),
-                (
-                    mat.emissive_texture().is_some(),
-                    "emissiveTexture (the factor alone is used)",
-                ),
             ];
             for (_, what) in unused.iter().filter(|(has, _)| *has) {
                 rig.warn(format!("{}: materials' {what} is not used", origin.file));
             }
-            if mat.alpha_mode() != gltf::material::AlphaMode::Opaque {
-                rig.warn(format!(
-                    "{}: alphaMode {:?} is drawn opaque",
-                    origin.file,
-                    mat.alpha_mode()
-                ));
-            }
             rig.looks.push(Look { texture, material });
             rig.pbr.push(extra);
             rig.double_sided.push(mat.double_sided());
+            rig.extras.push(look);
         }
-        // glTF's default material: metallic 1, roughness 1, white.
+        // glTF's default material: metallic 1, roughness 1, white, opaque.
         let (material, extra) = terms(Color::ONE, 1.0, 1.0, 0.0, 1.0, rig.looks.len() as u32);
         rig.looks.push(Look {
             texture: Texture::Uniform(Color::ONE),
@@ -190,44 +179,11 @@ mod reading {
         });
         rig.pbr.push(extra);
         rig.double_sided.push(false);
+        rig.extras.push(LookExtra {
+            factor: 1.0,
+            ..LookExtra::default()
+        });
         Ok(())
-    }
-
-    /// Image `index`'s pixels, decoded from sRGB to linear light.
-    fn image(
-        doc: &gltf::Document,
-        b: &Buffers,
-        origin: &Origin,
-        named: &mut Named,
-        index: usize,
-        used: u64,
-    ) -> Result<Pixels, GltfError> {
-        let path = format!("images[{index}]");
-        let Some(img) = doc.images().nth(index) else {
-            return Err(at(origin.file, path, "no such image"));
-        };
-        let bytes: Vec<u8> = match img.source() {
-            gltf::image::Source::Uri { uri, .. } => {
-                origin.uri(uri, &format!("{path}.uri"), named)?
-            }
-            gltf::image::Source::View { view, .. } => {
-                let data = &b.data[view.buffer().index()];
-                let end = view.offset().checked_add(view.length());
-                match end.filter(|&e| e <= data.len()) {
-                    Some(e) => data[view.offset()..e].to_vec(),
-                    None => {
-                        return Err(at(
-                            origin.file,
-                            format!("bufferViews[{}]", view.index()),
-                            "the image's view ends past its buffer",
-                        ))
-                    }
-                }
-            }
-        };
-        let pixels = crate::texture::from_bytes(&bytes, used)
-            .map_err(|why| at(origin.file, path, format!("cannot use the image: {why}")))?;
-        Ok(pixels.mapped(|p| p.map(|c| decode(f64::from(c)) as f32)))
     }
 }
 

@@ -2,8 +2,9 @@
 //! docs/gltf.md). A `.gltf` (JSON, with its buffers in files beside it or in data URIs)
 //! or `.glb` file is read by the `gltf` crate's document model, its bytes loaded by the
 //! tracer's own bounded readers (`source`, `accessor`), into a `Rig` (`read`): the node
-//! tree, the primitives in model space with their morph targets and skin weights, the
-//! materials on §2's terms (`material`), cameras, lights, skins and animations (`clip`).
+//! tree, the primitives in model space with their morph targets and skin weights
+//! (`prims`), the materials on §2's terms (`material`, their images in `texture`),
+//! cameras, lights, skins and animations (`clip`).
 //! `Model::scene_at` poses the rig at a time (`pose`: animation channels, morph targets,
 //! linear-blend skinning) and builds the tracer's `Scene` from it (`build`, `view`):
 //!
@@ -30,9 +31,13 @@ mod accessor;
 #[cfg(feature = "gltf")]
 mod animations;
 #[cfg(feature = "gltf")]
+mod prims;
+#[cfg(feature = "gltf")]
 mod read;
 #[cfg(feature = "gltf")]
 mod source;
+#[cfg(feature = "gltf")]
+mod texture;
 
 pub use build::load;
 pub use error::GltfError;

@@ -4,8 +4,12 @@
 //! and animations. Read once (`read`); `pose` and `build` make the scene of any time
 //! from it, so an animation's frames share everything that does not move.
 
+use crate::base::Color;
+use crate::mesh::extra::AlphaMode;
 use crate::mesh::Look;
+use crate::texture::ImageTexture;
 use std::path::PathBuf;
+use std::sync::Arc;
 
 /// The files a glTF file named, with their SHA-256, in the order they were read.
 pub type Named = Vec<(PathBuf, [u8; 32])>;
@@ -74,10 +78,13 @@ pub struct Prim {
     pub positions: Vec<DVec3>,
     /// NORMAL (empty: flat, as glTF requires).
     pub normals: Vec<DVec3>,
-    /// TEXCOORD_0, v already flipped to point up the image.
-    pub uvs: Vec<[f64; 2]>,
-    /// COLOR_0 (linear RGB; alpha left out).
+    /// TEXCOORD_0 and TEXCOORD_1, v already flipped to point up the image (each empty
+    /// when the primitive has no such set).
+    pub uvs: [Vec<[f64; 2]>; 2],
+    /// COLOR_0's RGB (linear).
     pub colors: Vec<DVec3>,
+    /// COLOR_0's alpha, when it has one (`VEC4`).
+    pub alphas: Vec<f32>,
     /// The triangles, strips and fans cut.
     pub triangles: Vec<[u32; 3]>,
     /// Index into `Rig::looks`.
@@ -90,6 +97,20 @@ pub struct Prim {
     pub weights: Vec<[f64; 4]>,
     /// The largest joint number of JOINTS_0 (checked against the node's skin).
     pub max_joint: u32,
+}
+
+/// What a material gives besides its TEXTURE, MATERIAL, tint and emission factor.
+#[derive(Clone, Debug, Default)]
+pub struct LookExtra {
+    /// `alphaMode` (with `alphaCutoff`).
+    pub mode: AlphaMode,
+    /// `baseColorFactor`'s alpha.
+    pub factor: f64,
+    /// The coordinate set (0 or 1) its base colour texture is read on.
+    pub base_set: usize,
+    /// `emissiveTexture` (linear colours), `emissiveFactor` × strength, and the
+    /// coordinate set (0 or 1) it is read on.
+    pub emissive: Option<(Arc<ImageTexture>, Color, usize)>,
 }
 
 /// A camera's projection.
@@ -180,6 +201,8 @@ pub struct Rig {
     pub pbr: Vec<crate::object::Pbr>,
     /// Per look: whether its back faces are drawn (`doubleSided`).
     pub double_sided: Vec<bool>,
+    /// Per look: its alpha mode, coordinate sets and emissive texture.
+    pub extras: Vec<LookExtra>,
     /// The cameras.
     pub cameras: Vec<CameraDef>,
     /// The lights.

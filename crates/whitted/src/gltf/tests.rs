@@ -229,3 +229,108 @@ fn a_joint_number_past_its_skin_is_refused() {
     );
     assert!(e.contains("joint 1 is past the 1 joints"), "{e}");
 }
+
+#[test]
+fn alpha_modes_cutoffs_and_vertex_alpha_are_read() {
+    use crate::mesh::extra::AlphaMode;
+    let m = model("generated/alpha_blend.gltf").unwrap();
+    let x = &m.rig.extras;
+    // Factors and the cutoff are f32 in the file.
+    assert_eq!((x[0].mode, x[0].factor), (AlphaMode::Blend, 1.0));
+    assert_eq!(
+        (x[1].mode, x[1].factor),
+        (AlphaMode::Blend, f64::from(0.8f32))
+    );
+    assert_eq!(x[2].mode, AlphaMode::Mask(f64::from(0.3f32)));
+    // The default material is opaque.
+    assert_eq!(x.last().unwrap().mode, AlphaMode::Opaque);
+    // COLOR_0 is RGBA: its alpha kept apart, its RGB the colour.
+    let prim = &m.rig.meshes[1][0];
+    assert_eq!(prim.alphas, [0.5; 4]);
+    assert_eq!(prim.colors[0], DVec3::ONE);
+    let scene = m.scene_at(0.0, &[], &[]).unwrap();
+    let extra = scene.meshes[1].extra.as_ref().unwrap();
+    assert!(extra.texture.as_ref().unwrap().pixels.has_alpha());
+    assert_eq!(extra.vertex.len(), 4);
+    // In the left half of "Blend" (inside its first triangle): 0.8 × 1 × 0.5.
+    let p = DVec3::new(-0.3, -0.6, 0.0);
+    assert!((scene.meshes[1].alpha_at(0, p) - 0.4).abs() < 1e-7);
+    // No warning for MASK or BLEND any more.
+    assert!(m.rig.warnings.iter().all(|w| !w.contains("alphaMode")));
+}
+
+#[test]
+fn an_emissive_texture_is_read_on_its_coordinate_set() {
+    let m = model("generated/emissive.gltf").unwrap();
+    // "Glow": the texture on TEXCOORD_1, the factor (1, 0.5, 0.25) × strength 2; its
+    // Pbr emission is left to the texture's hits. "Lit": the factor alone.
+    let (_, factor, set) = m.rig.extras[0].emissive.clone().unwrap();
+    assert_eq!((factor, set), (DVec3::new(2.0, 1.0, 0.5), 1));
+    assert_eq!(m.rig.pbr[0].emission, DVec3::ZERO);
+    let lit = m.rig.pbr[1].emission;
+    assert!(close(lit, DVec3::new(0.1, 0.2, 0.3)));
+    // TEXCOORD_1 mirrors TEXCOORD_0's u; v is flipped in both.
+    let prim = &m.rig.meshes[0][0];
+    assert_eq!(prim.uvs[0][0], [0.0, 0.0]);
+    assert_eq!(prim.uvs[1][0], [1.0, 0.0]);
+    let scene = m.scene_at(0.0, &[], &[]).unwrap();
+    let glow = &scene.meshes[0];
+    assert_eq!(
+        glow.extra.as_ref().unwrap().emissive.as_ref().unwrap().uvs,
+        prim.uvs[1]
+    );
+    // At x = −1.225 (u = 0.25 on TEXCOORD_0, 0.75 on TEXCOORD_1) the right texel,
+    // (128, 64, 255) decoded: 2 × 0.2158605 in red (y = −0.6: the first triangle).
+    let e = glow.emission_at(0, DVec3::new(-1.225, -0.6, 0.0));
+    assert!((e.x - 2.0 * 0.215_860_5).abs() < 1e-6, "{e}");
+}
+
+/// Where the shadow ray from the floor (y = −1) of alpha_modes.gltf towards its sun
+/// crosses the quads' plane z = 0 at `(x, y)`: the light it lets through, the same on
+/// both of the accelerator's shadow walks (three transparent objects: the linear loop;
+/// with four glass spheres no ray meets, seven: the collecting walk).
+fn shadow_through(x: f64, y: f64) -> crate::base::Color {
+    let few = shadow_with(x, y, 0);
+    assert_eq!(
+        few,
+        shadow_with(x, y, 4),
+        "the two walks differ at ({x}, {y})"
+    );
+    few
+}
+
+fn shadow_with(x: f64, y: f64, far: usize) -> crate::base::Color {
+    use crate::lights::punctual::Shape;
+    use crate::scene::ext::LightKind;
+    let m = model("generated/alpha_modes.gltf").unwrap();
+    let mut scene = m.scene_at(0.0, &[], &[]).unwrap();
+    for k in 0..far {
+        let mut glass = scene.objects[0].clone();
+        let centre = DVec3::new(100.0 + 10.0 * k as f64, 100.0, 100.0);
+        glass.shape = crate::shapes::Shape::Sphere(crate::shapes::Sphere::new(centre, 1.0));
+        glass.material.kt = 0.5;
+        scene.objects.push(glass);
+    }
+    let LightKind::Punctual(Shape::Directional { direction: d }, _) = scene.ext.lights[0].kind
+    else {
+        panic!("the sun is directional");
+    };
+    let c = DVec3::new(x, y, 0.0);
+    let p = c + (-1.0 - y) / d.y * d;
+    assert!((p.y + 1.0).abs() < 1e-12 && p.x > -4.0 && p.z > -3.0, "{p}");
+    crate::trace::Tracer::new(&scene).transmission(p, -d, f64::INFINITY)
+}
+
+#[test]
+fn shadow_rays_through_blend_and_mask_by_hand() {
+    // Through the BLEND veil's middle (α = 0.5, opaque): half the light, grey.
+    assert_eq!(shadow_through(-2.0, 0.4), DVec3::splat(0.5));
+    // Through the textured BLEND quad's texel of alpha 191/255: 64/255 of it.
+    let t = shadow_through(0.4, 0.8);
+    assert!((t - DVec3::splat(64.0 / 255.0)).length() < 1e-6, "{t}");
+    // MASK's top row of cells, 0.4 wide from x = 1.2: the first opaque, the second
+    // masked out (all the light), the third opaque.
+    assert_eq!(shadow_through(1.4, 1.0), DVec3::ZERO);
+    assert_eq!(shadow_through(1.8, 1.0), DVec3::ONE);
+    assert_eq!(shadow_through(2.2, 1.0), DVec3::ZERO);
+}

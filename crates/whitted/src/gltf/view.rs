@@ -6,7 +6,8 @@
 //! aspect). Without
 //! a camera one is placed to frame the scene's bounds, looking down −z with a vertical
 //! angle of `DEFAULT_FOV`; and without a light, one stated default light
-//! (`default_light`) travels from behind the camera's upper left.
+//! (`default_light`) travels from behind the camera's upper left. A picture of another
+//! shape than the camera's `aspectRatio` is warned about (`aspect_warning`).
 
 use super::rig::{Projection, Rig};
 use crate::base::Color;
@@ -107,6 +108,37 @@ pub fn default_light(view: &View) -> (Shape, Color, f64) {
     let up = right.cross(forward);
     let direction = (forward + 0.5 * right - 0.8 * up).normalize();
     (Shape::Directional { direction }, Color::ONE, 1.0)
+}
+
+/// The warning for a picture of `size` seen through the camera named `name` (or the
+/// first) of `rig` whose `aspectRatio` is another shape (SPEC §18: the width follows the
+/// picture, `yfov` is kept and the pixels stay square): `None` when the camera gives no
+/// `aspectRatio` or the picture's width is within half a pixel of it.
+pub fn aspect_warning(rig: &Rig, name: Option<&str>, size: (u32, u32)) -> Option<String> {
+    let (n, c) = find(rig, &rig.order(), name).ok()??;
+    let Projection::Perspective {
+        aspect: Some(a), ..
+    } = rig.cameras[c].projection
+    else {
+        return None;
+    };
+    let (w, h) = (f64::from(size.0), f64::from(size.1.max(1)));
+    if (w - a * h).abs() <= 0.5 || !(a.is_finite() && a > 0.0) {
+        return None;
+    }
+    let label = (rig.cameras[c].name.clone())
+        .or_else(|| rig.nodes[n].name.clone())
+        .unwrap_or_else(|| format!("camera {}", c + 1));
+    Some(format!(
+        "{}: the camera `{label}` has aspectRatio {a:.4} and the picture is {}×{} ({:.4}): \
+         its width follows the picture (yfov kept, square pixels); {}×{} keeps the camera's",
+        rig.file,
+        size.0,
+        size.1,
+        w / h,
+        ((a * h).round() as u32).max(1),
+        size.1
+    ))
 }
 
 /// The camera named `name`, or the first in the scene's depth-first order; `None`

@@ -5,7 +5,7 @@
 //! shadows, the same on every run. Each point costs one shadow ray.
 
 use super::point::towards;
-use super::Occluders;
+use super::{ext_key, Occluders};
 use super::{Incident, LightSource};
 use crate::base::Color;
 use glam::DVec3;
@@ -71,14 +71,14 @@ impl LightSource for Area {
     /// everything through).
     fn shadow<O: Occluders + ?Sized>(
         &self,
-        _k: usize,
+        k: usize,
         occluders: &O,
         p: DVec3,
         _inc: &Incident,
         rays: &mut u64,
     ) -> Color {
         let mut sum = Color::ZERO;
-        for &q in &self.points {
+        for (i, &q) in self.points.iter().enumerate() {
             let to = q - p;
             let dist = to.length();
             if dist == 0.0 {
@@ -86,7 +86,7 @@ impl LightSource for Area {
                 continue;
             }
             *rays += 1;
-            sum += occluders.transmission(p, to / dist, dist);
+            sum += occluders.transmission_keyed(ext_key(k, i), p, to / dist, dist);
         }
         sum / self.points.len() as f64
     }

@@ -24,7 +24,7 @@ pub mod spot;
 pub use area::Area;
 pub use directional::Directional;
 pub use fade::Fade;
-pub use occluders::Occluders;
+pub use occluders::{ext_key, Occluders};
 pub use point::PointLight;
 pub use punctual::Punctual;
 pub use spot::Spot;
@@ -134,7 +134,7 @@ impl LightSource for SceneLight {
             Kind::Area(a) => a.shadow(k, occluders, p, inc, rays),
             _ => {
                 *rays += 1;
-                occluders.transmission(p, inc.l, inc.dist)
+                occluders.transmission_keyed(ext_key(k, 0), p, inc.l, inc.dist)
             }
         }
     }

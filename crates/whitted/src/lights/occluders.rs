@@ -26,4 +26,21 @@ pub trait Occluders {
         let _ = (light, to);
         self.transmission(p, to_light, dist)
     }
+
+    /// The same for a shadow ray of an extension light: `key` names the ray's light and,
+    /// for an area light, its point on the grid (`ext_key`), so that an implementation
+    /// may keep what blocked the last ray of that key (a shadow cache); by default,
+    /// `transmission`.
+    #[inline]
+    fn transmission_keyed(&self, key: usize, p: DVec3, to_light: DVec3, dist: f64) -> Color {
+        let _ = key;
+        self.transmission(p, to_light, dist)
+    }
+}
+
+/// The key of the shadow rays of extension light `k` towards its point `i` (0 for a
+/// light of one point; an area light's grid has at most 64 × 64 points).
+#[inline(always)]
+pub fn ext_key(k: usize, i: usize) -> usize {
+    k * 4096 + i
 }

@@ -150,6 +150,7 @@ impl Mesh {
             warnings: raw.warnings,
             source: [0; 32],
             single_sided: false,
+            extra: None,
         };
         let angle = match (shading, mesh.normals.is_empty()) {
             (Some(Shading::Flat), _) => {

@@ -17,6 +17,7 @@
 //! (`limits::MAX_MESH_TRIANGLES`). Every failure is a `MeshError` naming the mesh file
 //! (and its line where the format has lines and the crate, or `obj`'s search, finds it).
 
+pub mod extra;
 mod load;
 #[cfg(feature = "mesh")]
 mod mtl;
@@ -163,6 +164,9 @@ pub struct Mesh {
     /// Camera rays do not see its back faces (a glTF material that is not
     /// `doubleSided`); false for every other mesh, whose triangles are two-sided.
     pub single_sided: bool,
+    /// A glTF primitive's coverage and emissive texture (`extra`), when its material
+    /// has either; `None` for every other mesh.
+    pub extra: Option<std::sync::Arc<extra::Extra>>,
 }
 
 impl std::fmt::Debug for Mesh {

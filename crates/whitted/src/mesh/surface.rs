@@ -30,7 +30,7 @@ impl Mesh {
     }
 
     /// The weights of triangle `k`'s corners at its point `p` (barycentric).
-    fn weights(&self, k: u32, p: DVec3) -> [f64; 3] {
+    pub(super) fn weights(&self, k: u32, p: DVec3) -> [f64; 3] {
         let [a, b, c] = self.corners(k);
         let (e1, e2, d) = (b - a, c - a, p - a);
         let (d11, d12, d22) = (e1.dot(e1), e1.dot(e2), e2.dot(e2));
@@ -74,15 +74,27 @@ impl Mesh {
     pub fn plain(&self, texture: &Texture) -> bool {
         self.face_looks.is_empty()
             && self.colors.is_empty()
+            && !self.has_coverage()
             && !matches!(texture, Texture::Image(image) if image.map == MapKind::Uv)
     }
 
     /// What a shadow ray crossing triangle `k` at `p` lets through (§2's Kt × colour), the
     /// triangle drawn as `surface` draws it: its own material, `uv` image and vertex
-    /// colours.
+    /// colours; on a glTF mesh with coverage, what the point's alpha lets through of it
+    /// (`shadow_through`: all where MASK leaves the point out, (1 − α)·white + α·own
+    /// through BLEND).
     pub fn filter(&self, k: u32, p: DVec3, texture: &Texture, material: &Material) -> DVec3 {
         let face = self.surface(k, p, texture, material);
-        face.material.kt * face.texture.color_at(p)
+        let own = face.material.kt * face.texture.color_at(p);
+        if !self.has_coverage() {
+            return own;
+        }
+        let own = if face.material.kt > 0.0 {
+            own
+        } else {
+            DVec3::ZERO
+        };
+        self.shadow_through(k, p, own)
     }
 
     /// Triangle `k` hit at `p` as the object shading draws, for a mesh object of

@@ -12,8 +12,8 @@
 //!   value's clamp-and-round is the tracer's byte, so an EXR frame converted to sRGB gives
 //!   the PNG's bytes exactly (one sample, no motion blur).
 //! - `follow_beauty`: the colour passes follow the beauty: the light split is scaled per
-//!   pixel and channel by stored/display of the beauty, and so is the `background`
-//!   layer (so the layers still sum to the stored beauty and keep their shares), the albedo (a texture's display colour)
+//!   pixel and channel by stored/display of the beauty, and so are the `background`
+//!   and `emission` layers (so the layers still sum to the stored beauty and keep their shares), the albedo (a texture's display colour)
 //!   is decoded like a colour; depth, position, normal and Cryptomatte are not colours
 //!   and stay as they are.
 
@@ -70,6 +70,7 @@ pub fn follow_beauty(channels: &mut [Channel], beauty: &[Color], colour: Transfe
     }
     let mut light: Vec<String> = Pass::LIGHT.iter().flat_map(|p| p.channels()).collect();
     light.extend(crate::passes::record::BACKGROUND.map(String::from));
+    light.extend(crate::passes::record::EMISSION.map(String::from));
     for ch in channels.iter_mut() {
         let Some(axis) = ["R", "G", "B"]
             .iter()

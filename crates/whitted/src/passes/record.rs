@@ -14,7 +14,13 @@
 //! the scene's background times (1 − f): a scene whose background is not black (a
 //! `background` record, an NFF's `b`) gains a `background` layer beside the light split
 //! (`BACKGROUND`), so that the seven still sum to the beauty; a black one writes none,
-//! and its files keep their bytes.
+//! and its files keep their bytes. A glTF scene whose materials emit gains an `emission`
+//! layer the same way (`EMISSION`). Behind a surface that covers part of the ray (glTF
+//! BLEND, α), the surface's terms, fog and emission weigh α and what lies behind goes,
+//! as a whole, to the transmission layer. In a scene in linear light each part is stored
+//! times the sample's display value over its linear colour, so that the parts sum to
+//! the display value as they do in the report's scenes (and, decoded, to the linear
+//! beauty: see `output::colour`).
 
 use super::crypto::{self, Ranked};
 use super::{CameraMatrices, Channel, CryptoHeader, Layers, Pass, PassSet};
@@ -40,6 +46,17 @@ pub struct Sample {
     pub fog: f64,
     /// The background seen by a ray that hit nothing, before fog.
     pub background: Color,
+    /// The light the surface emits (a glTF material's), before fog.
+    pub emission: Color,
+    /// The share α of the first surface when it covers only part of the ray (a glTF
+    /// BLEND material): its terms, fog and emission weigh α.
+    pub cover: Option<f64>,
+    /// What lies behind such a surface: (1 − α) × its colour, fogged (it goes to the
+    /// transmission layer).
+    pub behind: Color,
+    /// In a scene in linear light, per channel: the stored display value over the
+    /// linear colour the terms sum to (each term is stored times it).
+    pub scale: Option<Color>,
 }
 
 impl Record for Sample {
@@ -68,6 +85,23 @@ impl Record for Sample {
     }
     fn background(&mut self, c: Color) {
         self.background = c;
+    }
+    fn emission(&mut self, c: Color) {
+        self.emission += c;
+    }
+    fn cover(&mut self, alpha: f64) {
+        self.cover = Some(alpha);
+    }
+    fn behind(&mut self, c: Color) {
+        self.behind += c;
+    }
+    fn encoded(&mut self, linear: Color, shown: Color) {
+        let ratio = |l: f64, s: f64| if l > 0.0 { s / l } else { 1.0 };
+        self.scale = Some(Color::new(
+            ratio(linear.x, shown.x),
+            ratio(linear.y, shown.y),
+            ratio(linear.z, shown.z),
+        ));
     }
 }
 
@@ -108,6 +142,8 @@ pub struct PixelSum {
     pub light: [Color; 6],
     /// Σ background seen by the samples that hit nothing, times (1 − f).
     pub background: Color,
+    /// Σ emission, times (1 − f).
+    pub emission: Color,
     /// (object index, samples) for each object seen, when a Cryptomatte is asked for.
     pub objects: Vec<(usize, u32)>,
     /// The samples that hit an object.
@@ -120,12 +156,19 @@ impl PixelSum {
     #[inline]
     pub fn add(&mut self, c: Color, s: &Sample, dir: DVec3, forward: DVec3, crypto: bool) {
         self.beauty += c;
-        let keep = 1.0 - s.fog;
+        // Both 1 but for a partly covering surface and a scene in linear light: then
+        // every part is its share times α, and stored times the display's scale.
+        let (cover, scale) = (s.cover.unwrap_or(1.0), s.scale.unwrap_or(Color::ONE));
+        let keep = (1.0 - s.fog) * cover;
         for (sum, term) in self.light.iter_mut().zip(s.terms) {
-            *sum += term * keep;
+            *sum += term * keep * scale;
         }
-        self.light[5] += Color::splat(s.fog);
-        self.background += s.background * keep;
+        self.light[5] += Color::splat(s.fog * cover) * scale;
+        self.background += s.background * keep * scale;
+        self.emission += s.emission * keep * scale;
+        if s.cover.is_some() {
+            self.light[4] += s.behind * scale;
+        }
         match s.hit {
             Some((index, t)) => {
                 self.hits += 1;
@@ -238,15 +281,21 @@ pub fn finish(
         }
     }
     let light = Pass::LIGHT.iter().any(|&p| passes.has(p));
-    if light && scene.background != Color::ZERO {
-        let vals: Vec<Color> = sums.iter().map(|s| s.background / k).collect();
-        for (axis, name) in BACKGROUND.iter().enumerate() {
+    let mut extra = |names: [&str; 3], get: &dyn Fn(&PixelSum) -> Color| {
+        let vals: Vec<Color> = sums.iter().map(|s| get(s) / k).collect();
+        for (axis, name) in names.iter().enumerate() {
             let values = vals.iter().map(|v| v[axis] as f32).collect();
             channels.push(Channel {
                 name: name.to_string(),
                 values,
             });
         }
+    };
+    if light && scene.background != Color::ZERO {
+        extra(BACKGROUND, &|s| s.background);
+    }
+    if light && emits(scene) {
+        extra(EMISSION, &|s| s.emission);
     }
     channels.extend(crypto_channels);
     Layers {
@@ -264,38 +313,21 @@ pub fn finish(
 /// scene's background is not black.
 pub const BACKGROUND: [&str; 3] = ["background.R", "background.G", "background.B"];
 
+/// The channels of the `emission` layer a frame of the light split gains when its
+/// scene has an emissive material (`emits`).
+pub const EMISSION: [&str; 3] = ["emission.R", "emission.G", "emission.B"];
+
+/// Whether a material of `scene` emits light (a glTF `emissiveFactor`).
+pub fn emits(scene: &Scene) -> bool {
+    let textured = |m: &crate::mesh::Mesh| m.extra.as_ref().is_some_and(|x| x.emissive.is_some());
+    scene.pbr.iter().any(|p| p.emission != Color::ZERO) || scene.meshes.iter().any(|m| textured(m))
+}
+
 /// `hits` of `k` samples as a fraction.
 fn coverage(hits: u32, k: f64) -> f32 {
     (f64::from(hits) / k) as f32
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn fogged_terms_and_fog_sum_to_the_fogged_colour() {
-        // Terms 0.1..0.5 (sum 1.5) at fog f = 0.25: beauty 1.5·0.75 + 0.25 = 1.375.
-        let s = Sample {
-            hit: Some((0, 2.0)),
-            terms: [0.1, 0.2, 0.3, 0.4, 0.5].map(Color::splat),
-            fog: 0.25,
-            ..Default::default()
-        };
-        let mut sum = PixelSum::default();
-        let beauty = Color::splat(1.375);
-        let dir = DVec3::new(0.6, 0.0, 0.8);
-        sum.add(beauty, &s, dir, DVec3::Z, true);
-        let total: Color = sum.light.iter().copied().sum();
-        assert!((total - beauty).abs().max_element() < 1e-15, "{total}");
-        // Depth along the view axis: t·(dir·forward) = 2·0.8.
-        assert!((sum.depth - 1.6).abs() < 1e-15);
-        assert_eq!(sum.objects, [(0, 1)]);
-        // A second sample that misses: depth becomes +inf; the object is still counted
-        // once, and one of the two samples covers the pixel.
-        sum.add(Color::ONE, &Sample::default(), dir, DVec3::Z, true);
-        assert_eq!(sum.depth, f64::INFINITY);
-        assert_eq!(sum.objects, [(0, 1)]);
-        assert_eq!((sum.hits, coverage(sum.hits, 2.0)), (1, 0.5));
-    }
-}
+#[path = "record_tests.rs"]
+mod tests;

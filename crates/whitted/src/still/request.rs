@@ -233,6 +233,12 @@ impl Job {
         NonSquare::check(&self.lens(), self.native, size)
     }
 
+    /// The warning for a glTF camera whose `aspectRatio` is not the picture's shape.
+    pub fn aspect_warning(&self) -> Option<String> {
+        self.scene
+            .aspect_warning((self.scene.width, self.scene.height))
+    }
+
     /// The warnings of the scene's mesh files: what each holds and the tracer does not
     /// use, a material or image it cannot read (SPEC §18), one line per kind.
     pub fn mesh_warnings(&self) -> Vec<String> {

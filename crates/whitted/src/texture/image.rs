@@ -6,6 +6,10 @@
 //! - `nearest` takes column ⌊u·W⌋ and row ⌊(1 − v)·H⌋;
 //! - `bilinear` blends the four nearest pixel centres (centre of column i at u = (i+½)/W),
 //!   wrapping across the image's edges, as POV-Ray's `interpolate 2` does.
+//!
+//! An image with an alpha channel keeps it beside its colours (`Pixels::alpha_at`, read
+//! at the same (u, v) with the same filter): a glTF material's coverage (SPEC §18).
+//! The colours never depend on it.
 
 use super::map;
 use super::map_kind::MapKind;
@@ -78,6 +82,8 @@ pub struct Pixels {
     width: u32,
     height: u32,
     data: Vec<[f32; 3]>,
+    /// The alpha channel, one value a pixel, when the image has one (else opaque).
+    alpha: Option<Vec<f32>>,
     /// How u and v wrap (repeat, unless a glTF sampler says otherwise).
     wrap: [Wrap; 2],
     /// The SHA-256 of the file they were read from (zeros when made in memory).
@@ -98,9 +104,24 @@ impl Pixels {
             width,
             height,
             data,
+            alpha: None,
             wrap: [Wrap::Repeat; 2],
             source: [0; 32],
         })
+    }
+
+    /// The same image with the alpha channel `alpha` (one value a pixel; `None` when its
+    /// length is not the pixel count).
+    pub fn with_alpha(self, alpha: Vec<f32>) -> Option<Pixels> {
+        (alpha.len() == self.data.len()).then_some(Pixels {
+            alpha: Some(alpha),
+            ..self
+        })
+    }
+
+    /// Whether the image has an alpha channel.
+    pub fn has_alpha(&self) -> bool {
+        self.alpha.is_some()
     }
 
     /// The same image, each pixel mapped by `f` (a glTF scene's linear colours).
@@ -136,22 +157,45 @@ impl Pixels {
         u64::from(self.width) * u64::from(self.height)
     }
 
-    /// The pixel at column `i`, row `j` (both wrapped into the image).
-    fn at(&self, i: i64, j: i64) -> Color {
+    /// The index of the pixel at column `i`, row `j` (both wrapped into the image).
+    fn index(&self, i: i64, j: i64) -> usize {
         let (w, h) = (i64::from(self.width), i64::from(self.height));
         let (i, j) = match self.wrap {
             [Wrap::Repeat, Wrap::Repeat] => (i.rem_euclid(w), j.rem_euclid(h)),
             [a, b] => (edge(a, i, w), edge(b, j, h)),
         };
-        let (i, j) = (i as usize, j as usize);
-        let [r, g, b] = self.data[j * self.width as usize + i];
+        j as usize * self.width as usize + i as usize
+    }
+
+    /// The pixel at column `i`, row `j` (both wrapped into the image).
+    fn at(&self, i: i64, j: i64) -> Color {
+        let [r, g, b] = self.data[self.index(i, j)];
         DVec3::new(f64::from(r), f64::from(g), f64::from(b))
+    }
+
+    /// The alpha at (u, v), read as `sample` reads the colour there (1 for an image
+    /// without an alpha channel).
+    pub fn alpha_at(&self, u: f64, v: f64, interp: Interp) -> f64 {
+        match &self.alpha {
+            None => 1.0,
+            Some(alpha) => self.filter(u, v, interp, |i, j| f64::from(alpha[self.index(i, j)])),
+        }
     }
 
     /// The colour at (u, v) (any values: they wrap).
     pub fn sample(&self, u: f64, v: f64, interp: Interp) -> Color {
+        self.filter(u, v, interp, |i, j| self.at(i, j))
+    }
+
+    /// The value `at(i, j)` gives, read at (u, v) by `interp`: the pixel the point falls
+    /// in, or its four nearest pixel centres blended (u and v wrapped by `wrap`).
+    #[inline(always)]
+    fn filter<T>(&self, u: f64, v: f64, interp: Interp, at: impl Fn(i64, i64) -> T) -> T
+    where
+        T: std::ops::Mul<f64, Output = T> + std::ops::Add<Output = T>,
+    {
         if !(u.is_finite() && v.is_finite()) {
-            return self.at(0, 0);
+            return at(0, 0);
         }
         let (u, v) = match self.wrap {
             [Wrap::Repeat, Wrap::Repeat] => (u - u.floor(), v - v.floor()),
@@ -159,15 +203,15 @@ impl Pixels {
         };
         let (w, h) = (f64::from(self.width), f64::from(self.height));
         match interp {
-            Interp::Nearest => self.at((u * w) as i64, ((1.0 - v) * h) as i64),
+            Interp::Nearest => at((u * w) as i64, ((1.0 - v) * h) as i64),
             Interp::Bilinear => {
                 let x = u * w - 0.5;
                 let y = (1.0 - v) * h - 0.5;
                 let (i, j) = (x.floor(), y.floor());
                 let (tx, ty) = (x - i, y - j);
                 let (i, j) = (i as i64, j as i64);
-                let top = self.at(i, j) * (1.0 - tx) + self.at(i + 1, j) * tx;
-                let bottom = self.at(i, j + 1) * (1.0 - tx) + self.at(i + 1, j + 1) * tx;
+                let top = at(i, j) * (1.0 - tx) + at(i + 1, j) * tx;
+                let bottom = at(i, j + 1) * (1.0 - tx) + at(i + 1, j + 1) * tx;
                 top * (1.0 - ty) + bottom * ty
             }
         }
@@ -266,6 +310,23 @@ mod tests {
         let got = p.sample(0.375, 0.625, Interp::Bilinear);
         let want = c(0.75, 0.25, 0.0) * 0.75 + c(0.25, 0.25, 1.0) * 0.25;
         assert!((got - want).length() < 1e-15, "{got}");
+    }
+
+    #[test]
+    fn alpha_reads_like_the_colour() {
+        // The quad's alphas: 1, 0.5 / 0, 0.25 (rows top to bottom).
+        let p = quad().with_alpha(vec![1.0, 0.5, 0.0, 0.25]).unwrap();
+        assert_eq!(p.alpha_at(0.25, 0.75, Interp::Nearest), 1.0);
+        assert_eq!(p.alpha_at(0.75, 0.25, Interp::Nearest), 0.25);
+        // The centre, bilinear: the mean (1 + 0.5 + 0 + 0.25)/4 = 0.4375.
+        assert_eq!(p.alpha_at(0.5, 0.5, Interp::Bilinear), 0.4375);
+        // Half-way between the top two: 0.75; clamped at the edge, u = 0 is column 0.
+        assert_eq!(p.alpha_at(0.5, 0.75, Interp::Bilinear), 0.75);
+        let clamped = p.clone().wrapping([Wrap::Clamp, Wrap::Clamp]);
+        assert_eq!(clamped.alpha_at(0.0, 0.75, Interp::Bilinear), 1.0);
+        // An image without the channel is opaque.
+        assert_eq!(quad().alpha_at(0.5, 0.5, Interp::Bilinear), 1.0);
+        assert!(quad().with_alpha(vec![1.0]).is_none());
     }
 
     #[test]

@@ -1,6 +1,6 @@
 //! Reading an image texture's file (SPEC §16): PNG and JPEG through `image`, read as
 //! their bytes are (no gamma: byte/255, or /65535 for 16-bit PNGs, like every colour of
-//! the report); OpenEXR through `exr`, whose linear values are sRGB-encoded (§12) and
+//! the report), an alpha channel kept beside the colours; OpenEXR through `exr`, whose linear values are sRGB-encoded (§12) and
 //! clamped to 0..1, so that an EXR frame of ours maps exactly like its PNG (a frame
 //! written with `colour = "linear"` says so in its header and is taken as it is).
 //!
@@ -96,22 +96,45 @@ fn picture_pixels(
     let (w, h) = image::ImageDecoder::dimensions(&decoder);
     check(u64::from(w), u64::from(h))?;
     let picture = image::DynamicImage::from_decoder(decoder).map_err(|e| e.to_string())?;
-    let data: Vec<[f32; 3]> = match picture.color() {
+    let wide = matches!(
+        picture.color(),
         image::ColorType::L16
-        | image::ColorType::La16
-        | image::ColorType::Rgb16
-        | image::ColorType::Rgba16 => picture
+            | image::ColorType::La16
+            | image::ColorType::Rgb16
+            | image::ColorType::Rgba16
+    );
+    let data: Vec<[f32; 3]> = if wide {
+        picture
             .to_rgb16()
             .pixels()
             .map(|p| p.0.map(|c| (f64::from(c) / 65535.0) as f32))
-            .collect(),
-        _ => picture
+            .collect()
+    } else {
+        picture
             .to_rgb8()
             .pixels()
             .map(|p| p.0.map(|c| (f64::from(c) / 255.0) as f32))
-            .collect(),
+            .collect()
     };
-    Pixels::new(w, h, data).ok_or_else(|| "it holds no pixels".to_string())
+    let pixels = Pixels::new(w, h, data).ok_or_else(|| "it holds no pixels".to_string())?;
+    if !picture.color().has_alpha() {
+        return Ok(pixels);
+    }
+    // The alpha channel, kept beside the colours (a glTF material's coverage).
+    let alpha: Vec<f32> = if wide {
+        let rgba = picture.to_rgba16();
+        rgba.pixels()
+            .map(|p| (f64::from(p.0[3]) / 65535.0) as f32)
+            .collect()
+    } else {
+        let rgba = picture.to_rgba8();
+        rgba.pixels()
+            .map(|p| (f64::from(p.0[3]) / 255.0) as f32)
+            .collect()
+    };
+    pixels
+        .with_alpha(alpha)
+        .ok_or_else(|| "its alpha channel does not match its pixels".to_string())
 }
 
 /// An OpenEXR in a build without the tracer's `exr` feature.
@@ -169,6 +192,37 @@ mod tests {
                 .as_vec3()
                 .as_dvec3()
         );
+    }
+
+    #[test]
+    fn an_alpha_channel_is_kept_beside_the_colours() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("a.png");
+        // Two pixels: opaque red, then green at alpha 51 (0.2).
+        let img = image::RgbaImage::from_raw(2, 1, vec![255, 0, 0, 255, 0, 255, 0, 51]).unwrap();
+        img.save(&path).unwrap();
+        let px = load(&path, 0).unwrap();
+        assert!(px.has_alpha());
+        let nearest = super::super::Interp::Nearest;
+        // The colours are the RGB bytes, whatever the alpha.
+        assert_eq!(
+            px.sample(0.75, 0.5, nearest),
+            glam::DVec3::new(0.0, 1.0, 0.0)
+        );
+        assert_eq!(px.alpha_at(0.25, 0.5, nearest), 1.0);
+        assert_eq!(
+            px.alpha_at(0.75, 0.5, nearest),
+            f64::from((51.0f64 / 255.0) as f32)
+        );
+        // An RGB file has none: alpha 1 everywhere.
+        let rgb = dir.path().join("b.png");
+        image::RgbImage::from_raw(1, 1, vec![1, 2, 3])
+            .unwrap()
+            .save(&rgb)
+            .unwrap();
+        let px = load(&rgb, 0).unwrap();
+        assert!(!px.has_alpha());
+        assert_eq!(px.alpha_at(0.5, 0.5, nearest), 1.0);
     }
 
     #[test]

@@ -20,6 +20,7 @@
 //! the recorder and the hooks sit behind `R::ACTIVE`, so the beauty-only path, which
 //! passes `NoRecord`, compiles to the code it had before passes existed.
 
+mod alpha;
 mod count;
 mod query;
 pub mod rules;
@@ -124,7 +125,9 @@ impl<'a> Tracer<'a> {
     ) -> Color {
         let c = self.primary_value(tile, ray, count, rec);
         if self.scene.linear {
-            return crate::base::srgb::display(c);
+            let shown = crate::base::srgb::display(c);
+            rec.encoded(c, shown);
+            return shown;
         }
         c
     }
@@ -174,8 +177,8 @@ impl<'a> Tracer<'a> {
                 let obj = if part == NO_PART {
                     &objects[i]
                 } else {
-                    if self.culled(&objects[i], part, ray) {
-                        return self.primary_past(t, ray, count, rec);
+                    if self.unusual(&objects[i], part, ray) {
+                        return self.primary_walk(hit, ray, count, rec);
                     }
                     surface = self.surface_of(&objects[i], part, ray.at(t));
                     &*surface
@@ -246,6 +249,9 @@ impl<'a> Tracer<'a> {
         weight: f64,
         count: &mut RayCount,
     ) -> Color {
+        if self.has_extra(obj) {
+            return self.trace_walk(ray, t, obj, part, depth, weight, count);
+        }
         let surface = self.surface_of(obj, part, ray.at(t));
         self.shade(ray, t, &surface, None, depth, weight, count)
     }
@@ -389,5 +395,12 @@ impl Occluders for Tracer<'_> {
                 .accel
                 .transmission_to(objects, light, p, to_light, dist),
         }
+    }
+
+    /// Through the shadow cache's slot of `key` (an extension light's ray).
+    #[inline]
+    fn transmission_keyed(&self, key: usize, p: DVec3, to_light: DVec3, dist: f64) -> Color {
+        self.accel
+            .transmission_keyed(&self.scene.objects, key, p, to_light, dist)
     }
 }
