@@ -27,10 +27,11 @@ use whitted::base::Color;
 use whitted::camera::Camera;
 use whitted::noise::noise;
 use whitted::optics::Ray;
+use whitted::render::{render, Options, Picture};
 use whitted::shapes::{Plane, Quadric, Shape, Sphere};
 use whitted::texture::Texture;
 use whitted::trace::{RayCount, Tracer};
-use whitted::{render, Scene};
+use whitted::Scene;
 
 const ORBIT: &str = include_str!("pov/orbit.txt");
 
@@ -201,7 +202,8 @@ fn frame(c: &mut Criterion) {
     let tracer = Tracer::new(&orbit);
     let cam = Camera::new(orbit.eye, orbit.look_at, 160, 120).unwrap();
     g.bench_function("orbit_160x120", |b| {
-        b.iter(|| render(&tracer, &cam, 160, 120, 1).1.total())
+        let grid = Options::grid(160, 120, 1);
+        b.iter(|| render(&tracer, &cam, &grid, Picture::new()).1.total())
     });
     // The whole job the 10 vs 10,000 target measures: parse, build the BVH, render.
     for n in [10usize, 10_000] {
@@ -211,7 +213,8 @@ fn frame(c: &mut Criterion) {
                 let scene = parse(src);
                 let tracer = Tracer::new(&scene);
                 let cam = scene.camera();
-                let (_, count): (_, RayCount) = render(&tracer, &cam, 160, 120, 1);
+                let grid = Options::grid(160, 120, 1);
+                let (_, count): (_, RayCount) = render(&tracer, &cam, &grid, Picture::new());
                 count.total()
             })
         });
@@ -279,7 +282,8 @@ fn degenerate(c: &mut Criterion) {
             b.iter(|| {
                 let scene = Scene::load(&scene).unwrap();
                 let tracer = Tracer::new(&scene);
-                black_box(render(&tracer, &scene.camera(), 64, 48, 1))
+                let grid = Options::grid(64, 48, 1);
+                black_box(render(&tracer, &scene.camera(), &grid, Picture::new()))
             })
         });
     }

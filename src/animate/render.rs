@@ -156,7 +156,7 @@ fn render_frames(
         _ => None,
     };
     let (dir, output, n) = (destination.folder(), m.output.clone(), m.frames);
-    let path: FramePath = Box::new(move |f| dir.join(output.file_name(f, n)));
+    let path: FramePath = Box::new(move |f| output.path(&dir, f, n));
     let hooked = Hooked::new(reporter, &frames, hook, path, Box::new(told));
     let mut out = std::io::BufWriter::with_capacity(1 << 20, std::io::stdout());
     let start = Instant::now();

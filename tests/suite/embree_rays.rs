@@ -27,7 +27,7 @@ fn both_counts(path: &Path) -> (RayCount, RayCount) {
     let native = (scene.width, scene.height);
     let lens = scene.lens.overridden(None, 0.0);
     let still = Still::new(&scene, native, native, &lens, Antialias::Grid(1)).unwrap();
-    let (_, real) = still.render();
+    let (_, real) = still.render(whitted::render::Picture::new());
     let tracer = Tracer::new(&scene);
     let camera = walk::camera(&scene).unwrap();
     let mut tally = [0u64; 5];

@@ -10,8 +10,11 @@ use crate::support::raytrace;
 use glam::DVec3;
 use whitted::base::to_byte;
 use whitted::base::Color;
+use whitted::base::Frame;
 use whitted::camera::thin_lens::concentric;
+use whitted::camera::Camera;
 use whitted::optics::Ray;
+use whitted::render::{render, Options, Picture};
 use whitted::trace::{RayCount, Tracer};
 use whitted::Scene;
 
@@ -85,12 +88,17 @@ fn mean_of_pinholes(scene: &Scene, n: u32) -> Vec<u8> {
     bytes
 }
 
+/// The W×H picture of `tracer`'s scene through `camera`, n×n samples a pixel.
+fn picture(tracer: &Tracer, camera: &Camera, n: u32) -> (Frame, RayCount) {
+    render(tracer, camera, &Options::grid(W, H, n), Picture::new())
+}
+
 #[test]
 fn focus_is_the_mean_of_sheared_pinhole_renders() {
     let scene = Scene::parse(SCENE, "focus.txt").unwrap();
     let tracer = Tracer::new(&scene);
     for n in [1, 2] {
-        let (frame, rays) = whitted::render(&tracer, &scene.camera(), W, H, n);
+        let (frame, rays) = picture(&tracer, &scene.camera(), n);
         let want = mean_of_pinholes(&scene, n);
         let apart = frame
             .pixels
@@ -105,8 +113,8 @@ fn focus_is_the_mean_of_sheared_pinhole_renders() {
     // The lens blurs: the frame is not the pinhole's (the near ball is out of focus).
     let mut pinhole = scene.clone();
     pinhole.ext.focus = None;
-    let (sharp, _) = whitted::render(&Tracer::new(&pinhole), &pinhole.camera(), W, H, 1);
-    let (soft, _) = whitted::render(&tracer, &scene.camera(), W, H, 1);
+    let (sharp, _) = picture(&Tracer::new(&pinhole), &pinhole.camera(), 1);
+    let (soft, _) = picture(&tracer, &scene.camera(), 1);
     let differ = sharp
         .pixels
         .iter()

@@ -252,7 +252,13 @@ fn compare(name: &str, tag: &str, turn: Option<DVec3>) -> Option<f64> {
     std::fs::write(&pov_file, pov).unwrap();
 
     let tracer = Tracer::new(&scene);
-    let (frame, _) = whitted::render(&tracer, &scene.camera(), W, H, 1);
+    let grid = whitted::render::Options::grid(W, H, 1);
+    let (frame, _) = whitted::render(
+        &tracer,
+        &scene.camera(),
+        &grid,
+        whitted::render::Picture::new(),
+    );
     let ours = dir.path().join("ours.png");
     image::RgbImage::from_raw(W, H, frame.pixels)
         .unwrap()

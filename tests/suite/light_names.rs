@@ -5,7 +5,7 @@
 //! every kind of light shines, with fade, shadows through glass and fog.
 
 use whitted::passes::{Pass, PassSet};
-use whitted::render::render_layers;
+use whitted::render::{render, Layered, Options};
 use whitted::trace::Tracer;
 use whitted::Scene;
 
@@ -43,7 +43,9 @@ fn the_light_split_sums_to_the_beauty_with_every_kind_of_light() {
     let scene = Scene::parse(SCENE, "lights.txt").unwrap();
     let tracer = Tracer::new(&scene);
     let (w, h) = (scene.width, scene.height);
-    let (layers, _) = render_layers(&tracer, &scene.camera(), w, h, 2, PassSet::of(&Pass::LIGHT));
+    let grid = Options::grid(w, h, 2);
+    let light = Layered(PassSet::of(&Pass::LIGHT));
+    let (layers, _) = render(&tracer, &scene.camera(), &grid, light);
     let mut lit = 0;
     for (k, c) in layers.beauty.iter().enumerate() {
         for (axis, ch) in ["R", "G", "B"].iter().enumerate() {

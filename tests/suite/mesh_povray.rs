@@ -159,7 +159,13 @@ pub(crate) fn compare(files: &[(&str, Vec<u8>)], records: &str, pov: &str) -> Op
     let file = dir.path().join("meshes.txt");
     let scene = Scene::parse(&format!("{BASE}{records}"), &file.display().to_string()).unwrap();
     let tracer = Tracer::new(&scene);
-    let (frame, _) = whitted::render(&tracer, &scene.camera(), W, H, 1);
+    let grid = whitted::render::Options::grid(W, H, 1);
+    let (frame, _) = whitted::render(
+        &tracer,
+        &scene.camera(),
+        &grid,
+        whitted::render::Picture::new(),
+    );
     let ours = dir.path().join("ours.png");
     image::RgbImage::from_raw(W, H, frame.pixels)
         .unwrap()

@@ -270,7 +270,7 @@ fn animate_sends_every_frame_of_an_exr_manifest() {
     let project = whitted_anim::Project::load(&manifest).unwrap();
     let anim = whitted_anim::Animation::new(&project).unwrap();
     let mut want: Vec<Vec<u8>> = (0..3)
-        .map(|f| anim.render_picture(f).unwrap().0.pixels)
+        .map(|f| anim.render_picture(&anim.plan(f)).unwrap().0.pixels)
         .collect();
     want.sort();
     assert!(sent == want, "tev did not receive the EXR frames' pictures");

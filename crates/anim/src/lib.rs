@@ -5,7 +5,8 @@
 //! - `timeline`: values over time — camera paths (circle, spline), tracks, easing, motion
 //!   blur — answering "what is frame t?" with a scene and a camera;
 //! - `project`: a manifest with its scene and timeline, loaded once (`Project::load`), and
-//!   `Animation`, which draws any frame of it;
+//!   `Animation`, which draws any frame of it from the frame's plan (`FramePlan`: its
+//!   path, states and digest, built once);
 //! - `frames`: producing frames — selection and shards, the render command, the pipeline
 //!   and its events, provenance and status, video;
 //! - checking frames: `check` (`animate check` and `bless`: idiff metrics, FLIP, one

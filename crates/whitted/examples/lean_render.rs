@@ -6,7 +6,8 @@
 
 use std::process::ExitCode;
 use whitted::output::{encode, ImageFormat, OutputError};
-use whitted::{render, trace::Tracer, Scene};
+use whitted::render::{render, Options, Picture};
+use whitted::{trace::Tracer, Scene};
 
 /// A red sphere on the report's checker floor, one light: every part of a frame.
 const SCENE: &str = "64 48  0 1 6  0 0 0  0 0  1 1 0 1
@@ -31,9 +32,10 @@ fn main() -> ExitCode {
 fn run() -> Result<String, Box<dyn std::error::Error>> {
     let scene = Scene::parse(SCENE, "lean.txt")?;
     let tracer = Tracer::new(&scene);
-    let (frame, rays) = render(&tracer, &scene.camera(), 64, 48, 1);
+    let grid = Options::grid(64, 48, 1);
+    let (frame, rays) = render(&tracer, &scene.camera(), &grid, Picture::new());
     let mut png = Vec::new();
-    encode(&frame, ImageFormat::Png, &mut png)?;
+    encode(&frame, ImageFormat::Png, &[], &mut png)?;
     if !png.starts_with(b"\x89PNG") {
         return Err("the PNG has no PNG signature".into());
     }

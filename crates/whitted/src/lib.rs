@@ -37,7 +37,8 @@
 //! The same, step by step, with the pixels in memory:
 //!
 //! ```
-//! use whitted::{render, trace::Tracer, Scene};
+//! use whitted::render::{render, Options, Picture};
+//! use whitted::{trace::Tracer, Scene};
 //!
 //! // 4×3 pixels, eye at z = 5 looking at the origin, no fog, one red sphere, one light.
 //! let scene = Scene::parse(
@@ -48,7 +49,7 @@
 //! )
 //! .unwrap();
 //! let tracer = Tracer::new(&scene);
-//! let (frame, rays) = render(&tracer, &scene.camera(), 4, 3, 1);
+//! let (frame, rays) = render(&tracer, &scene.camera(), &Options::grid(4, 3, 1), Picture::new());
 //! assert_eq!(frame.pixels.len(), 4 * 3 * 3);
 //! // The centre of the image sees the lit red sphere: red, no green or blue.
 //! let centre = &frame.pixels[(1 * 4 + 1) * 3..][..3];

@@ -3,8 +3,8 @@
 //!
 //! - 513 × 513 eye rays through the pixel corners of a 512 × 512 picture, each pixel the
 //!   average of its four corners (each corner clamped to 0..1 first, as supersamples
-//!   are): `render_corners`. The corner rays are the pixel centres of a 513 × 513 view,
-//!   so an NFF's `angle` spans the outer corner rays;
+//!   are): `render::Options::corners`. The corner rays are the pixel centres of a
+//!   513 × 513 view, so an NFF's `angle` spans the outer corner rays;
 //! - a tree depth of 5 with the eye ray at depth 1 (4 bounces after it), and no weight
 //!   cut-off: `Rules::spd`;
 //! - every ray hitting a reflective (Ks > 0) or transmitting (T > 0) surface spawns a
@@ -14,7 +14,6 @@
 //!   see docs/decisions.md): `Tracer::spawn_spd`;
 //! - shadow rays only to the lights the (ray-facing) shading normal faces, as always.
 
-pub use crate::render::corners::render_corners;
 pub use crate::trace::rules::{Rules, SPD_DEPTH};
 
 /// The SPD's picture size, 512 × 512.

@@ -15,9 +15,10 @@ use std::sync::mpsc;
 use std::time::Duration;
 use whitted::base::to_byte;
 use whitted::optics::Ray;
+use whitted::render::{render, Options, Picture};
 use whitted::shapes::{Quadric, Sphere};
 use whitted::trace::{RayCount, Tracer};
-use whitted::{render, Camera, Frame, Scene};
+use whitted::{Camera, Frame, Scene};
 
 mod extremes;
 mod inside;
@@ -194,14 +195,15 @@ fn check(name: &str, scene: &SceneText) -> Image {
             bad.len(),
             bad.iter().take(8).cloned().collect::<Vec<_>>().join(", ")
         );
-        let first = render(&tracer, &camera, w, h, 1).0;
-        let second = render(&tracer, &camera, w, h, 1).0;
+        let grid = Options::grid(w, h, 1);
+        let first = render(&tracer, &camera, &grid, Picture::new()).0;
+        let second = render(&tracer, &camera, &grid, Picture::new()).0;
         let pool = |n| {
             rayon::ThreadPoolBuilder::new()
                 .num_threads(n)
                 .build()
                 .unwrap()
-                .install(|| render(&tracer, &camera, w, h, 1).0)
+                .install(|| render(&tracer, &camera, &grid, Picture::new()).0)
         };
         let (one, two) = (pool(1), pool(2));
         assert!(first == second, "{label}: two renders differ");

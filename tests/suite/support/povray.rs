@@ -56,7 +56,13 @@ pub fn against_povray(scene: &Scene, pov: &Path, (w, h): (u32, u32), keep: (&str
     let povray = povray().expect("the caller found POV-Ray first");
     let dir = pov.parent().unwrap();
     let tracer = Tracer::new(scene);
-    let (frame, _) = whitted::render(&tracer, &scene.camera(), w, h, 1);
+    let grid = whitted::render::Options::grid(w, h, 1);
+    let (frame, _) = whitted::render(
+        &tracer,
+        &scene.camera(),
+        &grid,
+        whitted::render::Picture::new(),
+    );
     let ours = dir.join("ours.png");
     image::RgbImage::from_raw(w, h, frame.pixels)
         .unwrap()

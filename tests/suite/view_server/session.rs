@@ -155,10 +155,10 @@ fn an_exr_manifest_shows_the_pictures_its_files_hold() {
     std::fs::write(&scene, text.replace("0.9\n-6", "3.0\n-6")).unwrap();
     let project = whitted_anim::Project::load(&manifest).unwrap();
     let anim = whitted_anim::Animation::new(&project).unwrap();
-    let picture = anim.render_picture(4).unwrap().0.pixels;
+    let picture = anim.render_picture(&anim.plan(4)).unwrap().0.pixels;
     assert_ne!(
         picture,
-        anim.render(4).unwrap().0.pixels,
+        anim.render(&anim.plan(4)).unwrap().0.pixels,
         "no difference to see"
     );
     let v = Viewer::start(&manifest, &[]);

@@ -247,26 +247,24 @@ pub fn bless(
         .par_iter()
         .map(|&frame| {
             let path = reference_path(anim, refs, frame);
-            let record = crate::frames::provenance::stamp(
-                anim,
-                frame,
-                crate::frames::provenance::digest(anim, frame),
-            );
+            let plan = anim.plan(frame).recorded();
             let before = std::fs::read(&path).ok();
             let written = if anim.format().is_layered() {
                 // The tracer's float beauty, losslessly and as it is (check compares
                 // it bit for bit): EXR float, ZIP, `colour = "linear"`, no alpha.
-                let (mut layers, _) = anim.render_layers(frame, whitted::passes::PassSet::NONE)?;
+                let (mut layers, _) = anim.render_layers(&plan, whitted::passes::PassSet::NONE)?;
+                let record = crate::frames::provenance::stamp(&plan);
                 layers.alpha = None;
                 let exr = ImageFormat::Exr(whitted::output::ExrOptions {
                     depth: whitted::output::ExrDepth::Float,
                     colour: whitted::base::Transfer::Linear,
                     ..Default::default()
                 });
-                whitted::output::write_atomic_layers(&path, layers, exr, &record)
+                whitted::output::write_atomic(&path, layers, exr, &record)
             } else {
-                let (image, _) = anim.render(frame)?;
-                whitted::output::write_atomic_with(&path, &image, ImageFormat::Png, &record)
+                let (image, _) = anim.render(&plan)?;
+                let record = crate::frames::provenance::stamp(&plan);
+                whitted::output::write_atomic(&path, &image, ImageFormat::Png, &record)
             };
             written.map_err(|source| AnimError::Write { frame, source })?;
             let changed = before
@@ -320,7 +318,7 @@ fn check_frame(
     (reference, ref_floats): &Reference,
 ) -> Result<FrameReport, AnimError> {
     let start = Instant::now();
-    let (image, floats) = draw(anim, frame)?;
+    let (image, floats) = draw(&anim.plan(frame))?;
     let tol = opts.tolerance;
     let comparison = match (ref_floats, &floats) {
         (Some(a), Some(b)) => diff::compare_float(a, b, anim.width, tol),
@@ -339,7 +337,7 @@ fn check_frame(
     } else {
         create_dir(&opts.report)?;
         let write = |path: &PathBuf, img: &Frame| {
-            write_atomic(path, img, ImageFormat::Png)
+            write_atomic(path, img, ImageFormat::Png, &[])
                 .map_err(|source| AnimError::Write { frame, source })
                 .map(|()| Some(path.clone()))
         };

@@ -4,7 +4,7 @@
 //! the same way for comparison.
 
 use super::super::error::AnimError;
-use super::super::project::Animation;
+use super::super::project::{Animation, FramePlan};
 use std::path::{Path, PathBuf};
 use whitted::base::Frame;
 use whitted::fileloc::shown;
@@ -12,32 +12,29 @@ use whitted::output::ImageFormat;
 
 /// The file name stem of frame `frame` (the name pattern, no extension).
 pub(super) fn stem(anim: &Animation, frame: u32) -> String {
-    let name = anim.manifest.output.file_name(frame, anim.manifest.frames);
-    match name.rsplit_once('.') {
-        Some((stem, _)) => stem.to_string(),
-        None => name,
-    }
+    anim.manifest.output.stem(frame, anim.manifest.frames)
 }
 
-/// Where the reference of `frame` lives.
+/// Where the reference of `frame` lives (`OutputSpec::path_as`).
 pub fn reference_path(anim: &Animation, refs: &Path, frame: u32) -> PathBuf {
     let ext = if anim.format().is_layered() {
         "exr"
     } else {
         "png"
     };
-    refs.join(format!("{}.{ext}", stem(anim, frame)))
+    (anim.manifest.output).path_as(refs, frame, anim.manifest.frames, ext)
 }
 
 /// A reference: its 8-bit picture and, for an EXR frame, its float beauty.
 pub(super) type Reference = (Frame, Option<Vec<[f32; 3]>>);
 
 /// A frame as check compares it: the picture, and the float beauty of an EXR frame.
-pub(super) fn draw(anim: &Animation, frame: u32) -> Result<Reference, AnimError> {
+pub(super) fn draw(plan: &FramePlan) -> Result<Reference, AnimError> {
+    let anim = plan.anim();
     if !anim.format().is_layered() {
-        return Ok((anim.render(frame)?.0, None));
+        return Ok((anim.render(plan)?.0, None));
     }
-    let (layers, _) = anim.render_layers(frame, whitted::passes::PassSet::NONE)?;
+    let (layers, _) = anim.render_layers(plan, whitted::passes::PassSet::NONE)?;
     let floats = layers
         .beauty
         .iter()

@@ -29,7 +29,7 @@ pub fn predicted_costs(anim: &Animation, frames: &[u32]) -> Result<Vec<u64>, Ani
     small.check_cameras(frames)?;
     frames
         .par_iter()
-        .map(|&f| small.render(f).map(|(_, rays)| rays.total()))
+        .map(|&f| small.render(&small.plan(f)).map(|(_, rays)| rays.total()))
         .collect()
 }
 
@@ -105,7 +105,7 @@ mod tests {
         assert_eq!((small.width, small.height, small.samples), (8, 5, 1));
         assert!(small.antialias.is_none());
         // A frame of it casts one camera ray a pixel.
-        let (_, rays) = small.render(0).unwrap();
+        let (_, rays) = small.render(&small.plan(0)).unwrap();
         assert_eq!(rays.primary, 40);
     }
 

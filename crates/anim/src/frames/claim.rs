@@ -19,7 +19,7 @@
 
 use super::provenance::{self, Inspection};
 use crate::error::AnimError;
-use crate::project::Animation;
+use crate::project::FramePlan;
 use std::fs::{File, OpenOptions, TryLockError};
 use std::path::{Path, PathBuf};
 use std::time::SystemTime;
@@ -78,19 +78,19 @@ impl Claims {
         Ok(Claim { _file: file })
     }
 
-    /// Whether another run sharing the folder wrote frame `frame`: its file is newer than
-    /// the sharing's start and records the digest the manifest now gives it.
-    pub fn done_elsewhere(&self, anim: &Animation, dir: &Path, frame: u32) -> bool {
-        let path = anim.frame_path(dir, frame);
-        let newer = std::fs::metadata(&path)
+    /// Whether another run sharing the folder wrote the plan's frame: its file is newer
+    /// than the sharing's start and records the digest the manifest now gives it.
+    pub fn done_elsewhere(&self, plan: &FramePlan) -> bool {
+        let (anim, path) = (plan.anim(), plan.path());
+        let newer = std::fs::metadata(path)
             .and_then(|m| m.modified())
             .is_ok_and(|t| t >= self.since);
         if !newer {
             return false;
         }
         let (format, w, h) = (anim.format(), anim.width, anim.height);
-        match provenance::inspect(&path, format, w, h, false) {
-            Inspection::Sound(record) => record.digest == Some(provenance::digest(anim, frame)),
+        match provenance::inspect(path, format, w, h, false) {
+            Inspection::Sound(record) => record.digest.as_deref() == Some(plan.digest()),
             _ => false,
         }
     }

@@ -40,32 +40,34 @@ pub(crate) fn found(
     if !policy.resume && policy.force {
         return Found::Render;
     }
-    let path = anim.frame_path(dir, frame);
+    // The frame's plan: its path; its states and digest only if `--resume` asks.
+    let plan = anim.plan_in(dir, frame);
+    let path = plan.path();
     let (format, w, h) = (anim.format(), anim.width, anim.height);
-    let record = match provenance::inspect(&path, format, w, h, false) {
+    let record = match provenance::inspect(path, format, w, h, false) {
         Inspection::Sound(record) => record,
         // Whatever is under a frame's name and is no frame of the format (a user's text, a
         // link, a FIFO) is not the tool's: replaced only with --force (the link, never its
         // target). A folder is left to the write, which refuses it.
         Inspection::Damaged(_)
             if !policy.force
-                && std::fs::symlink_metadata(&path).is_ok_and(|m| !m.is_dir())
-                && !owner::looks_like_a_frame(anim, &path, format) =>
+                && std::fs::symlink_metadata(path).is_ok_and(|m| !m.is_dir())
+                && !owner::looks_like_a_frame(anim, path, format) =>
         {
-            return Found::Unrecorded(path)
+            return Found::Unrecorded(path.to_path_buf())
         }
         _ => return Found::Render,
     };
     if policy.resume
-        && record.digest == Some(provenance::digest(anim, frame))
-        && (!policy.verify || provenance::decode(&path, format, w, h).is_ok())
+        && record.digest.as_deref() == Some(plan.digest())
+        && (!policy.verify || provenance::decode(path, format, w, h).is_ok())
     {
         return Found::UpToDate;
     }
     let is_final = !record.pairs.iter().any(|(k, _)| k == provenance::DRAFT_KEY);
     match record.manifest {
         Some(m) if !policy.force && Some(m.as_str()) != ours => Found::Foreign(m),
-        None if !policy.force => Found::Unrecorded(path),
+        None if !policy.force => Found::Unrecorded(path.to_path_buf()),
         Some(_) if !policy.force && is_final && anim.manifest.draft.is_some() => Found::Final,
         _ => Found::Render,
     }

@@ -29,16 +29,14 @@ use super::policy::Policy;
 use super::provenance::{self, raw_record_path};
 use super::status;
 use crate::error::AnimError;
-use crate::project::Animation;
+use crate::project::{Animation, FramePlan};
 use rayon::prelude::*;
 use std::io::Write;
 use std::path::Path;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
-use whitted::output::{
-    encode, temp_beside, write_atomic_layers, write_atomic_with, ImageFormat, OutputError,
-};
+use whitted::output::{encode, temp_beside, write_atomic, ImageFormat, OutputError};
 use whitted::trace::RayCount;
 use whitted_cmd::process::stopped;
 
@@ -71,44 +69,40 @@ fn with_path(path: &Path, e: OutputError) -> OutputError {
     }
 }
 
-/// Renders frame `frame` and writes it with its provenance under its final name; a RAW
-/// frame's record, written after it, carries the SHA-256 of its pixels.
-fn write_frame(
-    anim: &Animation,
-    dir: &Path,
-    frame: u32,
-    meter: &Meter,
-) -> Result<RayCount, AnimError> {
+/// Renders the plan's frame (a recorded plan: drawing it makes its digest) and writes it
+/// with its provenance under its final name (the plan's path); a RAW frame's record,
+/// written after it, carries the SHA-256 of its pixels.
+fn write_frame(plan: &FramePlan, meter: &Meter) -> Result<RayCount, AnimError> {
     let measuring = meter.start();
-    let path = anim.frame_path(dir, frame);
-    let digest = provenance::digest(anim, frame);
-    let mut stamp = provenance::stamp(anim, frame, digest.clone());
+    let (anim, frame, path) = (plan.anim(), plan.frame(), plan.path());
     let write = |source| AnimError::Write { frame, source };
     let format = anim.format();
     let rays = if format.is_layered() {
         // EXR: the beauty unclamped and the passes, provenance in the header.
-        let (layers, rays) = anim.render_layers(frame, format.passes())?;
-        write_atomic_layers(&path, layers, format, &stamp)
-            .map_err(|e| write(with_path(&path, e)))?;
+        let (layers, rays) = anim.render_layers(plan, format.passes())?;
+        let stamp = provenance::stamp(plan);
+        write_atomic(path, layers, format, &stamp).map_err(|e| write(with_path(path, e)))?;
         rays
     } else {
-        let (image, rays) = anim.render(frame)?;
-        write_atomic_with(&path, &image, format, &stamp).map_err(|e| write(with_path(&path, e)))?;
+        let (image, rays) = anim.render(plan)?;
+        let mut stamp = provenance::stamp(plan);
+        write_atomic(path, &image, format, &stamp).map_err(|e| write(with_path(path, e)))?;
         if format == ImageFormat::Raw {
             stamp.push(provenance::pixels_line(&image.pixels));
-            write_raw_record(&path, &stamp).map_err(|source| {
+            write_raw_record(path, &stamp).map_err(|source| {
                 write(OutputError::Io {
-                    path: raw_record_path(&path),
+                    path: raw_record_path(path),
                     source,
                 })
             })?;
         }
         rays
     };
+    let digest = plan.digest().to_string();
     let spent = meter.finish(measuring, frame, digest, &rays);
-    cost::write(&path, &spent).map_err(|source| {
+    cost::write(path, &spent).map_err(|source| {
         write(OutputError::Io {
-            path: cost::cost_path(&path),
+            path: cost::cost_path(path),
             source,
         })
     })?;
@@ -207,10 +201,12 @@ pub(crate) fn render_to_folder(
         if stopped(stop).is_some() || failed() {
             return RayCount::default();
         }
-        let path = anim.frame_path(dir, frame);
+        // The frame's plan: its path now, its states and digest at their first ask.
+        let plan = anim.plan_in(dir, frame).recorded();
+        let path = plan.path();
         let claimed = match wait {
-            true => claims.claim(&path).map(Some),
-            false => claims.try_claim(&path),
+            true => claims.claim(path).map(Some),
+            false => claims.try_claim(path),
         };
         let _claim = match claimed {
             Ok(Some(claim)) => claim,
@@ -227,13 +223,13 @@ pub(crate) fn render_to_folder(
                 return RayCount::default();
             }
         };
-        if claims.done_elsewhere(anim, dir, frame) {
+        if claims.done_elsewhere(&plan) {
             elsewhere.fetch_add(1, Ordering::Relaxed);
             reporter.event(Event::Elsewhere { frame });
             return RayCount::default();
         }
         let start = Instant::now();
-        match write_frame(anim, dir, frame, &meter) {
+        match write_frame(&plan, &meter) {
             Ok(rays) => {
                 let seconds = start.elapsed().as_secs_f64();
                 rendered.fetch_add(1, Ordering::Relaxed);
@@ -315,9 +311,9 @@ pub(crate) fn render_to_stream(
             .par_iter()
             .map(|&frame| {
                 let start = Instant::now();
-                let (image, rays) = anim.render_picture(frame)?;
+                let (image, rays) = anim.render_picture(&anim.plan(frame))?;
                 let mut bytes = Vec::with_capacity(image.pixels.len() + 32);
-                encode(&image, format, &mut bytes)
+                encode(&image, format, &[], &mut bytes)
                     .map_err(|source| AnimError::Write { frame, source })?;
                 Ok((bytes, rays, start.elapsed().as_secs_f64()))
             })

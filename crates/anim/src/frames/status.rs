@@ -7,8 +7,8 @@
 //! `frames` was lowered) are listed apart (`folder::beyond`).
 
 use super::folder::beyond;
-use super::provenance::{digest, inspect, stamp, Inspection, Record, DRAFT_KEY};
-use crate::project::Animation;
+use super::provenance::{inspect, stamp, Inspection, Record, DRAFT_KEY};
+use crate::project::{Animation, FramePlan};
 use rayon::prelude::*;
 use serde::Serialize;
 use std::path::Path;
@@ -28,13 +28,13 @@ pub enum FrameState {
 
 /// The state of frame `frame` in `dir` and, when stale, why.
 fn examine(anim: &Animation, dir: &Path, frame: u32, verify: bool) -> (FrameState, String) {
-    let path = anim.frame_path(dir, frame);
-    match inspect(&path, anim.format(), anim.width, anim.height, verify) {
+    let plan = anim.plan_in(dir, frame);
+    match inspect(plan.path(), anim.format(), anim.width, anim.height, verify) {
         Inspection::Missing => (FrameState::Missing, String::new()),
-        Inspection::Sound(r) if r.digest == Some(digest(anim, frame)) => {
+        Inspection::Sound(r) if r.digest.as_deref() == Some(plan.digest()) => {
             (FrameState::UpToDate, String::new())
         }
-        Inspection::Sound(r) => (FrameState::Stale, changed(anim, frame, &r)),
+        Inspection::Sound(r) => (FrameState::Stale, changed(&plan, &r)),
         Inspection::Damaged(why) => (FrameState::Stale, format!("damaged: {why}")),
     }
 }
@@ -42,12 +42,13 @@ fn examine(anim: &Animation, dir: &Path, frame: u32, verify: bool) -> (FrameStat
 /// What a sound frame's record says changed since it was rendered: the first stamp
 /// entry that differs from the one the frame would carry now, or, when the stamp is the
 /// same, what the digest alone covers.
-fn changed(anim: &Animation, frame: u32, record: &Record) -> String {
+fn changed(plan: &FramePlan, record: &Record) -> String {
     if record.digest.is_none() {
         return "it records no provenance".into();
     }
+    let anim = plan.anim();
     let recorded = |key: &str| record.pairs.iter().find(|(k, _)| k == key).map(|p| &p.1);
-    let now = stamp(anim, frame, String::new());
+    let now = stamp(plan);
     match (recorded(DRAFT_KEY), &anim.manifest.draft) {
         (Some(old), None) => return format!("it is a draft ({old}), now the final"),
         (None, Some(new)) => return format!("it is a final, now a draft ({new})"),

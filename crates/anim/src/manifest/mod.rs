@@ -93,6 +93,17 @@ impl OutputSpec {
         format!("{}.{}", self.stem(frame, frames), self.format.extension())
     }
 
+    /// Where frame `frame` of a `frames`-frame sequence goes in `dir`: its `file_name`
+    /// there. Every frame's path is made here (a run's, its hooks', `status`'s).
+    pub fn path(&self, dir: &Path, frame: u32, frames: u32) -> PathBuf {
+        self.path_as(dir, frame, frames, self.format.extension())
+    }
+
+    /// `path` with another extension (a check's references: `.png`, or `.exr`).
+    pub fn path_as(&self, dir: &Path, frame: u32, frames: u32, ext: &str) -> PathBuf {
+        dir.join(format!("{}.{ext}", self.stem(frame, frames)))
+    }
+
     /// `file_name` without the extension.
     pub fn stem(&self, frame: u32, frames: u32) -> String {
         let needed = frames.saturating_sub(1).to_string().len();

@@ -247,7 +247,7 @@ pub fn run(
     }
     let gif_path = gif.finish()?;
     let sheet_path = dir.join(SHEET_NAME);
-    write_atomic(&sheet_path, &sheet.finish()?, ImageFormat::Png)?;
+    write_atomic(&sheet_path, &sheet.finish()?, ImageFormat::Png, &[])?;
 
     let name = src.manifest_path().file_name().unwrap_or_default();
     let camera = src.camera_samples();
@@ -263,7 +263,7 @@ pub fn run(
         scene: src.scene(),
     };
     let plot_path = dir.join(PLOT_NAME);
-    write_atomic(&plot_path, &plot::plot(&data)?, ImageFormat::Png)?;
+    write_atomic(&plot_path, &plot::plot(&data)?, ImageFormat::Png, &[])?;
     Ok(PreviewSummary {
         dir,
         gif: gif_path,

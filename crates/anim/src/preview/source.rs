@@ -105,7 +105,8 @@ impl Source {
 
 /// Draws frame `frame` of the preview-sized animation.
 pub fn draw(anim: &Animation, frame: u32) -> Result<Frame, AnimError> {
-    anim.render_picture(frame).map(|(image, _)| image)
+    anim.render_picture(&anim.plan(frame))
+        .map(|(image, _)| image)
 }
 
 /// `frames` frame numbers when there are at most `max`, otherwise `max` of them spread

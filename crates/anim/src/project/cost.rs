@@ -6,7 +6,7 @@
 use super::Animation;
 use crate::error::AnimError;
 use std::time::Instant;
-use whitted::output::{encode_layers, encode_with};
+use whitted::output::encode;
 use whitted::passes::record::PixelSum;
 use whitted::render::estimate;
 use whitted::trace::RayCount;
@@ -84,20 +84,17 @@ impl<'p> Animation<'p> {
     /// (on one thread) apart.
     pub fn render_timed(&self, frame: u32) -> Result<Timed, AnimError> {
         let format = self.format();
+        let plan = self.plan(frame);
         let mut bytes = Vec::new();
         let start = Instant::now();
         let (encoded, rays, render_s) = if format.is_layered() {
-            let (layers, rays) = self.render_layers(frame, format.passes())?;
+            let (layers, rays) = self.render_layers(&plan, format.passes())?;
             let render_s = start.elapsed().as_secs_f64();
-            (
-                encode_layers(layers, format, &[], &mut bytes),
-                rays,
-                render_s,
-            )
+            (encode(layers, format, &[], &mut bytes), rays, render_s)
         } else {
-            let (image, rays) = self.render(frame)?;
+            let (image, rays) = self.render(&plan)?;
             let render_s = start.elapsed().as_secs_f64();
-            (encode_with(&image, format, &[], &mut bytes), rays, render_s)
+            (encode(&image, format, &[], &mut bytes), rays, render_s)
         };
         encoded.map_err(|source| AnimError::Write { frame, source })?;
         Ok(Timed {

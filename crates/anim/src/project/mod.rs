@@ -1,13 +1,19 @@
 //! One loader for everything a manifest names (`Project`: the manifest, its scene and the
-//! timeline built from both), and `Animation`, which draws any frame of a project: the
-//! tracer run on the scene of frame t with the camera of frame t, or, with motion blur,
-//! the mean of the sub-frames at the frame's sample times.
+//! timeline built from both), and `Animation`, which draws any frame of a project from
+//! the frame's plan (`plan`: its states, digest and path, built once): the tracer run on
+//! the scene of frame t with the camera of frame t, or, with motion blur, the mean of the
+//! sub-frames at the frame's sample times (`draw`).
 //!
 //! A timeline whose tracks leave geometry alone (colours, lights, fog, coefficients other
 //! than Kt) shares one acceleration structure, built once, across all frames; otherwise
 //! each sample builds its own from its scene.
 
+mod digest;
+mod draw;
+mod plan;
 mod settings;
+pub(crate) use digest::hex;
+pub use plan::{FramePlan, Samples};
 pub use settings::Settings;
 
 use super::error::AnimError;
@@ -16,20 +22,12 @@ use super::timeline::{Field, Snapshot, Timeline};
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, OnceLock};
 use whitted::accel::Accel;
-use whitted::base::Color;
 use whitted::base::Frame;
 use whitted::camera::{Camera, Lens, NonSquare, VIEW_HEIGHT, VIEW_WIDTH};
 use whitted::limits::size_ok;
 use whitted::output::ImageFormat;
-use whitted::passes::record::{finish, Sums};
-use whitted::passes::{Layers, PassSet};
-use whitted::pick::Pick;
-use whitted::render::layers::camera_matrices;
-use whitted::render::{
-    control, render_add_with, render_layers_add, render_with, Adaptive, Antialias,
-};
+use whitted::render::Adaptive;
 use whitted::scene::{Scene, SceneError};
-use whitted::trace::{RayCount, Tracer};
 
 /// Bumped whenever an intended change of the library moves pixels: frames recorded under
 /// another version are stale (SPEC §8).
@@ -235,132 +233,12 @@ impl<'p> Animation<'p> {
     /// times) sits on the point it looks at.
     pub fn check_cameras(&self, frames: &[u32]) -> Result<(), AnimError> {
         for &frame in frames {
-            for t in self.timeline.times(frame) {
-                if self.camera(&self.timeline.at(t)).is_none() {
-                    return Err(self.camera_error(frame));
-                }
+            let plan = self.plan(frame);
+            if plan.samples().any(|s| self.camera(&s).is_none()) {
+                return Err(self.camera_error(frame));
             }
         }
         Ok(())
-    }
-
-    fn tracer<'s>(&self, scene: &'s Scene) -> Tracer<'s> {
-        match &self.shared {
-            Some(accel) => Tracer::with_accel(scene, Arc::clone(accel)),
-            None => Tracer::new(scene),
-        }
-    }
-
-    /// Draws frame `frame`: exactly what `raytrace` draws of the scene of that frame with
-    /// its camera; with motion blur the mean of its sub-frames (each sample clamped, all
-    /// averaged, then rounded).
-    pub fn render(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
-        let _drawing = control::frame_in_progress();
-        let drawn = self.draw(frame)?;
-        // A signal stopped the row loops: the frame is incomplete and must not be kept.
-        if let Some(sig) = control::cancelled() {
-            return Err(AnimError::Interrupted(sig));
-        }
-        self.tell(frame, || &drawn.0);
-        Ok(drawn)
-    }
-
-    /// Tells the observer (if any) of finished frame `frame`, whose picture `picture`
-    /// makes: the one place `render` and `render_layers` (an EXR's frames) both end in.
-    fn tell<F: std::borrow::Borrow<Frame>>(&self, frame: u32, picture: impl FnOnce() -> F) {
-        if let Some(observe) = &self.observer {
-            observe(frame, picture().borrow());
-        }
-    }
-
-    fn draw(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
-        let (w, h) = (self.width, self.height);
-        let n = self
-            .antialias
-            .map_or(Antialias::Grid(self.samples), Antialias::Adaptive);
-        let times = self.timeline.times(frame);
-        if let [t] = times[..] {
-            let state = self.timeline.at(t);
-            let camera = self
-                .camera(&state)
-                .ok_or_else(|| self.camera_error(frame))?;
-            return Ok(render_with(&self.tracer(&state.scene), &camera, w, h, n));
-        }
-        let mut sum = vec![Color::ZERO; w as usize * h as usize];
-        let mut rays = RayCount::default();
-        for &t in &times {
-            if control::cancelled().is_some() {
-                break; // the frame is discarded: no need to set up further sub-frames
-            }
-            let state = self.timeline.at(t);
-            let camera = self
-                .camera(&state)
-                .ok_or_else(|| self.camera_error(frame))?;
-            rays = rays + render_add_with(&self.tracer(&state.scene), &camera, w, h, n, &mut sum);
-        }
-        Ok((Frame::from_sum(&sum, times.len() as u32, w, h), rays))
-    }
-
-    /// What the camera ray through the centre of pixel (x, y) of frame `frame` hits
-    /// (`whitted::pick`), with this animation's camera (its size, `fov` and `roll`) at the
-    /// frame's own time (motion blur's sub-frames are around it) and its shared tracer.
-    pub fn pick(&self, frame: u32, x: u32, y: u32) -> Result<Option<Pick>, AnimError> {
-        let state = self.timeline.at(f64::from(frame));
-        let camera = self
-            .camera(&state)
-            .ok_or_else(|| self.camera_error(frame))?;
-        Ok(whitted::pick::pick(
-            &self.tracer(&state.scene),
-            &camera,
-            x,
-            y,
-        ))
-    }
-
-    /// Draws frame `frame` as a frame of layers: the unclamped beauty (the mean of every
-    /// sample of every sub-frame) and `passes`, from one trace per sample. The header's
-    /// camera is the one at the frame's own time.
-    pub fn render_layers(
-        &self,
-        frame: u32,
-        passes: PassSet,
-    ) -> Result<(Layers, RayCount), AnimError> {
-        let _drawing = control::frame_in_progress();
-        let (w, h, n) = (self.width, self.height, self.samples);
-        let times = self.timeline.times(frame);
-        let mut sums = Sums::new(w as usize * h as usize, passes);
-        let mut rays = RayCount::default();
-        for &t in &times {
-            let state = self.timeline.at(t);
-            let camera = self
-                .camera(&state)
-                .ok_or_else(|| self.camera_error(frame))?;
-            let tracer = self.tracer(&state.scene);
-            rays = rays + render_layers_add(&tracer, &camera, w, h, n, passes, &mut sums);
-        }
-        // A signal stopped the row loops: the frame is incomplete and must not be kept.
-        if let Some(sig) = control::cancelled() {
-            return Err(AnimError::Interrupted(sig));
-        }
-        let state = self.timeline.at(f64::from(frame));
-        let matrices = self.camera(&state).map(|c| camera_matrices(&c));
-        // Each camera sample is its lens rays when the scene has a `focus` record.
-        let lens = whitted::render::rays_per_sample(&state.scene);
-        let count = n * n * times.len() as u32 * lens;
-        let layers = finish(&sums, count, w, h, passes, &state.scene, matrices);
-        self.tell(frame, || layers.to_frame());
-        Ok((layers, rays))
-    }
-
-    /// The 8-bit picture of frame `frame` as its files hold it: `render`, or for a layered
-    /// format (EXR) its beauty through the clamp-and-round of SPEC §2 (what a preview or a
-    /// video shows of an EXR frame).
-    pub fn render_picture(&self, frame: u32) -> Result<(Frame, RayCount), AnimError> {
-        if self.format().is_layered() {
-            let (layers, rays) = self.render_layers(frame, PassSet::NONE)?;
-            return Ok((layers.to_frame(), rays));
-        }
-        self.render(frame)
     }
 
     /// The image format of the frame files.
@@ -382,9 +260,9 @@ impl<'p> Animation<'p> {
         }
     }
 
-    /// The final path of frame `frame` inside `dir`.
+    /// The final path of frame `frame` inside `dir` (`OutputSpec::path`).
     pub fn frame_path(&self, dir: &Path, frame: u32) -> PathBuf {
-        dir.join(self.manifest.output.file_name(frame, self.manifest.frames))
+        self.manifest.output.path(dir, frame, self.manifest.frames)
     }
 }
 

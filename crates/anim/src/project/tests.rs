@@ -1,5 +1,12 @@
 use super::*;
-use whitted::render::render;
+use whitted::render::{render, Options, Picture};
+use whitted::trace::Tracer;
+
+/// A still of `scene` through `cam` at 16×12, one sample a pixel.
+fn still(scene: &Scene, cam: &Camera) -> Frame {
+    let grid = Options::grid(16, 12, 1);
+    render(&Tracer::new(scene), cam, &grid, Picture::new()).0
+}
 
 fn project(manifest: &str, scene: &str) -> (tempfile::TempDir, Project) {
     let dir = tempfile::tempdir().unwrap();
@@ -37,7 +44,7 @@ fn motion_blur_is_the_mean_of_the_sub_frames() {
     let blur = "[render]\nmotion_blur = { shutter = 1.0, samples = 4 }\n";
     let (_d, p) = project(&format!("{blur}{track}"), SCENE);
     let anim = Animation::new(&p).unwrap();
-    let (frame, _) = anim.render(5).unwrap();
+    let (frame, _) = anim.render(&anim.plan(5)).unwrap();
     // Each sub-frame drawn on its own, as a still of the scene at t_k.
     let stills: Vec<Frame> = p
         .timeline
@@ -46,7 +53,7 @@ fn motion_blur_is_the_mean_of_the_sub_frames() {
         .map(|&t| {
             let s = p.timeline.at(t);
             let cam = Camera::new(s.eye, s.look_at, 16, 12).unwrap();
-            render(&Tracer::new(&s.scene), &cam, 16, 12, 1).0
+            still(&s.scene, &cam)
         })
         .collect();
     let mut differs = false;
@@ -70,8 +77,7 @@ fn one_structure_serves_frames_whose_geometry_holds() {
     // Drawn through the shared structure, frame 4 is the still of its scene.
     let s = p.timeline.at(4.0);
     let cam = Camera::new(s.eye, s.look_at, 16, 12).unwrap();
-    let still = render(&Tracer::new(&s.scene), &cam, 16, 12, 1).0;
-    assert_eq!(anim.render(4).unwrap().0, still);
+    assert_eq!(anim.render(&anim.plan(4)).unwrap().0, still(&s.scene, &cam));
     let moving = "[[track]]\ntarget = \"sphere 1 radius\"\nkeys = [{ frame = 0, value = 1.0 }, { frame = 9, value = 0.5 }]\n";
     let (_d, p) = project(moving, SCENE);
     assert!(Animation::new(&p).unwrap().shared.is_none());

@@ -2,8 +2,9 @@
 //! track's value alone (SPEC §1's bounds, `Target::check`), and each extension record a
 //! track changes, with all of its tracks at once (the reader's bounds, §16).
 
+use super::bind::invalid;
 use super::target::{self, Field};
-use super::{invalid, Kind, Timeline, Track};
+use super::{Kind, Timeline, Track};
 use crate::refusal::ManifestError;
 
 impl Timeline {

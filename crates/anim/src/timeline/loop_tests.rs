@@ -4,6 +4,7 @@
 
 use super::*;
 use crate::manifest::Manifest;
+use crate::refusal::ManifestError;
 use std::path::Path;
 use whitted::scene::ShapeSpec;
 

@@ -1,5 +1,6 @@
 use super::*;
 use crate::manifest::Manifest;
+use crate::refusal::ManifestError;
 use std::path::Path;
 
 const SCENE: &str = "8 6  0 2 10  0 1 0  1 30  2 1 0 1

@@ -77,12 +77,12 @@ pub fn draw(
 ) -> Result<(Vec<u8>, u32, u32), AnimError> {
     let (w, h) = scaled_size(project, scale);
     let anim = Animation::with_size(project, w, h)?;
-    let (image, _) = anim.render_picture(frame)?;
+    let (image, _) = anim.render_picture(&anim.plan(frame))?;
     let bytes = match encoding {
         Encoding::Raw => image.pixels,
         Encoding::Png => {
             let mut out = Vec::new();
-            encode(&image, ImageFormat::Png, &mut out)
+            encode(&image, ImageFormat::Png, &[], &mut out)
                 .map_err(|e| AnimError::Write { frame, source: e })?;
             out
         }

@@ -191,7 +191,13 @@ fn back_of_triangle(double_sided: bool) -> [u8; 3] {
     let scene = m.scene_at(0.0, &[], &[]).unwrap();
     let tracer = crate::trace::Tracer::new(&scene);
     let (w, h) = (scene.width, scene.height);
-    let (frame, _) = crate::render(&tracer, &scene.camera(), w, h, 1);
+    let grid = crate::render::Options::grid(w, h, 1);
+    let (frame, _) = crate::render(
+        &tracer,
+        &scene.camera(),
+        &grid,
+        crate::render::Picture::new(),
+    );
     // The view is centred on the turned triangle's box, (−0.5, 0.5); its centroid,
     // (−1/3, 1/3), lies right of and below that centre.
     let i = ((h / 2 + 20) * w + w / 2 + 40) as usize * 3;

@@ -1,5 +1,6 @@
 //! Image files (SPEC §3, §12), chosen by extension, one file per format behind one
-//! interface (`encode_layers`: a frame of layers in, each format takes what it can carry):
+//! interface (`encode`: an 8-bit picture or a frame of layers in, `Image`, each format
+//! takes what it can carry):
 //!
 //! | format | module | pixels | metadata |
 //! |---|---|---|---|
@@ -14,8 +15,14 @@
 //!
 //! `read_rgb` reads a frame file of any of them back as its 8-bit picture (`read`).
 //!
-//! `write_atomic` writes to a temporary file in the destination folder and renames it into
-//! place, so a file under its final name is always complete.
+//! `write_atomic` encodes to a temporary file in the destination folder and renames it
+//! into place, so a file under its final name is always complete.
+//!
+//! ```text
+//! write_atomic(path, &frame, ImageFormat::Png, &[])?;     // a picture, no metadata
+//! write_atomic(path, layers, format, &stamp)?;           // layers (taken), with metadata
+//! encode(&frame, format, &[], &mut bytes)?;              // the same bytes, in memory
+//! ```
 
 #[cfg(feature = "exr")]
 pub mod colour;
@@ -124,25 +131,53 @@ pub fn check_target(path: &Path) -> Result<(), OutputError> {
     Ok(())
 }
 
-/// Encodes `frame` in `format` into `out`.
-pub fn encode(frame: &Frame, format: ImageFormat, out: &mut dyn Write) -> Result<(), OutputError> {
-    encode_with(frame, format, &[], out)
+/// What is written: an 8-bit picture, or a frame of layers (taken: an EXR moves their
+/// values into its image). `&Frame` and `Layers` convert into it. (Passed by value for
+/// one call: the layers' size on the stack is a few vectors' headers.)
+#[allow(clippy::large_enum_variant)]
+pub enum Image<'a> {
+    /// An 8-bit picture.
+    Picture(&'a Frame),
+    /// The beauty unclamped, the passes, alpha and the camera.
+    Layers(Layers),
 }
 
-/// Encodes the 8-bit `frame` with text metadata, `(keyword, text)` pairs (keywords of 1 to
-/// 79 ASCII characters, no line breaks in either), each format as its module says. An EXR
-/// target gets the frame's bytes as its beauty (values k/255), without passes.
-pub fn encode_with(
-    frame: &Frame,
+impl<'a> From<&'a Frame> for Image<'a> {
+    fn from(frame: &'a Frame) -> Image<'a> {
+        Image::Picture(frame)
+    }
+}
+
+impl From<Layers> for Image<'_> {
+    fn from(layers: Layers) -> Self {
+        Image::Layers(layers)
+    }
+}
+
+/// Encodes `image` in `format` (with its options: a JPEG's quality, an EXR's depth,
+/// compression, colour and passes) into `out`, with text metadata, `(keyword, text)`
+/// pairs (keywords of 1 to 79 ASCII characters, no line breaks in either; none: `&[]`),
+/// each format as its module says. EXR keeps a frame of layers whole and takes an 8-bit
+/// picture's bytes as its beauty (values k/255), without passes; the other formats take
+/// the beauty's clamp-and-round and drop the passes.
+pub fn encode<'a>(
+    image: impl Into<Image<'a>>,
     format: ImageFormat,
     meta: &[(String, String)],
     out: &mut dyn Write,
 ) -> Result<(), OutputError> {
+    let frame = match (image.into(), format) {
+        (Image::Layers(layers), ImageFormat::Exr(options)) => {
+            return exr::encode(layers, options, meta, out)
+        }
+        (Image::Layers(layers), _) => std::borrow::Cow::Owned(layers.to_frame()),
+        (Image::Picture(frame), _) => std::borrow::Cow::Borrowed(frame),
+    };
     match format {
-        ImageFormat::Raw => raw::encode(frame, out),
-        ImageFormat::Ppm => ppm::encode(frame, meta, out),
-        ImageFormat::Png => png::encode(frame, meta, out),
-        ImageFormat::Jpeg { quality } => jpeg::encode(frame, quality, meta, out),
+        ImageFormat::Raw => raw::encode(&frame, out),
+        ImageFormat::Ppm => ppm::encode(&frame, meta, out),
+        ImageFormat::Png => png::encode(&frame, meta, out),
+        ImageFormat::Jpeg { quality } => jpeg::encode(&frame, quality, meta, out),
         ImageFormat::Exr(options) => {
             let layers = Layers {
                 width: frame.width,
@@ -159,20 +194,6 @@ pub fn encode_with(
             };
             exr::encode(layers, options, meta, out)
         }
-    }
-}
-
-/// Encodes a frame of layers: EXR keeps them all (taking them: their values move into the
-/// file's image), the other formats take the beauty's clamp-and-round.
-pub fn encode_layers(
-    layers: Layers,
-    format: ImageFormat,
-    meta: &[(String, String)],
-    out: &mut dyn Write,
-) -> Result<(), OutputError> {
-    match format {
-        ImageFormat::Exr(options) => exr::encode(layers, options, meta, out),
-        other => encode_with(&layers.to_frame(), other, meta, out),
     }
 }
 
@@ -210,35 +231,14 @@ pub fn temporary_target(name: &str) -> Option<&str> {
     (random.len() == 6 && random.bytes().all(|b| b.is_ascii_alphanumeric())).then_some(target)
 }
 
-/// Writes `frame` to `path` atomically: a temporary file beside it, then a rename. On any
-/// error the temporary file is removed and nothing appears under `path`.
-pub fn write_atomic(path: &Path, frame: &Frame, format: ImageFormat) -> Result<(), OutputError> {
-    write_atomic_with(path, frame, format, &[])
-}
-
-/// `write_atomic` with text metadata (see `encode_with`).
-pub fn write_atomic_with(
+/// Writes `image` to `path` atomically, encoded as `encode` encodes it: a temporary file
+/// beside it, then a rename. On any error the temporary file is removed and nothing
+/// appears under `path`.
+pub fn write_atomic<'a>(
     path: &Path,
-    frame: &Frame,
+    image: impl Into<Image<'a>>,
     format: ImageFormat,
     meta: &[(String, String)],
-) -> Result<(), OutputError> {
-    write_atomic_by(path, |w| encode_with(frame, format, meta, w))
-}
-
-/// Writes a frame of layers to `path` atomically (see `encode_layers`, which takes them).
-pub fn write_atomic_layers(
-    path: &Path,
-    layers: Layers,
-    format: ImageFormat,
-    meta: &[(String, String)],
-) -> Result<(), OutputError> {
-    write_atomic_by(path, |w| encode_layers(layers, format, meta, w))
-}
-
-fn write_atomic_by(
-    path: &Path,
-    encode: impl FnOnce(&mut dyn Write) -> Result<(), OutputError>,
 ) -> Result<(), OutputError> {
     let io = |source| OutputError::Io {
         path: path.to_path_buf(),
@@ -248,7 +248,7 @@ fn write_atomic_by(
     let tmp = temp_beside(path).map_err(|e| io(std::io::Error::from(e.kind())))?;
     {
         let mut w = BufWriter::new(tmp.as_file());
-        encode(&mut w)?;
+        encode(image, format, meta, &mut w)?;
         w.flush().map_err(io)?;
     }
     tmp.persist(path)

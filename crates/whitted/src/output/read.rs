@@ -181,7 +181,7 @@ mod tests {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join(format!("f.{}", format.extension()));
         let meta = vec![("whitted:digest".to_string(), "d 1".to_string())];
-        super::super::write_atomic_with(&path, frame, format, &meta).unwrap();
+        super::super::write_atomic(&path, frame, format, &meta).unwrap();
         (dir, path)
     }
 

@@ -34,10 +34,10 @@ fn format_from_extension() {
 #[test]
 fn raw_and_ppm_bytes() {
     let mut raw = Vec::new();
-    encode(&frame(), ImageFormat::Raw, &mut raw).unwrap();
+    encode(&frame(), ImageFormat::Raw, &[], &mut raw).unwrap();
     assert_eq!(raw, frame().pixels);
     let mut ppm = Vec::new();
-    encode(&frame(), ImageFormat::Ppm, &mut ppm).unwrap();
+    encode(&frame(), ImageFormat::Ppm, &[], &mut ppm).unwrap();
     assert_eq!(&ppm[..11], b"P6\n2 1\n255\n");
     assert_eq!(&ppm[11..], &frame().pixels[..]);
 }
@@ -46,7 +46,7 @@ fn raw_and_ppm_bytes() {
 fn png_round_trips() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("f.png");
-    write_atomic(&path, &frame(), ImageFormat::Png).unwrap();
+    write_atomic(&path, &frame(), ImageFormat::Png, &[]).unwrap();
     let back = image::open(&path).unwrap().to_rgb8();
     assert_eq!(back.into_raw(), frame().pixels);
     // Only the final file is left in the folder, readable by others as a new file is.
@@ -74,7 +74,7 @@ fn targets_are_checked_before_rendering() {
 fn write_errors_name_the_file_not_the_temporary_one() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("no/such/f.png");
-    let shown = write_atomic(&path, &frame(), ImageFormat::Png)
+    let shown = write_atomic(&path, &frame(), ImageFormat::Png, &[])
         .unwrap_err()
         .to_string();
     // The hidden temporary file would be `.f.png.XXXXXX.tmp`.
@@ -88,7 +88,7 @@ fn write_errors_name_the_file_not_the_temporary_one() {
 fn failed_write_leaves_nothing() {
     let dir = tempfile::tempdir().unwrap();
     let missing = dir.path().join("no/such/dir/f.png");
-    assert!(write_atomic(&missing, &frame(), ImageFormat::Png).is_err());
+    assert!(write_atomic(&missing, &frame(), ImageFormat::Png, &[]).is_err());
     assert!(!missing.exists());
 }
 

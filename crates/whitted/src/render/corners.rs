@@ -2,7 +2,7 @@
 //! average of the four rays through its corners, each clamped to 0..1 first, as
 //! supersamples are.
 
-use super::par_rows;
+use super::grid::par_rows;
 use crate::base::Color;
 use crate::base::Frame;
 use crate::camera::Camera;
@@ -11,7 +11,7 @@ use crate::trace::{RayCount, Tracer};
 /// A `width` × `height` picture whose pixels average the four of the
 /// (width + 1) × (height + 1) rays `corners` shoots through its pixel centres (a camera
 /// for that size: its pixel centres are the picture's pixel corners).
-pub fn render_corners(
+pub(super) fn picture(
     tracer: &Tracer,
     corners: &Camera,
     width: u32,

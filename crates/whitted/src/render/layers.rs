@@ -1,9 +1,11 @@
-//! The layered render: the beauty and the passes asked for, from one trace per sample
-//! (the tracer's `primary_rec` with a `passes::record::Sample` listening), in parallel
-//! over rows like `render`. The beauty here is the mean of the unclamped samples (SPEC
-//! §12); with one sample and no motion blur it is exactly the colour `render` rounds.
+//! The layered render (`Layered`, `LayeredSum`): the beauty and the passes asked for, from
+//! one trace per sample (the tracer's `primary_rec` with a `passes::record::Sample`
+//! listening), in parallel over rows like the grid's picture. The beauty here is the mean
+//! of the unclamped samples (SPEC §12); with one sample and no motion blur it is exactly
+//! the colour the picture rounds. `camera_matrices`: the EXR header's camera.
 
-use super::{par_rows, sub_pixel, Shot};
+use super::grid::{par_rows, sub_pixel};
+use super::Shot;
 use crate::accel::{Hint, TileView};
 use crate::camera::{Camera, VIEW_DISTANCE};
 use crate::optics::Ray;
@@ -18,7 +20,7 @@ use crate::trace::{RayCount, Tracer};
 /// alone (the same colours the recording path computes, added in the same order);
 /// `passes` also says whether
 /// Cryptomatte coverage is kept; the rest is cheap enough to record always.
-pub fn render_layers_add(
+pub(super) fn add(
     tracer: &Tracer,
     camera: &Camera,
     width: u32,
@@ -75,8 +77,8 @@ fn row_samples(
     }
 }
 
-/// Renders the beauty and `passes` of the tracer's scene through `camera`.
-pub fn render_layers(
+/// The beauty and `passes` of the tracer's scene through `camera`.
+pub(super) fn layers(
     tracer: &Tracer,
     camera: &Camera,
     width: u32,
@@ -85,7 +87,7 @@ pub fn render_layers(
     passes: PassSet,
 ) -> (Layers, RayCount) {
     let mut sums = Sums::new(width as usize * height as usize, passes);
-    let rays = render_layers_add(tracer, camera, width, height, samples, passes, &mut sums);
+    let rays = add(tracer, camera, width, height, samples, passes, &mut sums);
     let n = samples.max(1);
     let layers = finish(
         &sums,
@@ -142,7 +144,7 @@ pub fn camera_matrices(camera: &Camera) -> CameraMatrices {
 mod tests {
     use super::*;
     use crate::base::Color;
-    use crate::render::render;
+    use crate::render::grid::picture;
 
     const SCENE: &str = "8 6  0 1 6  0 0 0  1 20  2 1 0 1\n\
         1 0 0 0  1 1 0 0  0.5 0.3 0.2 1.5 0 0\n\
@@ -168,8 +170,8 @@ mod tests {
             let tracer = Tracer::new(&scene);
             let camera = scene.camera();
             let all = PassSet::of(&Pass::ALL);
-            let (layers, rays) = render_layers(&tracer, &camera, 8, 6, 1, all);
-            let (frame, plain_rays) = render(&tracer, &camera, 8, 6, 1);
+            let (layers, rays) = layers(&tracer, &camera, 8, 6, 1, all);
+            let (frame, plain_rays) = picture(&tracer, &camera, 8, 6, 1);
             assert_eq!(layers.to_frame(), frame);
             assert_eq!(rays, plain_rays, "one trace per sample");
             let names = crate::passes::record::BACKGROUND;
@@ -206,9 +208,9 @@ mod tests {
             Sums::Beauty(ref v) if v.len() == 48
         ));
         for n in [1, 2, 3] {
-            let (plain, rays) = render_layers(&tracer, &camera, 8, 6, n, PassSet::NONE);
+            let (plain, rays) = layers(&tracer, &camera, 8, 6, n, PassSet::NONE);
             let all = PassSet::of(&Pass::ALL);
-            let (layered, layered_rays) = render_layers(&tracer, &camera, 8, 6, n, all);
+            let (layered, layered_rays) = layers(&tracer, &camera, 8, 6, n, all);
             let bits = |l: &Layers| -> Vec<[u64; 3]> {
                 l.beauty
                     .iter()

@@ -1,9 +1,10 @@
 //! A camera sample's rays: its pinhole ray, or, when the scene has a `focus` record
 //! (SPEC §16), the Samples × Samples lens rays of the thin lens (`camera::thin_lens`)
-//! through the point where the pinhole ray meets the plane in focus. Every renderer
-//! (`render`, `render_add`, the streamed one, adaptive anti-aliasing, the layered one)
-//! takes its camera samples here, so the lens multiplies `samples`, the adaptive
-//! lattice's points and motion blur's sub-frames alike.
+//! through the point where the pinhole ray meets the plane in focus. Every loop behind
+//! `render`'s sinks but the SPD's corners (the grid's picture and sum, the streamed
+//! picture, adaptive anti-aliasing, the layered one) takes its camera samples here, so
+//! the lens multiplies `samples`, the adaptive lattice's points and motion blur's
+//! sub-frames alike.
 //!
 //! The colour of a sample with a lens is the mean of its lens rays' colours, each clamped
 //! to 0..1 first, as §7 clamps every ray before a mean; without a lens it is the pinhole

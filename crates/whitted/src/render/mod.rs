@@ -1,219 +1,87 @@
-//! One image: every pixel's camera ray traced, in parallel over rows with rayon.
+//! Drawing an image, through one door: `render(tracer, camera, &options, sink)`. The
+//! options say how the pixels are sampled (the size, the anti-aliasing: the n×n grid or
+//! adaptive, or the SPD's pixel corners); the sink says what is made of the samples and
+//! where it goes (a fresh 8-bit picture, streamed to an observer band by band if asked;
+//! a float sum to add into, for motion blur's sub-frames; a frame of layers with passes,
+//! or their sums). Every render runs on the current rayon pool, in parallel over rows
+//! or bands of rows, and its bytes do not depend on the thread count.
 //!
-//! Each pixel depends only on the scene and its own coordinates, so the bytes are the
-//! same whatever the thread count. With `samples` = n > 1 the pixel is the mean of an
-//! n×n stratified grid of sub-pixel centres, each sample clamped before averaging (see
-//! docs/decisions.md); n = 1 samples the pixel centre, as the report does.
-
-pub mod lens;
-mod stream;
-
-pub use lens::{rays_per_sample, Shot};
-pub use stream::render_observed;
-
-use crate::accel::TileView;
-use crate::base::{to_rgb, Color, Frame};
-use crate::camera::Camera;
-use crate::trace::{RayCount, Tracer};
-use rayon::prelude::*;
+//! ```text
+//! let (frame, rays) = render(&tracer, &camera, &Options::grid(w, h, 1), Picture::new());
+//! let rays = render(&tracer, &camera, &Options::new(w, h, aa), Sum(&mut sum));
+//! let (layers, rays) = render(&tracer, &camera, &options, Layered(passes));
+//! let shown = Picture::observed(16, &|y0, rows| tev.rows("img", w, y0, rows));
+//! ```
+//!
+//! Each sink goes straight to its own loop (`grid`, `stream`, `adaptive`, `corners`,
+//! `layers`): the door chooses the loop once, not per pixel.
 
 pub mod adaptive;
 pub mod control;
-pub mod corners;
+mod corners;
 pub mod estimate;
+mod grid;
 pub mod layers;
-pub use adaptive::{render_add_with, render_with, Adaptive, Antialias};
-pub use layers::{render_layers, render_layers_add};
+pub mod lens;
+mod sink;
+mod stream;
 
-/// Renders the tracer's scene through `camera` at `width`×`height` with `samples`²
-/// samples per pixel. Runs on the current rayon pool. The `Tracer` is built once per
-/// scene and shared by every frame drawn of it.
-pub fn render(
-    tracer: &Tracer,
-    camera: &Camera,
-    width: u32,
-    height: u32,
-    samples: u32,
-) -> (Frame, RayCount) {
-    let row_len = width as usize * 3;
-    let mut pixels = vec![0u8; row_len * height as usize];
-    let n = samples.max(1);
-    let view = TileView::new(camera, width, height, &tracer.scene().objects);
-    let view = view.as_ref();
-    let shot = Shot::new(tracer, camera);
-    let count = pixels
-        .par_chunks_mut(row_len)
-        .enumerate()
-        .map(|(j, row)| draw_row(tracer, view, &shot, j, n, row))
-        .reduce(RayCount::default, |a, b| a + b);
-    let frame = Frame {
-        width,
-        height,
-        pixels,
-    };
-    (frame, count)
+pub use adaptive::{Adaptive, Antialias};
+pub use lens::{rays_per_sample, Shot};
+pub use sink::{Layered, LayeredSum, Picture, Sink, Sum};
+
+use crate::camera::Camera;
+use crate::trace::Tracer;
+
+/// How a render samples its pixels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Options<'c> {
+    /// The picture's width in pixels.
+    pub width: u32,
+    /// Its height in pixels.
+    pub height: u32,
+    /// The n×n grid of samples a pixel, or adaptive anti-aliasing. Layers are drawn on
+    /// the grid: n×n, or one sample a pixel under adaptive anti-aliasing.
+    pub aa: Antialias,
+    /// The SPD's testing procedure (`crate::spd`): a camera whose pixel centres are the
+    /// picture's (width + 1) × (height + 1) pixel corners; each pixel is the mean of its
+    /// four corner rays, each clamped to 0..1 first, instead of `aa`'s samples. 8-bit
+    /// pictures only (`Picture`): the other sinks sample as `aa` says.
+    pub corners: Option<&'c Camera>,
 }
 
-/// Draws row `j` into `row` (its width·3 bytes) with n×n samples a pixel, unless the
-/// render was cancelled (then the row is left as it is and the caller discards the frame);
-/// counts the row as done. `render` and `render_observed` draw every row this way.
-/// Always inlined into the rows' closure, with `Tracer::primary_in`: when the crate's
-/// modules moved, LLVM kept the primary call out of line and the orbit took 1.8 % more
-/// instructions (callgrind, one thread); inlined, 0.8 % more than before the move.
-#[inline(always)]
-fn draw_row(
-    tracer: &Tracer,
-    view: Option<&TileView>,
-    shot: &Shot,
-    j: usize,
-    n: u32,
-    row: &mut [u8],
-) -> RayCount {
-    let mut count = RayCount::default();
-    if control::stop_row() {
-        return count;
-    }
-    match shot.pinhole() {
-        // One pinhole ray a pixel (the report's case): the row's own loop, so that the
-        // per-pixel call and its sample grid stay out of the orbit's inner loop.
-        // (A scene in linear light takes the general loop, which encodes its colours.)
-        Some(camera) if n == 1 && !tracer.scene().linear => {
-            for (i, px) in row.chunks_exact_mut(3).enumerate() {
-                let hint = view.map(|v| v.hint(i as u32, j as u32));
-                let ray = camera.ray(i as f64 + 0.5, j as f64 + 0.5);
-                let c = tracer.primary_raw(hint, &ray, &mut count);
-                px.copy_from_slice(&to_rgb(c));
-            }
-        }
-        _ => {
-            for (i, px) in row.chunks_exact_mut(3).enumerate() {
-                let c = pixel(tracer, view, shot, i as f64, j as f64, n, &mut count);
-                px.copy_from_slice(&to_rgb(c));
-            }
+impl Options<'static> {
+    /// `width` × `height`, anti-aliased as `aa` says.
+    pub fn new(width: u32, height: u32, aa: Antialias) -> Options<'static> {
+        Options {
+            width,
+            height,
+            aa,
+            corners: None,
         }
     }
-    control::row_done();
-    count
-}
 
-/// Adds, for every pixel, its colour clamped to 0..1 (the mean of its n×n clamped samples
-/// when `samples` > 1) into `sum` (width·height colours, rows top to bottom). Motion blur
-/// sums its sub-frames this way and then divides (`Frame::from_sum`), so each sample is
-/// clamped, all are averaged, then rounded, as anti-aliasing does.
-pub fn render_add(
-    tracer: &Tracer,
-    camera: &Camera,
-    width: u32,
-    height: u32,
-    samples: u32,
-    sum: &mut [Color],
-) -> RayCount {
-    let n = samples.max(1);
-    let view = TileView::new(camera, width, height, &tracer.scene().objects);
-    let view = view.as_ref();
-    let shot = Shot::new(tracer, camera);
-    par_rows(sum, width, height, |j, row, count| {
-        for (i, acc) in row.iter_mut().enumerate() {
-            let c = pixel(tracer, view, &shot, i as f64, j as f64, n, count);
-            *acc += c.clamp(Color::ZERO, Color::ONE);
-        }
-    })
-}
-
-/// The first `height` rows of `width` items of `buf` drawn in parallel, `draw(j, row,
-/// rays)` each, unless the render was cancelled (then the row is left as it is and the
-/// caller discards the frame); each row drawn counts as done. The rays of all rows.
-/// (`render` and `render_observed` have `draw_row`, the same loop over rows of bytes.)
-pub(crate) fn par_rows<T: Send>(
-    buf: &mut [T],
-    width: u32,
-    height: u32,
-    draw: impl Fn(usize, &mut [T], &mut RayCount) + Sync,
-) -> RayCount {
-    buf.par_chunks_mut(width.max(1) as usize)
-        .take(height as usize)
-        .enumerate()
-        .map(|(j, row)| {
-            let mut count = RayCount::default();
-            if control::stop_row() {
-                return count; // cancelled: the caller discards the frame
-            }
-            draw(j, row, &mut count);
-            control::row_done();
-            count
-        })
-        .reduce(RayCount::default, |a, b| a + b)
-}
-
-/// The colour of pixel (i, j) from an n×n grid of samples (each through the lens, when
-/// the shot has one); `view`, the frame's tile lists of candidates for camera rays, when
-/// there are some.
-#[inline]
-fn pixel(
-    tracer: &Tracer,
-    view: Option<&TileView>,
-    shot: &Shot,
-    i: f64,
-    j: f64,
-    n: u32,
-    count: &mut RayCount,
-) -> Color {
-    let view = view.map(|v| v.hint(i as u32, j as u32));
-    if n == 1 {
-        return shot.color(tracer, view, i + 0.5, j + 0.5, count);
+    /// `width` × `height` with n×n samples a pixel (1: the pixel centre, the report's).
+    pub fn grid(width: u32, height: u32, n: u32) -> Options<'static> {
+        Options::new(width, height, Antialias::Grid(n))
     }
-    let step = 1.0 / n as f64;
-    let mut sum = Color::ZERO;
-    for b in 0..n {
-        for a in 0..n {
-            let (x, y) = sub_pixel(i, j, a, b, step);
-            let c = shot.color(tracer, view, x, y, count);
-            sum += c.clamp(Color::ZERO, Color::ONE);
+}
+
+impl Options<'_> {
+    /// The side of the grid layers are drawn on: n, or 1 under adaptive anti-aliasing
+    /// (whose rays are counted from the one corner sample a pixel shares).
+    pub fn grid_side(&self) -> u32 {
+        match self.aa {
+            Antialias::Grid(n) => n,
+            Antialias::Adaptive(_) => 1,
         }
     }
-    sum / (n * n) as f64
 }
 
-/// Where sample (a, b) of pixel (i, j)'s n×n grid (`step` = 1/n) sits: the centre of its
-/// cell, (i + (a + ½)/n, j + (b + ½)/n); with n = 1 exactly the pixel's centre
-/// (i + 0.5, j + 0.5), since (0 + 0.5)·1.0 is 0.5.
-#[inline]
-pub(crate) fn sub_pixel(i: f64, j: f64, a: u32, b: u32, step: f64) -> (f64, f64) {
-    (i + (a as f64 + 0.5) * step, j + (b as f64 + 0.5) * step)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn sub_pixel_by_hand() {
-        // 2×2 grid of pixel (3, 5): the cells' centres at quarters.
-        assert_eq!(sub_pixel(3.0, 5.0, 0, 0, 0.5), (3.25, 5.25));
-        assert_eq!(sub_pixel(3.0, 5.0, 1, 0, 0.5), (3.75, 5.25));
-        assert_eq!(sub_pixel(3.0, 5.0, 1, 1, 0.5), (3.75, 5.75));
-        // One sample: the centre, bit for bit.
-        assert_eq!(sub_pixel(639.0, 479.0, 0, 0, 1.0), (639.5, 479.5));
-    }
-
-    #[test]
-    fn one_summed_sub_frame_is_the_frame() {
-        let scene = crate::Scene::parse(
-            "6 4  0 0 5  0 0 0  2 9  1 1 0 1\n\
-             1 0 0 0  1 1 0 0  0.5 0.3 0 1 0 0\n\
-             0 -1 0  0 1 0  2 1 1 1 1 0 0 0 0 0 0  1 0 0 1 0 0\n\
-             0 5 5  1 1 1  1",
-            "t.txt",
-        )
-        .unwrap();
-        let tracer = Tracer::new(&scene);
-        let camera = scene.camera();
-        for n in [1, 2] {
-            let (frame, rays) = render(&tracer, &camera, 6, 4, n);
-            let mut sum = vec![Color::ZERO; 24];
-            let summed = render_add(&tracer, &camera, 6, 4, n, &mut sum);
-            assert_eq!(Frame::from_sum(&sum, 1, 6, 4), frame);
-            assert_eq!(summed, rays);
-        }
-    }
+/// Draws the tracer's scene through `camera` as `options` say, into `sink`: what the sink
+/// makes (a picture or layers and their rays, or the rays alone for the sums). Runs on
+/// the current rayon pool. The `Tracer` is built once per scene and shared by every frame
+/// drawn of it.
+pub fn render<S: Sink>(tracer: &Tracer, camera: &Camera, options: &Options, sink: S) -> S::Made {
+    sink.draw(tracer, camera, options)
 }

@@ -1,23 +1,23 @@
-//! `render` with an observer: the image is drawn in bands of whole rows, the rows of a
-//! band in parallel as `render` draws them, and each finished band is handed to the
-//! observer (a tev display, say) before the next starts. Every row goes through the
-//! same `draw_row` as `render`'s, so the frame, and every band streamed, is exactly
-//! `render`'s bytes.
+//! The grid's picture with an observer (`Picture::observed`): the image is drawn in bands
+//! of whole rows, the rows of a band in parallel as `grid::picture` draws them, and each
+//! finished band is handed to the observer (a tev display, say) before the next starts.
+//! Every row goes through the same `draw_row` as `grid::picture`'s, so the frame, and
+//! every band streamed, is exactly the unobserved picture's bytes.
 //!
 //! ```text
-//! render_observed(&tracer, &camera, w, h, samples, 16, &|y0, rows| tev.rows("img", w, y0, rows))
+//! render(&tracer, &camera, &Options::grid(w, h, n), Picture::observed(16, &|y0, rows| tev.rows("img", w, y0, rows)))
 //! ```
 
-use super::draw_row;
+use super::grid::draw_row;
 use crate::accel::TileView;
 use crate::base::Frame;
 use crate::camera::Camera;
 use crate::trace::{RayCount, Tracer};
 use rayon::prelude::*;
 
-/// Renders as `render` does, `band` rows at a time (at least 1), calling
+/// Draws as `grid::picture` does, `band` rows at a time (at least 1), calling
 /// `observe(first_row, band_pixels)` with each finished band, top to bottom.
-pub fn render_observed(
+pub(super) fn picture(
     tracer: &Tracer,
     camera: &Camera,
     width: u32,
@@ -82,10 +82,10 @@ mod tests {
         let tracer = Tracer::new(&scene);
         let camera = scene.camera();
         for (samples, band) in [(1, 2), (2, 1), (1, 100)] {
-            let (want, rays) = super::super::render(&tracer, &camera, 7, 5, samples);
+            let (want, rays) = super::super::grid::picture(&tracer, &camera, 7, 5, samples);
             let seen = Mutex::new(vec![0u8; 7 * 5 * 3]);
             let starts = Mutex::new(Vec::new());
-            let (got, counted) = render_observed(&tracer, &camera, 7, 5, samples, band, &|y, p| {
+            let (got, counted) = picture(&tracer, &camera, 7, 5, samples, band, &|y, p| {
                 seen.lock().unwrap()[y as usize * 21..][..p.len()].copy_from_slice(p);
                 starts.lock().unwrap().push(y);
             });

@@ -1,25 +1,24 @@
 //! One picture of a scene, `raytrace`'s run: the scene's camera at a size and lens, the
-//! warning before an enormous request (`estimate::Enormous`), and the drawing, streamed
-//! to a live display as it goes.
+//! warning before an enormous request (`estimate::Enormous`), and the drawing, through
+//! the renderer's one door with any of its sinks (a picture, streamed to a live display
+//! as it goes if asked, or layers).
 //!
 //! ```text
 //! let still = Still::new(&scene, native, (w, h), &lens, aa)?;   // None: eye on look_at
 //! still.enormous()                → Some(Enormous { rays, seconds, .. }) past 2^28 rays
-//! still.render_shown(&display, "raytrace: out.png", "raytrace") → (Frame, RayCount)
+//! still.render(Picture::observed(STREAM_BAND, &send)) → (Frame, RayCount)
+//! still.render(Layered(passes))   → (Layers, RayCount)
 //! ```
 
 mod request;
 pub use request::{Done, Job, Request, StillError};
 
-use crate::base::Frame;
 use crate::camera::{Camera, Lens};
-use crate::display::{Display, Tev};
-use crate::passes::{Layers, PassSet};
 use crate::render::estimate::{self, Enormous};
-use crate::render::{render_layers, render_observed, render_with, Antialias};
+use crate::render::{render, Antialias, Options, Picture, Sink};
 use crate::scene::Scene;
-use crate::spd::{render_corners, Rules};
-use crate::trace::{RayCount, Tracer};
+use crate::spd::Rules;
+use crate::trace::Tracer;
 
 /// Rows per band streamed to tev: a band is a few milliseconds of work at the report's
 /// sizes, so the picture fills in smoothly.
@@ -83,19 +82,19 @@ impl<'s> Still<'s> {
         Some(self)
     }
 
-    /// n of the n×n grid (1 under adaptive anti-aliasing, whose rays are counted from
-    /// the one corner sample a pixel shares).
-    fn samples(&self) -> u32 {
-        match self.aa {
-            Antialias::Grid(n) => n,
-            Antialias::Adaptive(_) => 1,
+    /// How the picture is sampled: its size, its anti-aliasing, and the corners under
+    /// the SPD's procedure.
+    fn options(&self) -> Options<'_> {
+        Options {
+            corners: self.corners.as_ref(),
+            ..Options::new(self.width, self.height, self.aa)
         }
     }
 
     /// Past `estimate::ENORMOUS` camera rays: the count and the seconds a 1/8-size sample,
     /// drawn as the picture will be (its anti-aliasing), predicts on the current pool.
     pub fn enormous(&self) -> Option<Enormous> {
-        let (w, h, n) = (self.width, self.height, self.samples());
+        let (w, h, n) = (self.width, self.height, self.options().grid_side());
         // A `focus` record traces its lens rays for every camera sample.
         let lens = u64::from(crate::render::rays_per_sample(self.scene));
         let rays = estimate::camera_rays(w, h, n, 1, 1).saturating_mul(lens);
@@ -113,7 +112,8 @@ impl<'s> Still<'s> {
         )
         .map(|cam| {
             let t = std::time::Instant::now();
-            render_with(&self.tracer, &cam, small.0, small.1, self.aa);
+            let sampled = Options::new(small.0, small.1, self.aa);
+            render(&self.tracer, &cam, &sampled, Picture::new());
             let sample = estimate::camera_rays(small.0, small.1, n, 1, 1).saturating_mul(lens);
             estimate::predict(rays, sample, t.elapsed().as_secs_f64())
         });
@@ -128,43 +128,10 @@ impl<'s> Still<'s> {
         })
     }
 
-    /// The picture.
-    pub fn render(&self) -> (Frame, RayCount) {
-        if let Some(corners) = &self.corners {
-            return render_corners(&self.tracer, corners, self.width, self.height);
-        }
-        render_with(&self.tracer, &self.camera, self.width, self.height, self.aa)
-    }
-
-    /// The picture, shown on `display` as image `name` while it is drawn: a grid's rows
-    /// in bands of `STREAM_BAND` as they finish, an adaptive picture whole once drawn (its
-    /// corner lattice comes first). A missing viewer: one warning, `PROGRAM: warning: …`.
-    pub fn render_shown(
-        &self,
-        display: &Display,
-        name: &str,
-        program: &'static str,
-    ) -> (Frame, RayCount) {
-        let Display::Tev(addr) = display;
-        let tev = Tev::connect_stderr(addr, program);
-        let (w, h) = (self.width, self.height);
-        tev.create(name, w, h);
-        match self.aa {
-            Antialias::Adaptive(_) => {
-                let drawn = self.render();
-                tev.rows(name, w, 0, &drawn.0.pixels);
-                drawn
-            }
-            Antialias::Grid(n) => {
-                let send = |y0: u32, rows: &[u8]| tev.rows(name, w, y0, rows);
-                render_observed(&self.tracer, &self.camera, w, h, n, STREAM_BAND, &send)
-            }
-        }
-    }
-
-    /// The beauty and `passes` (a grid's samples).
-    pub fn render_layers(&self, passes: PassSet) -> (Layers, RayCount) {
-        let (w, h, n) = (self.width, self.height, self.samples());
-        render_layers(&self.tracer, &self.camera, w, h, n, passes)
+    /// The picture (`Picture`, observed or not) or its layers (`Layered`), drawn as the
+    /// still's options say (a picture through the pixel corners under the SPD's
+    /// procedure).
+    pub fn render<S: Sink>(&self, sink: S) -> S::Made {
+        render(&self.tracer, &self.camera, &self.options(), sink)
     }
 }

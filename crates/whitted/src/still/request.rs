@@ -10,18 +10,16 @@
 //! eprintln!("raytrace: {}", done.summary());  // "wrote out.png (640×480, 1 sample(s)/px) in …"
 //! ```
 
-use super::Still;
-use crate::base::Transfer;
+use super::{Still, STREAM_BAND};
+use crate::base::{Frame, Transfer};
 use crate::camera::{Lens, NonSquare};
-use crate::display::Display;
+use crate::display::{Display, Tev};
 use crate::exit::Outcome;
-use crate::output::{
-    check_target, write_atomic, write_atomic_layers, ExrDepth, ImageFormat, OutputError,
-};
+use crate::output::{check_target, write_atomic, ExrDepth, ImageFormat, OutputError};
 use crate::passes::{visible::picture, Pass, PassSet};
 use crate::render::adaptive::AntialiasError;
 use crate::render::estimate::Enormous;
-use crate::render::{Adaptive, Antialias};
+use crate::render::{Adaptive, Antialias, Layered, Picture};
 use crate::scene::{Scene, SceneError};
 use crate::trace::RayCount;
 use std::path::{Path, PathBuf};
@@ -259,29 +257,26 @@ impl Job {
         let start = Instant::now();
         let (frame, rays) = if self.format.is_layered() || self.request.pass.is_some() {
             let passes = (self.request.pass).map_or(self.format.passes(), |p| PassSet::of(&[p]));
-            let (layers, rays) = still.render_layers(passes);
+            let (layers, rays) = still.render(Layered(passes));
             // A --pass is written as a picture below; an .exr is written here, whole.
             let frame = match self.request.pass {
                 Some(p) => Some(picture(&layers, p).ok_or(StillError::PassNotDrawn)?),
                 None => {
-                    write_atomic_layers(&self.out, layers, self.format, &[])?;
+                    write_atomic(&self.out, layers, self.format, &[])?;
                     None
                 }
             };
             (frame, rays)
         } else {
             let (frame, rays) = match &self.request.display {
-                None => still.render(),
-                Some(display) => {
-                    let name = format!("raytrace: {}", self.out.display());
-                    still.render_shown(display, &name, "raytrace")
-                }
+                None => still.render(Picture::new()),
+                Some(display) => self.shown(&still, display),
             };
             (Some(frame), rays)
         };
         let seconds = start.elapsed().as_secs_f64();
         if let Some(frame) = &frame {
-            write_atomic(&self.out, frame, self.format)?;
+            write_atomic(&self.out, frame, self.format, &[])?;
         }
         let size = (self.scene.width, self.scene.height);
         let (out, aa) = (self.out.clone(), self.aa());
@@ -292,6 +287,20 @@ impl Job {
             rays,
             seconds,
         })
+    }
+
+    /// The picture, shown on `display` as image `raytrace: OUT` while it is drawn: a
+    /// grid's rows in bands of `STREAM_BAND` as they finish, an adaptive picture whole
+    /// once drawn (its corner lattice comes first). A missing viewer: one warning,
+    /// `raytrace: warning: …`.
+    fn shown(&self, still: &Still, display: &Display) -> (Frame, RayCount) {
+        let Display::Tev(addr) = display;
+        let tev = Tev::connect_stderr(addr, "raytrace");
+        let name = format!("raytrace: {}", self.out.display());
+        let w = still.width;
+        tev.create(&name, w, still.height);
+        let send = |y0: u32, rows: &[u8]| tev.rows(&name, w, y0, rows);
+        still.render(Picture::observed(STREAM_BAND, &send))
     }
 }
 

@@ -220,7 +220,7 @@ fn copy_images(f: &FrameReport, dir: &Path) -> Result<(), ExportError> {
 }
 
 fn write_png(path: &Path, frame: &Frame) -> Result<(), ExportError> {
-    write_atomic(path, frame, ImageFormat::Png).map_err(|e| ExportError::Io {
+    write_atomic(path, frame, ImageFormat::Png, &[]).map_err(|e| ExportError::Io {
         path: path.to_path_buf(),
         source: std::io::Error::other(e.to_string()),
     })

@@ -16,7 +16,6 @@ use super::emit;
 use crate::error::AnimError;
 use crate::frames::balance::predicted_costs;
 use crate::frames::cost::{self, FrameCost};
-use crate::frames::provenance;
 use crate::frames::run;
 use crate::frames::status::ranges;
 use crate::project::{Animation, Project};
@@ -163,8 +162,9 @@ pub fn report(
 ) -> Result<StatsReport, AnimError> {
     let (mut costs, mut without) = (Vec::new(), Vec::new());
     for &f in frames {
-        match cost::read(&anim.frame_path(dir, f)) {
-            Some(c) if c.frame == f && c.digest == provenance::digest(anim, f) => costs.push(c),
+        let plan = anim.plan_in(dir, f);
+        match cost::read(plan.path()) {
+            Some(c) if c.frame == f && c.digest == plan.digest() => costs.push(c),
             _ => without.push(f),
         }
     }

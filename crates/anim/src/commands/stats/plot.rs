@@ -91,5 +91,5 @@ pub fn write(path: &Path, rows: &[Row]) -> Result<(), AnimError> {
         why,
     };
     let picture = draw(rows).map_err(fail)?;
-    write_atomic(path, &picture, ImageFormat::Png).map_err(|e| fail(e.to_string()))
+    write_atomic(path, &picture, ImageFormat::Png, &[]).map_err(|e| fail(e.to_string()))
 }

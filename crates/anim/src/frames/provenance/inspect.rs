@@ -340,7 +340,7 @@ mod tests {
         };
         let meta = vec![(DIGEST_KEY.to_string(), "d1".to_string())];
         let mut png = Vec::new();
-        whitted::output::encode_with(&frame, ImageFormat::Png, &meta, &mut png).unwrap();
+        whitted::output::encode(&frame, ImageFormat::Png, &meta, &mut png).unwrap();
         let r = png_record(&png[..]).unwrap();
         assert_eq!(r.digest.as_deref(), Some("d1"));
         let idat = png.windows(4).position(|w| w == b"IDAT").unwrap();

@@ -4,25 +4,14 @@
 //! small file per frame in the folder's hidden `.whitted-record/`, which also holds the
 //! SHA-256 of the pixels it describes (`inspect` checks a frame against its record).
 //!
-//! The digest is SHA-256 over the pixel version, the settings (`Settings`, serialized as
-//! JSON), and for each time the frame samples the scene's values after tracks (not the
-//! file's bytes: comments and layout count for nothing; the extension's shapes, lights
-//! and focus included), the eye and the look-at point, every number by its exact bits.
-//! Frames carry no render time, so that the same inputs give the same bytes on every run.
+//! The digest is SHA-256 over the pixel version, the settings and, for each time the
+//! frame samples, the scene's values after tracks and the camera, every number by its
+//! exact bits (`project::digest`); a frame's plan (`FramePlan`) makes it once. Frames
+//! carry no render time, so that the same inputs give the same bytes on every run.
 
-use crate::project::Animation;
+use crate::project::FramePlan;
 use glam::DVec3;
-use sha2::{Digest, Sha256};
 use std::path::{Path, PathBuf};
-use whitted::camera::Lens;
-use whitted::fog::Fog;
-use whitted::object::Highlight;
-use whitted::object::Object;
-use whitted::optics::T_MIN;
-use whitted::scene::{Scene, ShapeSpec};
-use whitted::shapes::csg::{Csg, Node};
-use whitted::shapes::Shape;
-use whitted::texture::Texture;
 
 /// The keyword of the digest in every format.
 pub(crate) const DIGEST_KEY: &str = "whitted:digest";
@@ -31,203 +20,11 @@ pub const DRAFT_KEY: &str = "whitted:draft";
 /// The hidden folder holding RAW frames' records.
 pub(crate) const RAW_RECORDS: &str = ".whitted-record";
 
-/// Appends the exact bits of every value of `scene` that reaches a pixel.
-fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
-    let mut f = |x: f64| out.extend_from_slice(&x.to_bits().to_le_bytes());
-    let v = |p: DVec3, f: &mut dyn FnMut(f64)| {
-        f(p.x);
-        f(p.y);
-        f(p.z);
-    };
-    f(f64::from(scene.width));
-    f(f64::from(scene.height));
-    let (fog_kind, fog_d) = match scene.fog {
-        Fog::None => (0.0, 0.0),
-        Fog::Linear(d) => (1.0, d),
-        Fog::Exponential(d) => (2.0, d),
-        Fog::ExponentialSquared(d) => (3.0, d),
-    };
-    f(fog_kind);
-    f(fog_d);
-    for (obj, spec) in scene.objects.iter().zip(&scene.specs) {
-        match *spec {
-            ShapeSpec::Sphere { center, radius } => {
-                f(1.0);
-                v(center, &mut f);
-                f(radius);
-            }
-            ShapeSpec::Plane { point, normal } => {
-                f(2.0);
-                v(point, &mut f);
-                v(normal, &mut f);
-            }
-            ShapeSpec::Cylinder {
-                axis,
-                point,
-                radius,
-            } => {
-                f(3.0);
-                v(axis, &mut f);
-                v(point, &mut f);
-                f(radius);
-            }
-            ShapeSpec::Triangle { corners } => {
-                f(5.0);
-                corners.iter().for_each(|&c| v(c, &mut f));
-            }
-            ShapeSpec::Patch { corners, normals } => {
-                f(6.0);
-                corners.iter().chain(&normals).for_each(|&c| v(c, &mut f));
-            }
-            ShapeSpec::Cone { base, apex } => {
-                f(7.0);
-                v(base.0, &mut f);
-                f(base.1);
-                v(apex.0, &mut f);
-                f(apex.1);
-            }
-            ShapeSpec::Ext {
-                item,
-                ref shape,
-                anchor,
-                ..
-            } => {
-                // The drawn shape's every value (Debug prints each f64 exactly).
-                f(8.0);
-                f(f64::from(item));
-                v(anchor, &mut f);
-                format!("{shape:?}").bytes().for_each(|b| f(f64::from(b)));
-            }
-        }
-        let (_, kind, colors) = obj.texture.record();
-        f(f64::from(kind));
-        for c in colors {
-            v(c, &mut f);
-        }
-        // A pattern's `texture_scale` (nothing at 1, so that digests stay what they were).
-        let scale = obj.texture.scale();
-        if scale != 1.0 {
-            f(11.0);
-            f(scale);
-        }
-        // A texture's scale (nothing at 1, so that digests stay what they were).
-        if obj.texture.scale() != 1.0 {
-            f(10.0);
-            f(obj.texture.scale());
-        }
-        let m = &obj.material;
-        for x in [m.kd, m.kr, m.kt, m.ior] {
-            f(x);
-        }
-        let (bump_kind, eps) = m.bump.record();
-        f(f64::from(bump_kind));
-        f(eps);
-        // An NFF's Phong highlight (nothing for the report's, so that a Scene.txt's
-        // digests stay what they were).
-        if let Highlight::Phong { ks, shine } = m.highlight {
-            f(8.0);
-            f(ks);
-            f(shine);
-        }
-    }
-    for light in &scene.lights {
-        f(4.0);
-        v(light.position, &mut f);
-        v(light.color, &mut f);
-        f(light.intensity);
-    }
-    // The extension's records, every value as tracks left it (their modifiers included),
-    // and the contents of the mesh and image files they read; nothing for a file without
-    // them, so that a Scene.txt's digests stay what they were. Debug prints each f64
-    // exactly.
-    let ext = &scene.ext;
-    if !ext.is_empty() {
-        f(10.0);
-        format!("{:?}{:?}{:?}", ext.objects, ext.lights, ext.focus)
-            .bytes()
-            .for_each(|b| f(f64::from(b)));
-    }
-    // A glTF scene's pose (time, animations, node values) and camera: its vertices
-    // follow from them and the file, whose digest (with every file it names) its meshes
-    // carry.
-    if let Some(model) = &scene.model {
-        f(11.0);
-        format!(
-            "{:?}{:?}{}{:?}{:?}",
-            model.posed, model.options, scene.linear, scene.parallel, scene.pbr
-        )
-        .bytes()
-        .for_each(|b| f(f64::from(b)));
-    }
-    let mut sources: Vec<[u8; 32]> = scene.meshes.iter().map(|m| m.source).collect();
-    image_sources(scene.objects.iter(), &mut sources);
-    for s in sources {
-        s.iter().for_each(|&b| f(f64::from(b)));
-    }
-    // An NFF's background, epsilon and view (nothing for a Scene.txt's defaults).
-    let lens = scene.lens;
-    if scene.background != DVec3::ZERO || scene.t_min != T_MIN || lens != Lens::default() {
-        f(9.0);
-        v(scene.background, &mut f);
-        f(scene.t_min);
-        f(lens.fov.unwrap_or(0.0));
-        f(lens.roll);
-        v(lens.up, &mut f);
-        f(f64::from(u8::from(lens.centres)));
-    }
-}
+pub(crate) use crate::project::hex;
 
-/// The SHA-256 of the file of every image texture of `objects` (CSG blocks' leaves
-/// included), in order.
-fn image_sources<'a>(objects: impl Iterator<Item = &'a Object>, out: &mut Vec<[u8; 32]>) {
-    for obj in objects {
-        if let Texture::Image(img) = &obj.texture {
-            out.push(img.pixels.source());
-        }
-        if let Shape::Csg(csg) = &obj.shape {
-            csg_sources(csg, out);
-        }
-    }
-}
-
-/// `image_sources` of a CSG block's leaves.
-fn csg_sources(csg: &Csg, out: &mut Vec<[u8; 32]>) {
-    for node in csg.children() {
-        match node {
-            Node::Leaf(obj) => image_sources(std::iter::once(obj), out),
-            Node::Csg(inner) => csg_sources(inner, out),
-        }
-    }
-}
-
-/// The digest of frame `frame` of `anim`, lower-case hex.
-pub fn digest(anim: &Animation, frame: u32) -> String {
-    let mut bytes = b"whitted frame\0".to_vec();
-    bytes.extend(serde_json::to_vec(&anim.settings()).unwrap_or_default());
-    // A draft's label (none for a final, whose digests stay what they were).
-    if let Some(draft) = &anim.manifest.draft {
-        bytes.extend(b"\0draft\0");
-        bytes.extend(draft.as_bytes());
-    }
-    for t in anim.timeline.times(frame) {
-        let state = anim.timeline.at(t);
-        scene_bytes(&state.scene, &mut bytes);
-        for p in [state.eye, state.look_at] {
-            for x in p.to_array() {
-                bytes.extend_from_slice(&x.to_bits().to_le_bytes());
-            }
-        }
-    }
-    hex(&Sha256::digest(&bytes))
-}
-
-pub(crate) fn hex(bytes: &[u8]) -> String {
-    bytes.iter().map(|b| format!("{b:02x}")).collect()
-}
-
-/// The metadata frame `frame` carries: the digest first, then the stamp.
-pub(crate) fn stamp(anim: &Animation, frame: u32, digest: String) -> Vec<(String, String)> {
-    let state = anim.timeline.at(f64::from(frame));
+/// The metadata the plan's frame carries: the digest first, then the stamp.
+pub(crate) fn stamp(plan: &FramePlan) -> Vec<(String, String)> {
+    let (anim, frame, state) = (plan.anim(), plan.frame(), plan.own());
     let p = |v: DVec3| format!("({}, {}, {})", v.x, v.y, v.z);
     let s = anim.settings();
     let blur = match s.motion_blur {
@@ -235,7 +32,7 @@ pub(crate) fn stamp(anim: &Animation, frame: u32, digest: String) -> Vec<(String
         None => String::new(),
     };
     let mut pairs = vec![
-        (DIGEST_KEY.into(), digest),
+        (DIGEST_KEY.into(), plan.digest().to_string()),
         (
             "Software".into(),
             format!("whitted {}", env!("CARGO_PKG_VERSION")),

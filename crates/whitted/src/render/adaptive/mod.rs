@@ -18,7 +18,6 @@
 //! bytes, a motion-blur sum, or the statistics below). When a square splits is
 //! `measure.rs`'s; the lattice's buffers are kept between frames (`store.rs`).
 
-use super::{render, render_add};
 use crate::accel::TileView;
 use crate::base::Color;
 use crate::base::{to_rgb, Frame};
@@ -90,48 +89,39 @@ pub struct Adaptively {
     pub rays: RayCount,
 }
 
-/// `render` with either anti-aliasing; `Antialias::Grid(n)` is `render(…, n)`, byte for byte.
-pub fn render_with(
+/// A fresh 8-bit picture drawn adaptively (`Picture` under `Antialias::Adaptive`).
+pub(super) fn picture(
     tracer: &Tracer,
     camera: &Camera,
     width: u32,
     height: u32,
-    aa: Antialias,
+    a: Adaptive,
 ) -> (Frame, RayCount) {
-    match aa {
-        Antialias::Grid(n) => render(tracer, camera, width, height, n),
-        Antialias::Adaptive(a) => {
-            let mut pixels = vec![0; width as usize * height as usize * 3];
-            let (rgb, _) = pixels.as_chunks_mut::<3>();
-            let rays = draw(tracer, camera, (width, height), a, BAND, rgb, |p, c, _| {
-                *p = to_rgb(c)
-            });
-            let frame = Frame {
-                width,
-                height,
-                pixels,
-            };
-            (frame, rays)
-        }
-    }
+    let mut pixels = vec![0; width as usize * height as usize * 3];
+    let (rgb, _) = pixels.as_chunks_mut::<3>();
+    let rays = draw(tracer, camera, (width, height), a, BAND, rgb, |p, c, _| {
+        *p = to_rgb(c)
+    });
+    let frame = Frame {
+        width,
+        height,
+        pixels,
+    };
+    (frame, rays)
 }
 
-/// `render_add` with either anti-aliasing (motion blur: each sub-frame adaptive).
-pub fn render_add_with(
+/// Every pixel drawn adaptively, added into `sum` (`Sum` under `Antialias::Adaptive`;
+/// motion blur: each sub-frame adaptive).
+pub(super) fn add(
     tracer: &Tracer,
     camera: &Camera,
     width: u32,
     height: u32,
-    aa: Antialias,
+    a: Adaptive,
     sum: &mut [Color],
 ) -> RayCount {
-    match aa {
-        Antialias::Grid(n) => render_add(tracer, camera, width, height, n, sum),
-        Antialias::Adaptive(a) => {
-            let size = (width, height);
-            draw(tracer, camera, size, a, BAND, sum, |acc, c, _| *acc += c)
-        }
-    }
+    let size = (width, height);
+    draw(tracer, camera, size, a, BAND, sum, |acc, c, _| *acc += c)
 }
 
 /// The statistics of one square's subdivision.

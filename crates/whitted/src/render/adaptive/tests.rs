@@ -217,26 +217,25 @@ fn shared_samples_are_traced_once() {
 
 #[test]
 fn grid_dispatch_is_render() {
+    use crate::render::{grid, render, Options, Picture, Sum};
     let scene = Scene::parse(SPHERE, "t.txt").unwrap();
     let tracer = Tracer::new(&scene);
     let camera = scene.camera();
     for n in [1, 3] {
+        let options = Options::grid(8, 8, n);
         assert_eq!(
-            render_with(&tracer, &camera, 8, 8, Antialias::Grid(n)),
-            render(&tracer, &camera, 8, 8, n)
+            render(&tracer, &camera, &options, Picture::new()),
+            grid::picture(&tracer, &camera, 8, 8, n)
         );
         let mut a = vec![Color::ZERO; 64];
         let mut b = vec![Color::ZERO; 64];
-        render_add_with(&tracer, &camera, 8, 8, Antialias::Grid(n), &mut a);
-        render_add(&tracer, &camera, 8, 8, n, &mut b);
+        render(&tracer, &camera, &options, Sum(&mut a));
+        grid::add(&tracer, &camera, 8, 8, n, &mut b);
         assert_eq!(a, b);
     }
-    let adaptive = Antialias::Adaptive(aa(0.1, 3));
-    let (frame, rays) = render_with(&tracer, &camera, 8, 8, adaptive);
+    let adaptive = Options::new(8, 8, Antialias::Adaptive(aa(0.1, 3)));
+    let (frame, rays) = render(&tracer, &camera, &adaptive, Picture::new());
     let mut sum = vec![Color::ZERO; 64];
-    assert_eq!(
-        render_add_with(&tracer, &camera, 8, 8, adaptive, &mut sum),
-        rays
-    );
+    assert_eq!(render(&tracer, &camera, &adaptive, Sum(&mut sum)), rays);
     assert_eq!(Frame::from_sum(&sum, 1, 8, 8), frame);
 }
