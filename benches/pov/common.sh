@@ -23,6 +23,10 @@ pov_setup() { # pov_setup NAME: $work = /tmp/pov-NAME.XXXXXX (removed at exit un
   }
 }
 
+median() { # median < NUMBERS: the middle one of the lines read (the lower middle of an even count)
+  sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'
+}
+
 times() { # times TIMEFILE: wall and CPU (user + sys) seconds from a /usr/bin/time -v report
   awk -F': ' '
     /Elapsed \(wall clock\)/ { n = split($2, a, ":"); w = 0; for (i = 1; i <= n; i++) w = w * 60 + a[i] }

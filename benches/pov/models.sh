@@ -19,7 +19,6 @@ RUNS=${RUNS:-3}
 pov_setup models
 names=("$@")
 [ ${#names[@]} -gt 0 ] || names=(bunny torus)
-median() { sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
 model() { # model NAME: the PLY, fit, and centre height
   case $1 in
   bunny) echo "$repo/scenes/models/bunny.ply 2 0.992" ;;

@@ -14,7 +14,6 @@ RUNS=${RUNS:-3}
 pov_setup spd
 names=("$@")
 [ ${#names[@]} -gt 0 ] || names=(balls gears mount rings teapot tetra tree)
-median() { sort -g | awk '{a[NR] = $1} END {print a[int((NR + 1) / 2)]}'; }
 printf "%-7s %9s %9s %9s %9s %8s\n" scene pov_wall pov_cpu our_wall our_cpu cpu_x
 tp=0; to=0
 for n in "${names[@]}"; do

@@ -53,6 +53,19 @@ pub enum Highlight {
     },
 }
 
+impl Highlight {
+    /// The Phong term's (Ks, Shine): NFF's as written, a glTF material's widened to f64;
+    /// none (0, 0) for the report's, whose weight is 1 − Kd.
+    #[inline(always)]
+    pub fn phong(self) -> (f64, f64) {
+        match self {
+            Highlight::Report => (0.0, 0.0),
+            Highlight::Phong { ks, shine } => (ks, shine),
+            Highlight::Gltf { ks, shine, .. } => (f64::from(ks), f64::from(shine)),
+        }
+    }
+}
+
 /// What a glTF material adds to §2's terms besides its highlight (`Highlight::Gltf`'s
 /// entry of `Scene::pbr`).
 #[derive(Clone, Copy, Debug, PartialEq)]

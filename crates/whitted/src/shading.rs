@@ -116,22 +116,10 @@ pub fn direct_rec<O: Occluders + ?Sized, R: Record>(
                 spec,
             );
         }
-        Highlight::Phong { ks, shine } => {
-            let spec = |i: f64, vr: f64| ks * i * vr.powf(shine);
-            out = lit(
-                occluders,
-                lights,
-                At { p, n, v, color, kd },
-                out,
-                shadow_rays,
-                rec,
-                spec,
-            );
-        }
-        // A glTF material's highlight is a Phong term (its tint and emission are the
-        // tracer's to add, from `Scene::pbr`).
-        Highlight::Gltf { ks, shine, .. } => {
-            let (ks, shine) = (f64::from(ks), f64::from(shine));
+        // NFF's Phong term; a glTF material's highlight is one too (its tint and
+        // emission are the tracer's to add, from `Scene::pbr`).
+        Highlight::Phong { .. } | Highlight::Gltf { .. } => {
+            let (ks, shine) = material.highlight.phong();
             let spec = |i: f64, vr: f64| ks * i * vr.powf(shine);
             out = lit(
                 occluders,
@@ -192,20 +180,8 @@ pub fn add_lights<O: Occluders + ?Sized, L: LightSource, R: Record>(
                 spec,
             )
         }
-        Highlight::Phong { ks, shine } => {
-            let spec = |i: f64, vr: f64| ks * i * vr.powf(shine);
-            lit(
-                occluders,
-                lights,
-                At { p, n, v, color, kd },
-                out,
-                shadow_rays,
-                rec,
-                spec,
-            )
-        }
-        Highlight::Gltf { ks, shine, .. } => {
-            let (ks, shine) = (f64::from(ks), f64::from(shine));
+        Highlight::Phong { .. } | Highlight::Gltf { .. } => {
+            let (ks, shine) = material.highlight.phong();
             let spec = |i: f64, vr: f64| ks * i * vr.powf(shine);
             lit(
                 occluders,

@@ -107,6 +107,14 @@ class Builder:
     def data_uri(self):
         return "data:application/octet-stream;base64," + base64.b64encode(self.padded_data()).decode("ascii")
 
+    def embedded(self):
+        """The document's accessors, bufferViews and one buffer held in a data URI."""
+        return {
+            "accessors": self.accessors,
+            "bufferViews": self.buffer_views,
+            "buffers": [{"byteLength": len(self.padded_data()), "uri": self.data_uri()}],
+        }
+
 
 def dump_json(doc, compact=False):
     if compact:
@@ -242,9 +250,7 @@ def make_interpolation():
              "samplers": [{"input": a_t2, "output": a_rot, "interpolation": "LINEAR"}],
              "channels": [{"sampler": 0, "target": {"node": 1, "path": "rotation"}}]},
         ],
-        "accessors": b.accessors,
-        "bufferViews": b.buffer_views,
-        "buffers": [{"byteLength": len(b.padded_data()), "uri": b.data_uri()}],
+        **b.embedded(),
     }
     write_text(os.path.join(GEN_DIR, "interpolation.gltf"), dump_json(doc))
 
@@ -290,9 +296,7 @@ def make_metal_rough():
             "yfov": 0.8, "aspectRatio": 4.0 / 3.0, "znear": 0.1, "zfar": 100.0}}],
         "meshes": meshes,
         "materials": materials,
-        "accessors": b.accessors,
-        "bufferViews": b.buffer_views,
-        "buffers": [{"byteLength": len(b.padded_data()), "uri": b.data_uri()}],
+        **b.embedded(),
     }
     write_text(os.path.join(GEN_DIR, "metal_rough.gltf"), dump_json(doc))
 
@@ -354,9 +358,7 @@ def make_smooth_sphere():
             {"name": "Grey", "pbrMetallicRoughness": {
                 "baseColorFactor": [0.6, 0.6, 0.6, 1.0], "metallicFactor": 0.0, "roughnessFactor": 1.0}},
         ],
-        "accessors": b.accessors,
-        "bufferViews": b.buffer_views,
-        "buffers": [{"byteLength": len(b.padded_data()), "uri": b.data_uri()}],
+        **b.embedded(),
     }
     write_text(os.path.join(GEN_DIR, "smooth_sphere.gltf"), dump_json(doc))
 
@@ -485,9 +487,7 @@ def make_alpha_modes():
         "textures": [{"sampler": 0, "source": 0}, {"sampler": 0, "source": 1}],
         "samplers": [NEAREST_CLAMP],
         "images": [{"uri": png_uri(checker)}, {"uri": png_uri(graded)}],
-        "accessors": b.accessors,
-        "bufferViews": b.buffer_views,
-        "buffers": [{"byteLength": len(b.padded_data()), "uri": b.data_uri()}],
+        **b.embedded(),
     }
     write_text(os.path.join(GEN_DIR, "alpha_modes.gltf"), dump_json(doc))
 
@@ -526,9 +526,7 @@ def make_alpha_blend():
         "textures": [{"sampler": 0, "source": 0}],
         "samplers": [NEAREST_CLAMP],
         "images": [{"uri": png_uri(texture)}],
-        "accessors": b.accessors,
-        "bufferViews": b.buffer_views,
-        "buffers": [{"byteLength": len(b.padded_data()), "uri": b.data_uri()}],
+        **b.embedded(),
     }
     write_text(os.path.join(GEN_DIR, "alpha_blend.gltf"), dump_json(doc))
 
@@ -563,9 +561,7 @@ def make_emissive():
         "textures": [{"sampler": 0, "source": 0}],
         "samplers": [NEAREST_CLAMP],
         "images": [{"uri": png_uri(texture)}],
-        "accessors": b.accessors,
-        "bufferViews": b.buffer_views,
-        "buffers": [{"byteLength": len(b.padded_data()), "uri": b.data_uri()}],
+        **b.embedded(),
     }
     write_text(os.path.join(GEN_DIR, "emissive.gltf"), dump_json(doc))
 
@@ -681,9 +677,7 @@ def make_bad():
         "scenes": [{"nodes": [0]}],
         "nodes": [{"mesh": 0}],
         "meshes": [{"primitives": [{"attributes": {"POSITION": a_pos}}]}],
-        "accessors": b.accessors,
-        "bufferViews": b.buffer_views,
-        "buffers": [{"byteLength": len(b.padded_data()), "uri": b.data_uri()}],
+        **b.embedded(),
     }
     write_bad("huge_count.gltf", doc)
 

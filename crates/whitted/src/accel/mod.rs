@@ -186,6 +186,8 @@ impl Accel {
         let mut spheres = Vec::new();
         let mut shapes: Vec<ShapePrim> = Vec::new();
         let unify = shares_tree(objects);
+        // Which objects shadow rays may cross (a mesh's faces looked at once here).
+        let glass: Vec<bool> = objects.iter().map(|o| glass_object(o, meshes)).collect();
         for (i, o) in objects.iter().enumerate() {
             let prim = |part: u32, mesh: u32| ShapePrim {
                 index: i as u32,
@@ -206,7 +208,7 @@ impl Accel {
                     };
                     // A glass mesh keeps its copies: each crossing of a shadow ray counts.
                     // Its triangles stop or cross shadow rays by their own Kt (`.mtl`).
-                    let parts = if mesh_glass(o, mesh) {
+                    let parts = if glass[i] {
                         (0..mesh.triangles.len() as u32).collect()
                     } else {
                         unique::triangles(mesh)
@@ -287,11 +289,12 @@ impl Accel {
             unbounded_opaque: unbounded(&is_opaque).into_iter().map(|(_, s)| s).collect(),
             unbounded_glass: unbounded(&is_glass).into_iter().map(|(i, _)| i).collect(),
             glass_all: (0..objects.len() as u32)
-                .filter(|&i| glass_object(&objects[i as usize], meshes))
+                .filter(|&i| glass[i as usize])
                 .collect(),
             glass_mesh: objects
                 .iter()
-                .any(|o| matches!(o.shape, Shape::Mesh(_)) && glass_object(o, meshes)),
+                .zip(&glass)
+                .any(|(o, &g)| g && matches!(o.shape, Shape::Mesh(_))),
         }
     }
 
