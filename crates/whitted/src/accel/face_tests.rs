@@ -9,6 +9,7 @@ use super::tests::{object, Rng};
 use super::*;
 use crate::base::Color;
 use crate::mesh::{Look, RECORD_LOOK};
+use crate::optics::Ray;
 use crate::shapes::{MeshRef, Sphere};
 use crate::texture::Texture;
 

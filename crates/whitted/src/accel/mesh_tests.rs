@@ -8,6 +8,7 @@ use super::tests::{object, Rng};
 use super::*;
 use crate::base::Color;
 use crate::mesh::{Mesh, Raw};
+use crate::optics::Ray;
 use crate::shapes::{MeshRef, Transform, Triangle};
 use crate::texture::Texture;
 use glam::DVec3;

@@ -3,7 +3,9 @@
 //! (an NFF's triangles and cones, the extension's shapes, and every triangle of every
 //! mesh, stored as a small reference into its mesh; empty for a report scene) and plain
 //! lists of the unbounded ones (planes, cylinders), which every query tests. Shadow rays
-//! are `shadow`'s.
+//! are `shadow`'s, nearest hits `nearest`'s; a leaf of triangles is first tested four at
+//! a time in f32 lanes (`packet`), a filter that only spares the exact test the
+//! triangles a ray clearly misses.
 //!
 //! Every query answers exactly what the linear scans over `Scene::objects` answer, bit for
 //! bit (the linear versions are kept as the reference, and the tests compare them):
@@ -19,6 +21,8 @@
 mod bvh;
 mod dirgrid;
 mod lightbuf;
+mod nearest;
+mod packet;
 mod shadow;
 mod shadow_cache;
 mod tiles;
@@ -31,8 +35,8 @@ pub use tiles::{Hint, TileView};
 
 use crate::mesh::Mesh;
 use crate::object::Object;
-use crate::optics::{Ray, T_MIN};
-use crate::shapes::{Shape, SmoothTriangle, Sphere, Triangle};
+use crate::optics::T_MIN;
+use crate::shapes::{Shape, SmoothTriangle, Sphere};
 use glam::DVec3;
 use std::sync::Arc;
 
@@ -59,6 +63,10 @@ pub struct Accel {
     /// same numbers, without going through `Shape`: 72 bytes a triangle, read in the
     /// tree's leaves).
     tris: Vec<[DVec3; 3]>,
+    /// Leaves of triangles rounded to f32 for the lanes' filter (`packet`), and for
+    /// each of `shapes`' primitive slots the packet of the leaf starting there.
+    packets: Vec<packet::TriPacket>,
+    packet_at: Vec<u32>,
     /// The spheres its `SPHERE` primitives name, in the tree's order (`shares_tree`:
     /// empty when the spheres have a tree of their own).
     spheres: Vec<Sphere>,
@@ -256,26 +264,39 @@ impl Accel {
                 .map(|(i, o)| (i as u32, o.shape.clone()))
                 .collect()
         };
-        let mut shapes = Bvh::build(shapes, |p| {
-            let (lo, hi) = if p.mesh == ShapePrim::SOLO {
-                solo[p.part as usize]
-                    .bounds()
-                    .expect("solo shapes are bounded")
-            } else if p.mesh == ShapePrim::TRI {
-                let [a, e1, e2] = tris[p.part as usize];
-                let (b, c) = (a + e1, a + e2);
-                (a.min(b).min(c), a.max(b).max(c))
-            } else if p.mesh == ShapePrim::SPHERE {
-                spheres[p.part as usize].bounds()
-            } else {
-                meshes[p.mesh as usize].bounds(p.part)
-            };
-            (lo, hi, 0.5 * (lo + hi))
-        });
+        // Leaves of triangles alone take four: the packets test four at once.
+        let leaf_max = if shapes
+            .iter()
+            .all(|p| p.mesh != ShapePrim::SOLO && p.mesh != ShapePrim::SPHERE)
+        {
+            4
+        } else {
+            2
+        };
+        let mut shapes = Bvh::build_leaves(
+            shapes,
+            |p| {
+                let (lo, hi) = if p.mesh == ShapePrim::SOLO {
+                    solo[p.part as usize]
+                        .bounds()
+                        .expect("solo shapes are bounded")
+                } else if p.mesh == ShapePrim::TRI {
+                    let [a, e1, e2] = tris[p.part as usize];
+                    let (b, c) = (a + e1, a + e2);
+                    (a.min(b).min(c), a.max(b).max(c))
+                } else if p.mesh == ShapePrim::SPHERE {
+                    spheres[p.part as usize].bounds()
+                } else {
+                    meshes[p.mesh as usize].bounds(p.part)
+                };
+                (lo, hi, 0.5 * (lo + hi))
+            },
+            leaf_max,
+        );
         let tris = in_tree_order(&mut shapes, ShapePrim::TRI, &tris);
         let spheres = in_tree_order(&mut shapes, ShapePrim::SPHERE, &spheres);
         let tree = Bvh::build(prims, Prim::bounds);
-        Accel {
+        let mut accel = Accel {
             id: shadow_cache::new_id(),
             cached: !tree.is_flat() || !shapes.is_flat(),
             tree,
@@ -295,98 +316,11 @@ impl Accel {
                 .iter()
                 .zip(&glass)
                 .any(|(o, &g)| g && matches!(o.shape, Shape::Mesh(_))),
-        }
-    }
-
-    /// The hit of a shapes' tree primitive with ray.t_min < t < t_max, if any.
-    #[inline(always)]
-    fn shape_hit(&self, prim: &ShapePrim, ray: &Ray, t_max: f64) -> Option<f64> {
-        if prim.mesh == ShapePrim::TRI {
-            let [a, e1, e2] = self.tris[prim.part as usize];
-            let (_, _, t) = Triangle::uvt_of(a, e1, e2, ray)?;
-            (t > ray.t_min && t < t_max).then_some(t)
-        } else if prim.mesh == ShapePrim::SPHERE {
-            self.spheres[prim.part as usize].hit(ray, t_max)
-        } else if prim.mesh == ShapePrim::SOLO {
-            self.solo[prim.part as usize].hit(ray, t_max)
-        } else {
-            self.meshes[prim.mesh as usize].hit(prim.part, ray, t_max)
-        }
-    }
-
-    /// The nearest hit (t, object index), as the linear scan finds it (a mesh counting
-    /// as one object).
-    #[inline]
-    pub fn nearest(&self, ray: &Ray) -> Option<(f64, usize)> {
-        self.nearest_hit(ray).map(|h| (h.t, h.index))
-    }
-
-    /// The nearest hit with, on a mesh, its triangle: the smallest t, then the object
-    /// that comes first in the file, then (two triangles of a mesh at one t: an edge)
-    /// the triangle that comes first in its file. Kept out of line: its callers (camera
-    /// and secondary rays) stay small, and the compiler's choice otherwise changed with
-    /// unrelated edits (2 % of the 10,000-sphere frame either way).
-    #[inline(never)]
-    pub fn nearest_hit(&self, ray: &Ray) -> Option<Hit> {
-        let mut best_t = f64::INFINITY;
-        let mut best_i = u32::MAX;
-        for &(i, ref shape) in &self.unbounded {
-            if let Some(t) = shape.hit(ray, f64::INFINITY) {
-                if t < best_t || (t == best_t && i < best_i) {
-                    best_t = t;
-                    best_i = i;
-                }
-            }
-        }
-        self.tree.traverse(ray, best_t, |prim, limit| {
-            if let Some(t) = prim.sphere.hit(ray, f64::INFINITY) {
-                if t < best_t || (t == best_t && prim.index < best_i) {
-                    best_t = t;
-                    best_i = prim.index;
-                    return Some(t);
-                }
-            }
-            Some(limit)
-        });
-        let mut best_part = NO_PART;
-        if !self.shapes.is_empty() {
-            self.shapes.traverse(
-                ray,
-                best_t,
-                #[inline(always)]
-                |prim, limit| {
-                    if let Some(t) = self.shape_hit(prim, ray, f64::INFINITY) {
-                        let part = if prim.is_own() { NO_PART } else { prim.part };
-                        if t < best_t || (t == best_t && (prim.index, part) < (best_i, best_part)) {
-                            best_t = t;
-                            best_i = prim.index;
-                            best_part = part;
-                            return Some(t);
-                        }
-                    }
-                    Some(limit)
-                },
-            );
-        }
-        (best_i != u32::MAX).then_some(Hit {
-            t: best_t,
-            index: best_i as usize,
-            part: best_part,
-        })
-    }
-
-    /// The object a hit at `p` on `part` of mesh object `obj` is shaded as: that triangle
-    /// (smooth where its mesh has normals) with its texture and material
-    /// (`Mesh::surface`); `None` when `obj` is not a mesh or `part` is `NO_PART`.
-    pub fn surface(&self, obj: &Object, part: u32, p: DVec3) -> Option<Object> {
-        match &obj.shape {
-            Shape::Mesh(m) if part != NO_PART => {
-                let mesh = self.meshes.get(m.id as usize)?;
-                ((part as usize) < mesh.triangles.len())
-                    .then(|| mesh.surface(part, p, &obj.texture, &obj.material))
-            }
-            _ => None,
-        }
+            packets: Vec::new(),
+            packet_at: Vec::new(),
+        };
+        accel.build_packets();
+        accel
     }
 }
 
@@ -400,3 +334,5 @@ mod tests;
 mod face_tests;
 #[cfg(test)]
 mod mesh_tests;
+#[cfg(test)]
+mod packet_tests;

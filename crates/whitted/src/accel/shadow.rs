@@ -171,7 +171,7 @@ impl Accel {
     #[cold]
     fn mesh_crossings(&self, id: u32, ray: &Ray, dist: f64) -> Vec<(f64, u32)> {
         let mut ts = Vec::new();
-        self.shapes.traverse_any(ray, dist, |prim, limit| {
+        self.shapes_traverse_any(ray, dist, |prim, limit| {
             if prim.mesh == id && prim.glass {
                 ts.extend(self.shape_hit(prim, ray, dist).map(|t| (t, prim.part)));
             }
@@ -219,7 +219,7 @@ impl Accel {
             return Color::ZERO;
         }
         if !self.shapes.is_empty() {
-            self.shapes.traverse_any(
+            self.shapes_traverse_any(
                 ray,
                 dist,
                 #[inline(always)]
@@ -299,7 +299,7 @@ impl Accel {
     #[inline(never)]
     fn shapes_blocker(&self, ray: &Ray, dist: f64) -> Blocker {
         let mut blocker = Blocker::None;
-        self.shapes.traverse_any(
+        self.shapes_traverse_any(
             ray,
             dist,
             #[inline(always)]

@@ -4,6 +4,7 @@ use super::*;
 use crate::base::Color;
 use crate::bump::Bump;
 use crate::object::Material;
+use crate::optics::Ray;
 use crate::shading;
 use crate::shapes::{Cone, SmoothTriangle, Triangle};
 use crate::shapes::{Plane, Quadric, Sphere};

@@ -3,7 +3,7 @@
 //! `LEAF_SAH_MAX` kept whole where the SAH prefers a leaf; big subtrees in parallel
 //! (`build_tree`), to the same tree on any thread count.
 
-use super::{Item, Node, BINS, BLANK, LEAF_MAX, LEAF_SAH_MAX, MAX_DEPTH, TRAVERSE_COST};
+use super::{Item, Node, BINS, BLANK, LEAF_SAH_MAX, MAX_DEPTH, TRAVERSE_COST};
 
 /// Subtrees over more primitives than this are built in parallel (below it a task costs
 /// more than it saves).
@@ -23,8 +23,9 @@ pub(super) fn build_node<P>(
     offset: usize,
     index: usize,
     depth: usize,
+    leaf_max: usize,
 ) {
-    let Some(mid) = split(nodes, items, offset, index, depth) else {
+    let Some(mid) = split(nodes, items, offset, index, depth, leaf_max) else {
         return;
     };
     let left = nodes.len();
@@ -33,8 +34,8 @@ pub(super) fn build_node<P>(
     nodes[index].first = left as u32;
     nodes[index].count = 0;
     let (a, b) = items.split_at_mut(mid);
-    build_node(nodes, a, offset, left, depth + 1);
-    build_node(nodes, b, offset + mid, left + 1, depth + 1);
+    build_node(nodes, a, offset, left, depth + 1, leaf_max);
+    build_node(nodes, b, offset + mid, left + 1, depth + 1, leaf_max);
 }
 
 /// A subtree built apart: its nodes with the root at 0 and children's indices local to
@@ -48,21 +49,21 @@ enum Sub {
 /// would not give but always the same: subtrees of more than `PAR_MIN` primitives are
 /// split in this thread and their halves built by rayon's `join`, which changes where
 /// the work runs, never what it computes. So the tree is the same on any thread count.
-pub(super) fn build_tree<P: Send>(items: &mut [Item<P>]) -> Vec<Node> {
-    let sub = build_sub(items, 0, 0);
+pub(super) fn build_tree<P: Send>(items: &mut [Item<P>], leaf_max: usize) -> Vec<Node> {
+    let sub = build_sub(items, 0, 0, leaf_max);
     let mut nodes = vec![BLANK];
     place(&mut nodes, sub, 0);
     nodes
 }
 
-fn build_sub<P: Send>(items: &mut [Item<P>], offset: usize, depth: usize) -> Sub {
+fn build_sub<P: Send>(items: &mut [Item<P>], offset: usize, depth: usize, leaf_max: usize) -> Sub {
     let mut root = [BLANK];
     if items.len() <= PAR_MIN {
         let mut nodes = vec![BLANK];
-        build_node(&mut nodes, items, offset, 0, depth);
+        build_node(&mut nodes, items, offset, 0, depth, leaf_max);
         return Sub::Nodes(nodes);
     }
-    let Some(mid) = split(&mut root, items, offset, 0, depth) else {
+    let Some(mid) = split(&mut root, items, offset, 0, depth, leaf_max) else {
         return Sub::Nodes(root.to_vec());
     };
     let (a, b) = items.split_at_mut(mid);
@@ -70,13 +71,13 @@ fn build_sub<P: Send>(items: &mut [Item<P>], offset: usize, depth: usize) -> Sub
     // outside one, in turn: rayon's global pool would start a thread per core regardless.
     let halves = if rayon::current_thread_index().is_some() {
         rayon::join(
-            || build_sub(a, offset, depth + 1),
-            || build_sub(b, offset + mid, depth + 1),
+            || build_sub(a, offset, depth + 1, leaf_max),
+            || build_sub(b, offset + mid, depth + 1, leaf_max),
         )
     } else {
         (
-            build_sub(a, offset, depth + 1),
-            build_sub(b, offset + mid, depth + 1),
+            build_sub(a, offset, depth + 1, leaf_max),
+            build_sub(b, offset + mid, depth + 1, leaf_max),
         )
     };
     Sub::Split(root[0], Box::new(halves))
@@ -120,6 +121,7 @@ fn split<P>(
     offset: usize,
     index: usize,
     depth: usize,
+    leaf_max: usize,
 ) -> Option<usize> {
     let (mut lo, mut hi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
     let (mut clo, mut chi) = (DVec3::INFINITY, DVec3::NEG_INFINITY);
@@ -131,7 +133,7 @@ fn split<P>(
     }
     nodes[index].b = [lo.to_array(), hi.to_array()];
     let n = items.len();
-    if n <= LEAF_MAX || depth >= MAX_DEPTH {
+    if n <= leaf_max || depth >= MAX_DEPTH {
         nodes[index].first = offset as u32;
         nodes[index].count = n as u32;
         return None;
@@ -158,7 +160,7 @@ fn split<P>(
     }
     if let Some((cost, _, _)) = best {
         let area = surface_area(lo, hi);
-        if n <= LEAF_SAH_MAX && n as f64 * area <= TRAVERSE_COST * area + cost {
+        if n <= LEAF_SAH_MAX.max(leaf_max) && n as f64 * area <= TRAVERSE_COST * area + cost {
             nodes[index].first = offset as u32;
             nodes[index].count = n as u32;
             return None;

@@ -172,6 +172,16 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
     /// the low and high corners of its box and the point that sorts it (its centre), from
     /// `bounds`, computed in parallel.
     pub fn build(prims: Vec<P>, bounds: impl Fn(&P) -> (DVec3, DVec3, DVec3) + Sync) -> Bvh<P> {
+        Bvh::build_leaves(prims, bounds, LEAF_MAX)
+    }
+
+    /// `build` splitting only nodes of more than `leaf_max` primitives (leaves of
+    /// triangles, tested four at a time, take up to four: `accel::packet`).
+    pub fn build_leaves(
+        prims: Vec<P>,
+        bounds: impl Fn(&P) -> (DVec3, DVec3, DVec3) + Sync,
+        leaf_max: usize,
+    ) -> Bvh<P> {
         use rayon::prelude::*;
         let item = |prim: P| {
             let (lo, hi, centre) = bounds(&prim);
@@ -202,7 +212,7 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
             bvh.flat_opaque = bvh.prims.iter().filter(|p| !p.is_glass()).count();
             return bvh;
         }
-        bvh.nodes = node4::collapse(&build::build_tree(&mut items));
+        bvh.nodes = node4::collapse(&build::build_tree(&mut items, leaf_max));
         bvh.prims = items.into_iter().map(|it| it.prim).collect();
         bvh
     }
@@ -257,20 +267,58 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
     fn query<const ORDERED: bool>(
         &self,
         ray: &Ray,
-        mut limit: f64,
+        limit: f64,
         mut visit: impl FnMut(&P, f64) -> Option<f64>,
     ) {
-        if self.nodes.is_empty() {
-            for prim in &self.prims {
-                match visit(prim, limit) {
-                    Some(l) => limit = l,
-                    None => return,
+        let prims = &self.prims[..];
+        self.query_leaves::<ORDERED>(
+            ray,
+            limit,
+            #[inline(always)]
+            |first, count, mut limit| {
+                for prim in &prims[first..first + count] {
+                    limit = visit(prim, limit)?;
                 }
-            }
+                Some(limit)
+            },
+        )
+    }
+
+    /// `traverse` (`ORDERED`) or `traverse_any` a leaf at a time: `leaf(first, count,
+    /// limit)` for the primitives `first..first + count` of `prims` (a flat list, or a
+    /// ray beyond the lanes' range: every primitive, as one leaf), returning the new
+    /// limit or `None` to stop.
+    #[inline(always)]
+    pub fn query_leaves<const ORDERED: bool>(
+        &self,
+        ray: &Ray,
+        limit: f64,
+        mut leaf: impl FnMut(usize, usize, f64) -> Option<f64>,
+    ) {
+        if self.nodes.is_empty() {
+            leaf(0, self.prims.len(), limit);
             return;
         }
-        let (nodes, prims, scale) = (&self.nodes[..], &self.prims[..], self.scale);
-        walk::walk::<P, ORDERED, STACK>(nodes, prims, scale, ray, limit, visit)
+        let (nodes, len, scale) = (&self.nodes[..], self.prims.len(), self.scale);
+        walk::walk::<ORDERED, STACK>(nodes, len, scale, ray, limit, leaf)
+    }
+
+    /// The primitives in the tree's order (a leaf's are neighbours).
+    pub fn prims(&self) -> &[P] {
+        &self.prims
+    }
+
+    /// Every leaf of the tree as (first primitive, count); none for a flat list.
+    pub fn leaves(&self) -> Vec<(usize, usize)> {
+        let mut out = Vec::new();
+        for n in &self.nodes {
+            for s in 0..4 {
+                if n.child[s] & LEAF != 0 {
+                    out.push(((n.child[s] & !LEAF) as usize, n.count[s] as usize));
+                }
+            }
+        }
+        out
     }
 
     /// The depth of the four-wide tree (1 for a root whose children are all leaves;

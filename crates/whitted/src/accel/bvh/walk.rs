@@ -9,26 +9,22 @@ use super::raybox::{limit32, RayBox};
 use crate::optics::Ray;
 use arrayvec::ArrayVec;
 
-/// Calls `visit` on the primitives of every leaf whose box the ray meets within the
-/// limit, as `Bvh::traverse` says (`nodes` non-empty, root at 0). `STACK` is at least
-/// three entries per level of the tree: each node stacks at most three children.
+/// Calls `leaf(first, count, limit)` on every leaf whose box the ray meets within the
+/// limit (its primitives are `first..first + count` of the tree's `len`), as
+/// `Bvh::traverse_leaves` says (`nodes` non-empty, root at 0). `STACK` is at least three
+/// entries per level of the tree: each node stacks at most three children.
 #[inline(never)]
-pub(super) fn walk<P, const ORDERED: bool, const STACK: usize>(
+pub(super) fn walk<const ORDERED: bool, const STACK: usize>(
     nodes: &[WideNode],
-    prims: &[P],
+    len: usize,
     scale: f64,
     ray: &Ray,
     mut limit: f64,
-    mut visit: impl FnMut(&P, f64) -> Option<f64>,
+    mut leaf: impl FnMut(usize, usize, f64) -> Option<f64>,
 ) {
     let Some(rb) = RayBox::new(ray, scale) else {
-        // Beyond the lanes' range: every primitive, in the tree's order.
-        for prim in prims {
-            match visit(prim, limit) {
-                Some(l) => limit = l,
-                None => return,
-            }
-        }
+        // Beyond the lanes' range: every primitive, in the tree's order, as one leaf.
+        leaf(0, len, limit);
         return;
     };
     let mut lim = limit32(limit);
@@ -39,12 +35,9 @@ pub(super) fn walk<P, const ORDERED: bool, const STACK: usize>(
     let (mut cur, mut count) = (0u32, 0u32);
     loop {
         if cur & LEAF != 0 {
-            let first = (cur & !LEAF) as usize;
-            for prim in &prims[first..first + count as usize] {
-                match visit(prim, limit) {
-                    Some(l) => limit = l,
-                    None => return,
-                }
+            match leaf((cur & !LEAF) as usize, count as usize, limit) {
+                Some(l) => limit = l,
+                None => return,
             }
             lim = limit32(limit);
         } else {
