@@ -85,7 +85,7 @@ fn build(block: &Block) -> Result<(Csg, DVec3), SceneError> {
                 let shape = shape_in(o, &outer)?;
                 if !csg::is_solid(&shape) {
                     let why = "a CSG block takes solids only (sphere, plane, box, capped cylinder or cone, torus)";
-                    return Err(refused(&o.loc, o.shape.keyword(), why));
+                    return Err(refused(&o.loc, o.shape.kind(), why));
                 }
                 first.get_or_insert_with(|| outer.point_to_world(anchor(o)));
                 gathered.push(Node::Leaf(Object {

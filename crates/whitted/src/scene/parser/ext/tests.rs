@@ -1,7 +1,8 @@
 //! The extension reader on hand-written files: what each record reads to, and where each
 //! kind of mistake is reported.
 
-use crate::scene::ext::{CsgOp, ExtItem, ExtShape, LightKind};
+use crate::scene::ext::{CsgOp, ExtItem, LightKind};
+use crate::scene::ShapeSpec;
 use crate::scene::{Scene, SceneError};
 use glam::DVec3;
 
@@ -45,7 +46,7 @@ fn every_shape_record_reads_its_fields_in_order() {
     let ExtItem::Shape(b) = &o[0] else { panic!() };
     assert_eq!(
         b.shape,
-        ExtShape::Box {
+        ShapeSpec::Box {
             min: DVec3::new(-1.0, 0.0, -1.0),
             max: DVec3::new(1.0, 2.0, 1.0)
         }
@@ -58,7 +59,7 @@ fn every_shape_record_reads_its_fields_in_order() {
     let ExtItem::Shape(k) = &o[2] else { panic!() };
     assert_eq!(
         k.shape,
-        ExtShape::Cone {
+        ShapeSpec::Cone {
             a: DVec3::ZERO,
             ra: 1.0,
             b: DVec3::new(0.0, 3.0, 0.0),
@@ -68,13 +69,13 @@ fn every_shape_record_reads_its_fields_in_order() {
     let ExtItem::Shape(s) = &o[6] else { panic!() };
     assert_eq!(
         s.shape,
-        ExtShape::Sphere {
+        ShapeSpec::Sphere {
             center: DVec3::new(1.0, 2.0, 3.0),
             radius: 4.0
         }
     );
     let ExtItem::Shape(m) = &o[7] else { panic!() };
-    let ExtShape::Mesh { path, written } = &m.shape else {
+    let ShapeSpec::Mesh { path, written } = &m.shape else {
         panic!()
     };
     assert_eq!(written, "models/tea pot.obj");
