@@ -30,6 +30,7 @@ use crate::base::Color;
 use crate::fileloc::FileLoc;
 use crate::object::Material;
 use crate::scene::ShapeSpec;
+use crate::shapes::csg::Op;
 use crate::texture::Texture;
 use glam::DVec3;
 
@@ -112,33 +113,12 @@ pub struct ExtObject {
     pub loc: FileLoc,
 }
 
-/// A CSG operation (POV-Ray's rules, §16).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CsgOp {
-    /// Every child's surface.
-    Union,
-    /// The surface points of each child inside every other child.
-    Intersection,
-    /// The first child minus the others.
-    Difference,
-}
-
-impl CsgOp {
-    /// The block's keyword.
-    pub fn keyword(self) -> &'static str {
-        match self {
-            CsgOp::Union => "union",
-            CsgOp::Intersection => "intersection",
-            CsgOp::Difference => "difference",
-        }
-    }
-}
-
-/// A CSG block: two or more solids or blocks, then `end` and the whole's modifiers.
+/// A CSG block, the one record form of a block: two or more solids or blocks, then `end`
+/// and the whole's modifiers. `build` makes its built form, a `shapes::csg::Csg` tree.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Csg {
-    /// The operation.
-    pub op: CsgOp,
+    /// The operation (the built tree's own).
+    pub op: Op,
     /// The children in file order (each a solid shape or a nested block).
     pub children: Vec<ExtItem>,
     /// Modifiers after `end` (name, scale, rotate, translate).

@@ -1,9 +1,10 @@
 //! The extension reader on hand-written files: what each record reads to, and where each
 //! kind of mistake is reported.
 
-use crate::scene::ext::{CsgOp, ExtItem, LightKind};
+use crate::scene::ext::{ExtItem, LightKind};
 use crate::scene::ShapeSpec;
 use crate::scene::{Scene, SceneError};
+use crate::shapes::csg::Op;
 use glam::DVec3;
 
 /// The report's part of a file: one sphere and one light, then `rest`.
@@ -97,10 +98,10 @@ fn csg_blocks_nest_and_take_modifiers_after_end() {
     let [ExtItem::Csg(csg)] = &scene.ext.objects[..] else {
         panic!()
     };
-    assert_eq!(csg.op, CsgOp::Difference);
+    assert_eq!(csg.op, Op::Difference);
     assert_eq!(csg.children.len(), 2);
     assert!(
-        matches!(&csg.children[1], ExtItem::Csg(u) if u.op == CsgOp::Union && u.children.len() == 2)
+        matches!(&csg.children[1], ExtItem::Csg(u) if u.op == Op::Union && u.children.len() == 2)
     );
     assert_eq!(csg.mods.name.as_deref(), Some("bowl"));
     assert_eq!(csg.mods.translate, Some(DVec3::Y));
