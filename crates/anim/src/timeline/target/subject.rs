@@ -11,8 +11,7 @@
 
 use crate::typo::did_you_mean;
 use glam::DVec3;
-use whitted::lights::punctual::Shape;
-use whitted::scene::ext::{ExtItem, LightKind};
+use whitted::scene::ext::ExtItem;
 use whitted::scene::{ObjectSpec, Scene};
 
 /// A record of the scene a track or the camera can follow.
@@ -146,16 +145,7 @@ pub fn point(subject: Subject, scene: &Scene) -> Option<DVec3> {
     match subject {
         Subject::Object(i) => scene.specs.get(i).map(ObjectSpec::anchor),
         Subject::Light(i) => scene.lights.get(i).map(|l| l.position),
-        Subject::ExtLight(i) => match scene.ext.lights.get(i)?.kind {
-            LightKind::Point { position }
-            | LightKind::Spot { position, .. }
-            | LightKind::Area { position, .. } => Some(position),
-            LightKind::Punctual(shape, _) => match shape {
-                Shape::Point { position } | Shape::Spot { position, .. } => Some(position),
-                Shape::Directional { .. } => None,
-            },
-            LightKind::Directional { .. } => None,
-        },
+        Subject::ExtLight(i) => scene.ext.lights.get(i)?.kind.position(),
         Subject::Fog | Subject::Focus => None,
     }
 }

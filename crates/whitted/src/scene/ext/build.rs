@@ -237,6 +237,9 @@ pub(super) fn shape_in(o: &ExtObject, outer: &Transform) -> Result<Shape, SceneE
 
 #[path = "build_csg.rs"]
 mod csg;
+#[path = "build_lights.rs"]
+mod lights;
+pub use lights::lights;
 #[path = "place.rs"]
 mod place;
 
