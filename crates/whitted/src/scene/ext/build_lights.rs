@@ -6,8 +6,8 @@
 //! refuse. The tracer calls this for every frame's scene, so tracks on the records'
 //! fields just work.
 
-use crate::scene::ext::{ExtLight, Extension, LightKind};
 use crate::lights::{Area, Directional, Fade, Kind, PointLight, Punctual, SceneLight, Spot};
+use crate::scene::ext::{ExtLight, Extension, LightKind};
 use glam::DVec3;
 
 /// The lights of `ext.lights`, built, in file order.

@@ -127,7 +127,8 @@ pub struct Csg {
     pub loc: FileLoc,
 }
 
-/// A light record's kind and fields (§16's table).
+/// A light record's kind and fields (§16's table): the one record form of a light's kind,
+/// built into `lights::Kind` by `build::lights`.
 #[derive(Clone, Debug, PartialEq)]
 pub enum LightKind {
     /// `directional D(3)`: travelling along D.
