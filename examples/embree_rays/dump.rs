@@ -30,8 +30,8 @@ pub fn triangles(scene: &Scene) -> Result<Vec<[f64; 9]>, usize> {
         .specs
         .iter()
         .enumerate()
-        .map(|(i, spec)| match spec {
-            ShapeSpec::Triangle { corners } | ShapeSpec::Patch { corners, .. } => {
+        .map(|(i, spec)| match spec.record() {
+            Some(ShapeSpec::Triangle { corners } | ShapeSpec::Patch { corners, .. }) => {
                 let mut row = [0.0; 9];
                 for (k, c) in corners.iter().enumerate() {
                     row[3 * k..3 * k + 3].copy_from_slice(&c.to_array());

@@ -149,9 +149,9 @@ struct At {
 }
 
 /// `out` plus each of `lights`' diffuse and specular at `p`, shadowed, telling `rec` each
-/// term: the extension's lights (`lights::build`), after `direct_rec`. Out of line and
-/// called only when a scene has such lights: a test for them inside `direct` cost the
-/// orbit (which has none) 2.2 % more instructions.
+/// term: the extension's lights (`scene::ext::build::lights`), after `direct_rec`. Out of
+/// line and called only when a scene has such lights: a test for them inside `direct`
+/// cost the orbit (which has none) 2.2 % more instructions.
 #[allow(clippy::too_many_arguments)]
 #[inline(never)]
 pub fn add_lights<O: Occluders + ?Sized, L: LightSource, R: Record>(

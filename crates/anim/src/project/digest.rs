@@ -15,7 +15,7 @@ use whitted::fog::Fog;
 use whitted::object::Highlight;
 use whitted::object::Object;
 use whitted::optics::T_MIN;
-use whitted::scene::{Scene, ShapeSpec};
+use whitted::scene::{ObjectSpec, Scene, ShapeSpec};
 use whitted::shapes::csg::{Csg, Node};
 use whitted::shapes::Shape;
 use whitted::texture::Texture;
@@ -80,52 +80,54 @@ fn scene_bytes(scene: &Scene, out: &mut Vec<u8>) {
     f(fog_kind);
     f(fog_d);
     for (obj, spec) in scene.objects.iter().zip(&scene.specs) {
-        match *spec {
-            ShapeSpec::Sphere { center, radius } => {
+        match spec {
+            ObjectSpec::Record(ShapeSpec::Sphere { center, radius }) => {
+                let (center, radius) = (*center, *radius);
                 f(1.0);
                 v(center, &mut f);
                 f(radius);
             }
-            ShapeSpec::Plane { point, normal } => {
+            ObjectSpec::Record(ShapeSpec::Plane { point, normal }) => {
+                let (point, normal) = (*point, *normal);
                 f(2.0);
                 v(point, &mut f);
                 v(normal, &mut f);
             }
-            ShapeSpec::Cylinder {
+            ObjectSpec::Record(ShapeSpec::InfiniteCylinder {
                 axis,
                 point,
                 radius,
-            } => {
+            }) => {
+                let (axis, point, radius) = (*axis, *point, *radius);
                 f(3.0);
                 v(axis, &mut f);
                 v(point, &mut f);
                 f(radius);
             }
-            ShapeSpec::Triangle { corners } => {
+            ObjectSpec::Record(ShapeSpec::Triangle { corners }) => {
                 f(5.0);
                 corners.iter().for_each(|&c| v(c, &mut f));
             }
-            ShapeSpec::Patch { corners, normals } => {
+            ObjectSpec::Record(ShapeSpec::Patch { corners, normals }) => {
                 f(6.0);
-                corners.iter().chain(&normals).for_each(|&c| v(c, &mut f));
+                corners.iter().chain(normals).for_each(|&c| v(c, &mut f));
             }
-            ShapeSpec::Cone { base, apex } => {
+            ObjectSpec::Record(ShapeSpec::OpenCone { base, apex }) => {
+                let (base, apex) = (*base, *apex);
                 f(7.0);
                 v(base.0, &mut f);
                 f(base.1);
                 v(apex.0, &mut f);
                 f(apex.1);
             }
-            ShapeSpec::Ext {
-                item,
-                ref shape,
-                anchor,
-                ..
-            } => {
-                // The drawn shape's every value (Debug prints each f64 exactly).
+            // The extension's records (the report's and an NFF's never hold these
+            // kinds): where the record is, its anchor and the drawn shape's every value
+            // (Debug prints each f64 exactly).
+            ObjectSpec::Record(_) | ObjectSpec::Ext { .. } => {
                 f(8.0);
-                f(f64::from(item));
-                v(anchor, &mut f);
+                f(spec.item().map_or(0.0, |item| item as f64));
+                v(spec.anchor(), &mut f);
+                let shape = &obj.shape;
                 format!("{shape:?}").bytes().for_each(|b| f(f64::from(b)));
             }
         }

@@ -6,7 +6,7 @@ use super::*;
 use crate::manifest::Manifest;
 use crate::refusal::ManifestError;
 use std::path::Path;
-use whitted::scene::ShapeSpec;
+use whitted::scene::{ObjectSpec, ShapeSpec};
 
 const SCENE: &str = "8 6  0 2 10  0 1 0  1 30  2 1 0 1
 1.0  0 1 0   1 0.9 0.1 0.1   0.7 0.3 0 1 0 0
@@ -47,7 +47,7 @@ keys = [
 
 fn center(t: &Timeline, time: f64) -> DVec3 {
     match t.at(time).scene.specs[0] {
-        ShapeSpec::Sphere { center, .. } => center,
+        ObjectSpec::Record(ShapeSpec::Sphere { center, .. }) => center,
         _ => unreachable!(),
     }
 }

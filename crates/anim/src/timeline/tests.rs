@@ -40,7 +40,9 @@ fn without_a_camera_the_scene_holds_still() {
 fn tracks_put_their_values_into_the_scene() {
     let t = timeline(BOUNCE).unwrap();
     let center = |f: f64| match t.at(f).scene.specs[0] {
-        whitted::scene::ShapeSpec::Sphere { center, .. } => center,
+        whitted::scene::ObjectSpec::Record(whitted::scene::ShapeSpec::Sphere {
+            center, ..
+        }) => center,
         _ => unreachable!(),
     };
     assert_eq!(center(0.0), DVec3::new(0.0, 1.0, 0.0));
@@ -50,7 +52,7 @@ fn tracks_put_their_values_into_the_scene() {
     // The shape the tracer draws moved too.
     let shape = t.at(40.0).scene.objects[0].shape.clone();
     assert_eq!(
-        shape,
+        Some(shape),
         whitted::scene::ShapeSpec::Sphere {
             center: DVec3::new(0.0, 4.0, 0.0),
             radius: 1.0

@@ -18,8 +18,8 @@ use crate::lights::punctual::{Shape as LightShape, EXPOSURE};
 use crate::mesh::extra::{AlphaMode, Emissive, Extra};
 use crate::mesh::{Mesh, Raw, Shading};
 use crate::object::Object;
-use crate::scene::ext::{ExtItem, ExtLight, ExtObject, ExtShape, Extension, LightKind, Modifiers};
-use crate::scene::{Scene, ShapeSpec};
+use crate::scene::ext::{ExtItem, ExtLight, ExtObject, Extension, LightKind, Modifiers};
+use crate::scene::{ObjectSpec, Scene, ShapeSpec};
 use crate::shapes::{MeshRef, Shape, Transform};
 use crate::texture::{MapKind, Texture};
 use glam::DVec3;
@@ -175,7 +175,7 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
             });
             let item = scene.ext.objects.len() as u32;
             scene.ext.objects.push(ExtItem::Shape(ExtObject {
-                shape: ExtShape::Gltf {
+                shape: ShapeSpec::Gltf {
                     node: n as u32,
                     primitive: k as u32,
                 },
@@ -188,10 +188,9 @@ pub fn scene(rig: &Arc<Rig>, pose: &Pose, options: &Options) -> Result<Scene, Gl
                 loc: loc.clone(),
             }));
             let shape = Shape::Mesh(handle);
-            scene.specs.push(ShapeSpec::Ext {
+            scene.specs.push(ObjectSpec::Ext {
                 item,
                 kind: "gltf",
-                shape: shape.clone(),
                 anchor: 0.5 * (mlo + mhi),
             });
             scene.objects.push(Object {

@@ -21,8 +21,6 @@ mod show;
 mod tests;
 
 use crate::camera::Lens;
-use crate::lights::punctual::Shape as Punctual;
-use crate::scene::ext::LightKind;
 use crate::scene::Scene;
 use crate::shapes::Shape;
 use crate::still::{Request, StillError};
@@ -184,17 +182,9 @@ fn lights(scene: &Scene) -> Vec<LightInfo> {
         .iter()
         .map(|l| ("point", LightPlace::At(l.position)));
     let ext = scene.ext.lights.iter().map(|l| {
-        let place = match l.kind {
-            LightKind::Directional { direction } => LightPlace::Towards(direction),
-            LightKind::Spot { position, .. }
-            | LightKind::Point { position }
-            | LightKind::Area { position, .. } => LightPlace::At(position),
-            LightKind::Punctual(shape, _) => match shape {
-                Punctual::Directional { direction } => LightPlace::Towards(direction),
-                Punctual::Point { position } | Punctual::Spot { position, .. } => {
-                    LightPlace::At(position)
-                }
-            },
+        let place = match (l.kind.position(), l.kind.direction()) {
+            (Some(position), _) => LightPlace::At(position),
+            (None, direction) => LightPlace::Towards(direction.unwrap_or_default()),
         };
         (l.kind.keyword(), place)
     });

@@ -10,8 +10,10 @@
 //! - `punctual`: glTF's lights, with their own falloff and cone;
 //! - `fade`: the extension's attenuation with distance, on any of them but a directional.
 //!
-//! `build` turns the extension's light records (`Scene::ext.lights`) into `SceneLight`s;
-//! the tracer calls it for every frame's scene, so tracks on their fields just work.
+//! These are the built forms of lights; their records (the one record form of a light's
+//! kind, `scene::ext::LightKind`) are above, in the scene, which builds `SceneLight`s
+//! from them (`scene::ext::build::lights`). The report's point light is read straight
+//! into its built form, `PointLight`, which holds nothing its record does not.
 
 pub mod area;
 pub mod directional;
@@ -30,7 +32,6 @@ pub use punctual::Punctual;
 pub use spot::Spot;
 
 use crate::base::Color;
-use crate::scene::ext::{Extension, LightKind};
 use glam::DVec3;
 
 /// The light arriving at a point.
@@ -73,7 +74,8 @@ pub trait LightSource {
     }
 }
 
-/// The kinds of the extension's light records.
+/// An extension light as the tracer shades with it: the built form of a light record's
+/// kind (`scene::ext::LightKind`).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Kind {
     /// `point`.
@@ -138,57 +140,6 @@ impl LightSource for SceneLight {
             }
         }
     }
-}
-
-/// The extension's light records built for shading, in file order. The records are
-/// already checked (`scene::ext::check::light`): the reader and the tracks refuse what
-/// §16's bounds refuse.
-pub fn build(ext: &Extension) -> Vec<SceneLight> {
-    ext.lights
-        .iter()
-        .map(|r| {
-            let (c, i) = (r.color, r.intensity);
-            let kind = match r.kind {
-                LightKind::Point { position } => Kind::Point(PointLight {
-                    position,
-                    color: c,
-                    intensity: i,
-                }),
-                LightKind::Directional { direction } => {
-                    Kind::Directional(Directional::new(direction, c, i))
-                }
-                LightKind::Spot {
-                    position,
-                    target,
-                    radius,
-                    falloff,
-                    tightness,
-                } => Kind::Spot(Spot::new(
-                    position, target, radius, falloff, tightness, c, i,
-                )),
-                LightKind::Area {
-                    position,
-                    a1,
-                    a2,
-                    n1,
-                    n2,
-                } => Kind::Area(Area::new(position, a1, a2, n1, n2, c, i)),
-                LightKind::Punctual(shape, range) => Kind::Punctual(Punctual {
-                    shape,
-                    color: c,
-                    intensity: i,
-                    range,
-                }),
-            };
-            SceneLight {
-                kind,
-                fade: r
-                    .mods
-                    .fade
-                    .map(|(distance, power)| Fade { distance, power }),
-            }
-        })
-        .collect()
 }
 
 #[cfg(test)]

@@ -9,7 +9,8 @@ use super::{Incident, LightSource};
 use crate::base::Color;
 use glam::DVec3;
 
-/// A spotlight, with its fade factor (`fade::Fade`) folded in by `lights::build`.
+/// A spotlight (built from its record by `scene::ext::build::lights`, which adds its
+/// fade, `fade::Fade`, beside it).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Spot {
     /// Where the light is.

@@ -1,8 +1,10 @@
-//! Unit tests of `lights::build` and of the extension's lights through the tracer: each
-//! value by hand on a floor lit from above.
+//! Unit tests of the extension's lights as built from their records
+//! (`scene::ext::build::lights`) and through the tracer: each value by hand on a floor
+//! lit from above.
 
 use super::*;
-use crate::scene::ext::{ExtLight, Modifiers};
+use crate::scene::ext::build::lights as build;
+use crate::scene::ext::{ExtLight, Extension, LightKind, Modifiers};
 use crate::trace::{RayCount, Tracer};
 use crate::Scene;
 

@@ -36,7 +36,7 @@ use crate::object::Object;
 use glam::DVec3;
 
 pub use crate::limits::{MAX_COUNT, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
-pub use spec::{direction, ShapeSpec};
+pub use spec::{direction, ObjectSpec, ShapeSpec};
 
 /// Everything one Scene.txt (or NFF file) holds.
 #[derive(Clone, Debug, PartialEq)]
@@ -53,9 +53,10 @@ pub struct Scene {
     pub fog: Fog,
     /// Spheres, then planes, then cylinders, in file order.
     pub objects: Vec<Object>,
-    /// Each object's shape as the file gives it (`objects[i].shape` is `specs[i].build()`):
-    /// what an animation track changes before rebuilding the shape.
-    pub specs: Vec<ShapeSpec>,
+    /// Each object's record: the report's or NFF's own (`objects[i].shape` is its
+    /// `build()`), or where it is in `ext.objects`: what an animation track changes
+    /// before rebuilding the shape.
+    pub specs: Vec<ObjectSpec>,
     /// The point lights, in file order.
     pub lights: Vec<PointLight>,
     /// What a ray that hits nothing sees: black for a Scene.txt, NFF's `b`.
@@ -122,11 +123,8 @@ impl Scene {
     }
 
     /// The `name` an extension record gives its object, if any.
-    fn ext_name(&self, spec: &ShapeSpec) -> Option<&str> {
-        let ShapeSpec::Ext { item, .. } = spec else {
-            return None;
-        };
-        match self.ext.objects.get(*item as usize)? {
+    fn ext_name(&self, spec: &ObjectSpec) -> Option<&str> {
+        match self.ext.objects.get(spec.item()?)? {
             ext::ExtItem::Shape(o) => o.mods.name.as_deref(),
             ext::ExtItem::Csg(c) => c.mods.name.as_deref(),
         }

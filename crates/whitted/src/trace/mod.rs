@@ -56,7 +56,7 @@ pub struct Tracer<'a> {
     pub(crate) scene: &'a Scene,
     accel: Arc<Accel>,
     lights: LightBuffer,
-    /// The extension's lights (`lights::build` of the scene's records).
+    /// The extension's lights (`scene::ext::build::lights` of the scene's records).
     ext_lights: Vec<SceneLight>,
     pub(crate) rules: Rules,
 }

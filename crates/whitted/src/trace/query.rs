@@ -5,7 +5,6 @@
 use super::{Rules, Tracer};
 use crate::accel::{Accel, Hit, LightBuffer};
 use crate::base::Color;
-use crate::lights;
 use crate::object::Object;
 use crate::optics::Ray;
 use crate::scene::Scene;
@@ -32,7 +31,7 @@ impl<'a> Tracer<'a> {
             scene,
             accel,
             lights: LightBuffer::for_scene(scene),
-            ext_lights: lights::build(&scene.ext),
+            ext_lights: crate::scene::ext::build::lights(&scene.ext),
             rules: Rules::default(),
         }
     }

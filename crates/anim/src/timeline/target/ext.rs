@@ -21,8 +21,8 @@
 
 use super::Kind;
 use glam::DVec3;
-use whitted::scene::ext::{build, check, ExtItem, ExtShape, Extension, LightKind, Modifiers};
-use whitted::scene::{Scene, ShapeSpec};
+use whitted::scene::ext::{build, check, ExtItem, Extension, LightKind, Modifiers};
+use whitted::scene::{ObjectSpec, Scene, ShapeSpec};
 use whitted::shapes::Shape;
 
 /// The extension record a field belongs to.
@@ -58,18 +58,22 @@ const SHINE: [(&str, Kind); 2] = [("color", V), ("intensity", N)];
 pub fn object_fields(item: &ExtItem) -> Vec<(&'static str, Kind)> {
     let own: &[(&str, Kind)] = match item {
         // A glTF primitive moves with its node (`{ node = "…" }` tracks), not as a record.
-        ExtItem::Shape(o) if matches!(o.shape, ExtShape::Gltf { .. }) => return Vec::new(),
+        ExtItem::Shape(o) if matches!(o.shape, ShapeSpec::Gltf { .. }) => return Vec::new(),
         ExtItem::Csg(_) => &[],
         ExtItem::Shape(o) => match o.shape {
-            ExtShape::Sphere { .. } => &[("center", V), ("radius", N)],
-            ExtShape::Plane { .. } => &[("point", V), ("normal", V)],
-            ExtShape::Box { .. } => &[("min", V), ("max", V)],
-            ExtShape::Cylinder { .. } => &[("a", V), ("b", V), ("radius", N)],
-            ExtShape::Cone { .. } => &[("a", V), ("ra", N), ("b", V), ("rb", N)],
-            ExtShape::Disc { .. } => &[("center", V), ("normal", V), ("radius", N), ("hole", N)],
-            ExtShape::Torus { .. } => &[("center", V), ("axis", V), ("major", N), ("minor", N)],
-            ExtShape::Triangle { .. } => &[("p1", V), ("p2", V), ("p3", V)],
-            ExtShape::Mesh { .. } | ExtShape::Gltf { .. } => &[],
+            ShapeSpec::Sphere { .. } => &[("center", V), ("radius", N)],
+            ShapeSpec::Plane { .. } => &[("point", V), ("normal", V)],
+            ShapeSpec::Box { .. } => &[("min", V), ("max", V)],
+            ShapeSpec::Cylinder { .. } => &[("a", V), ("b", V), ("radius", N)],
+            ShapeSpec::Cone { .. } => &[("a", V), ("ra", N), ("b", V), ("rb", N)],
+            ShapeSpec::Disc { .. } => &[("center", V), ("normal", V), ("radius", N), ("hole", N)],
+            ShapeSpec::Torus { .. } => &[("center", V), ("axis", V), ("major", N), ("minor", N)],
+            ShapeSpec::Triangle { .. } => &[("p1", V), ("p2", V), ("p3", V)],
+            ShapeSpec::Mesh { .. } | ShapeSpec::Gltf { .. } => &[],
+            // The report's and an NFF's own records, which no extension record holds.
+            ShapeSpec::InfiniteCylinder { .. }
+            | ShapeSpec::OpenCone { .. }
+            | ShapeSpec::Patch { .. } => &[],
         },
     };
     own.iter().chain(FRAME.iter()).copied().collect()
@@ -114,32 +118,32 @@ fn object_slot<'a>(item: &'a mut ExtItem, name: &str) -> Option<Slot<'a>> {
         ExtItem::Csg(c) => &mut c.mods,
         ExtItem::Shape(o) => {
             let slot = match (&mut o.shape, name) {
-                (ExtShape::Sphere { center, .. }, "center")
-                | (ExtShape::Disc { center, .. }, "center")
-                | (ExtShape::Torus { center, .. }, "center") => Some(Ve(center)),
-                (ExtShape::Sphere { radius, .. }, "radius")
-                | (ExtShape::Cylinder { radius, .. }, "radius")
-                | (ExtShape::Disc { radius, .. }, "radius") => Some(Nu(radius)),
-                (ExtShape::Plane { point, .. }, "point") => Some(Ve(point)),
-                (ExtShape::Plane { normal, .. }, "normal")
-                | (ExtShape::Disc { normal, .. }, "normal") => Some(Ve(normal)),
-                (ExtShape::Box { min, .. }, "min") => Some(Ve(min)),
-                (ExtShape::Box { max, .. }, "max") => Some(Ve(max)),
-                (ExtShape::Cylinder { a, .. }, "a") | (ExtShape::Cone { a, .. }, "a") => {
+                (ShapeSpec::Sphere { center, .. }, "center")
+                | (ShapeSpec::Disc { center, .. }, "center")
+                | (ShapeSpec::Torus { center, .. }, "center") => Some(Ve(center)),
+                (ShapeSpec::Sphere { radius, .. }, "radius")
+                | (ShapeSpec::Cylinder { radius, .. }, "radius")
+                | (ShapeSpec::Disc { radius, .. }, "radius") => Some(Nu(radius)),
+                (ShapeSpec::Plane { point, .. }, "point") => Some(Ve(point)),
+                (ShapeSpec::Plane { normal, .. }, "normal")
+                | (ShapeSpec::Disc { normal, .. }, "normal") => Some(Ve(normal)),
+                (ShapeSpec::Box { min, .. }, "min") => Some(Ve(min)),
+                (ShapeSpec::Box { max, .. }, "max") => Some(Ve(max)),
+                (ShapeSpec::Cylinder { a, .. }, "a") | (ShapeSpec::Cone { a, .. }, "a") => {
                     Some(Ve(a))
                 }
-                (ExtShape::Cylinder { b, .. }, "b") | (ExtShape::Cone { b, .. }, "b") => {
+                (ShapeSpec::Cylinder { b, .. }, "b") | (ShapeSpec::Cone { b, .. }, "b") => {
                     Some(Ve(b))
                 }
-                (ExtShape::Cone { ra, .. }, "ra") => Some(Nu(ra)),
-                (ExtShape::Cone { rb, .. }, "rb") => Some(Nu(rb)),
-                (ExtShape::Disc { hole, .. }, "hole") => Some(Nu(hole)),
-                (ExtShape::Torus { axis, .. }, "axis") => Some(Ve(axis)),
-                (ExtShape::Torus { major, .. }, "major") => Some(Nu(major)),
-                (ExtShape::Torus { minor, .. }, "minor") => Some(Nu(minor)),
-                (ExtShape::Triangle { corners }, "p1") => Some(Ve(&mut corners[0])),
-                (ExtShape::Triangle { corners }, "p2") => Some(Ve(&mut corners[1])),
-                (ExtShape::Triangle { corners }, "p3") => Some(Ve(&mut corners[2])),
+                (ShapeSpec::Cone { ra, .. }, "ra") => Some(Nu(ra)),
+                (ShapeSpec::Cone { rb, .. }, "rb") => Some(Nu(rb)),
+                (ShapeSpec::Disc { hole, .. }, "hole") => Some(Nu(hole)),
+                (ShapeSpec::Torus { axis, .. }, "axis") => Some(Ve(axis)),
+                (ShapeSpec::Torus { major, .. }, "major") => Some(Nu(major)),
+                (ShapeSpec::Torus { minor, .. }, "minor") => Some(Nu(minor)),
+                (ShapeSpec::Triangle { corners }, "p1") => Some(Ve(&mut corners[0])),
+                (ShapeSpec::Triangle { corners }, "p2") => Some(Ve(&mut corners[1])),
+                (ShapeSpec::Triangle { corners }, "p3") => Some(Ve(&mut corners[2])),
                 _ => None,
             };
             if slot.is_some() {
@@ -256,11 +260,7 @@ pub fn check_record(ext: &Extension, record: Record) -> Result<(), check::Violat
 /// values before any frame is drawn, and between two tracks of one record the record may
 /// be passing through such a state.
 pub fn rebuild(scene: &mut Scene, item: usize) {
-    let Some(index) = scene
-        .specs
-        .iter()
-        .position(|s| matches!(s, ShapeSpec::Ext { item: i, .. } if *i as usize == item))
-    else {
+    let Some(index) = scene.specs.iter().position(|s| s.item() == Some(item)) else {
         return;
     };
     if check_record(&scene.ext, Record::Object(item)).is_err() {
@@ -288,9 +288,8 @@ pub fn rebuild(scene: &mut Scene, item: usize) {
             *slot = mesh;
         }
     }
-    if let ShapeSpec::Ext { item: i, shape, .. } = &mut spec {
+    if let ObjectSpec::Ext { item: i, .. } = &mut spec {
         *i = item as u32;
-        *shape = object.shape.clone();
     }
     scene.objects[index].shape = object.shape;
     scene.specs[index] = spec;

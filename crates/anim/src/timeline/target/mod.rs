@@ -22,7 +22,7 @@ use whitted::bump::Bump;
 use whitted::fog::Fog;
 use whitted::limits::MAX_INTENSITY;
 use whitted::scene::ext::ExtItem;
-use whitted::scene::{direction, Scene, ShapeSpec};
+use whitted::scene::{direction, ObjectSpec, Scene};
 use whitted::texture::Texture;
 
 /// A number or an `[x, y, z]`; numbers travel as `(x, 0, 0)` through interpolation.
@@ -180,7 +180,7 @@ fn field_of(subject: Subject, what: &str, name: &str, scene: &Scene) -> Result<T
             ext(Record::Light(i), ext::light_fields(&l.kind, &l.mods), i)
         }
         Subject::Object(i) => match scene.specs[i] {
-            ShapeSpec::Ext { item, .. } => {
+            ObjectSpec::Ext { item, .. } => {
                 let item = item as usize;
                 let record = &scene.ext.objects[item];
                 let own = ext::object_fields(record);

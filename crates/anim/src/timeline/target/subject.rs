@@ -11,9 +11,8 @@
 
 use crate::typo::did_you_mean;
 use glam::DVec3;
-use whitted::lights::punctual::Shape;
-use whitted::scene::ext::{ExtItem, LightKind};
-use whitted::scene::{Scene, ShapeSpec};
+use whitted::scene::ext::ExtItem;
+use whitted::scene::{ObjectSpec, Scene};
 
 /// A record of the scene a track or the camera can follow.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -102,16 +101,13 @@ pub fn numbered(kind: &str, n: &str, scene: &Scene) -> Result<Subject, String> {
 
 /// The record an extension `name` names, if any.
 pub fn named(name: &str, scene: &Scene) -> Option<Subject> {
-    let object = scene.specs.iter().position(|spec| match spec {
-        ShapeSpec::Ext { item, .. } => {
-            let mods = match scene.ext.objects.get(*item as usize) {
-                Some(ExtItem::Shape(o)) => &o.mods,
-                Some(ExtItem::Csg(c)) => &c.mods,
-                None => return false,
-            };
-            mods.name.as_deref() == Some(name)
-        }
-        _ => false,
+    let object = scene.specs.iter().position(|spec| {
+        let mods = match spec.item().and_then(|item| scene.ext.objects.get(item)) {
+            Some(ExtItem::Shape(o)) => &o.mods,
+            Some(ExtItem::Csg(c)) => &c.mods,
+            None => return false,
+        };
+        mods.name.as_deref() == Some(name)
     });
     if let Some(i) = object {
         return Some(Subject::Object(i));
@@ -147,18 +143,9 @@ pub fn parse_subject(text: &str, scene: &Scene) -> Result<Subject, String> {
 /// a directional light, the fog and the focus.
 pub fn point(subject: Subject, scene: &Scene) -> Option<DVec3> {
     match subject {
-        Subject::Object(i) => scene.specs.get(i).map(ShapeSpec::anchor),
+        Subject::Object(i) => scene.specs.get(i).map(ObjectSpec::anchor),
         Subject::Light(i) => scene.lights.get(i).map(|l| l.position),
-        Subject::ExtLight(i) => match scene.ext.lights.get(i)?.kind {
-            LightKind::Point { position }
-            | LightKind::Spot { position, .. }
-            | LightKind::Area { position, .. } => Some(position),
-            LightKind::Punctual(shape, _) => match shape {
-                Shape::Point { position } | Shape::Spot { position, .. } => Some(position),
-                Shape::Directional { .. } => None,
-            },
-            LightKind::Directional { .. } => None,
-        },
+        Subject::ExtLight(i) => scene.ext.lights.get(i)?.kind.position(),
         Subject::Fog | Subject::Focus => None,
     }
 }

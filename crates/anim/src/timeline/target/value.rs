@@ -8,7 +8,7 @@ use glam::DVec3;
 use whitted::bump::Bump;
 use whitted::fog::Fog;
 use whitted::scene::ext::ExtItem;
-use whitted::scene::{direction, Scene, ShapeSpec};
+use whitted::scene::{direction, ObjectSpec, Scene, ShapeSpec};
 use whitted::texture::Texture;
 
 impl Target {
@@ -17,7 +17,7 @@ impl Target {
         let num = |x: f64| DVec3::new(x, 0.0, 0.0);
         let i = self.index;
         let obj = scene.objects.get(i);
-        let spec = scene.specs.get(i);
+        let spec = scene.specs.get(i).and_then(|s| s.record());
         let (c1, c2, c3) = obj.map_or((DVec3::ZERO, DVec3::ZERO, DVec3::ZERO), |o| {
             colors(&o.texture)
         });
@@ -26,11 +26,11 @@ impl Target {
             (f, _) if super::camera::is_camera(f) => super::camera::read(f, scene),
             (Field::Center, Some(ShapeSpec::Sphere { center, .. })) => *center,
             (Field::Radius, Some(ShapeSpec::Sphere { radius, .. }))
-            | (Field::Radius, Some(ShapeSpec::Cylinder { radius, .. })) => num(*radius),
+            | (Field::Radius, Some(ShapeSpec::InfiniteCylinder { radius, .. })) => num(*radius),
             (Field::Point, Some(ShapeSpec::Plane { point, .. }))
-            | (Field::Point, Some(ShapeSpec::Cylinder { point, .. })) => *point,
+            | (Field::Point, Some(ShapeSpec::InfiniteCylinder { point, .. })) => *point,
             (Field::Normal, Some(ShapeSpec::Plane { normal, .. })) => *normal,
-            (Field::Axis, Some(ShapeSpec::Cylinder { axis, .. })) => *axis,
+            (Field::Axis, Some(ShapeSpec::InfiniteCylinder { axis, .. })) => *axis,
             (Field::Color | Field::Color1, _) => c1,
             (Field::Color2, _) => c2,
             (Field::Color3, _) => c3,
@@ -59,14 +59,12 @@ impl Target {
         }
         self.put(scene, v);
         // An extension object's record says what its object says, as the file would.
-        if let Some(ShapeSpec::Ext { item, .. }) = scene.specs.get(self.index) {
+        if let Some(item) = scene.specs.get(self.index).and_then(ObjectSpec::item) {
             let on_object = !matches!(
                 self.field,
                 Field::Ext(_) | Field::Position | Field::LightColor | Field::Intensity
             );
-            if let (true, Some(ExtItem::Shape(o))) =
-                (on_object, scene.ext.objects.get_mut(*item as usize))
-            {
+            if let (true, Some(ExtItem::Shape(o))) = (on_object, scene.ext.objects.get_mut(item)) {
                 o.texture = scene.objects[self.index].texture.clone();
                 o.material = scene.objects[self.index].material;
             }
@@ -78,22 +76,26 @@ impl Target {
         let i = self.index;
         match self.field {
             Field::Center | Field::Radius | Field::Point | Field::Normal | Field::Axis => {
-                let spec = &mut scene.specs[i];
-                match (self.field, spec) {
+                let ObjectSpec::Record(spec) = &mut scene.specs[i] else {
+                    return;
+                };
+                match (self.field, &mut *spec) {
                     (Field::Center, ShapeSpec::Sphere { center, .. }) => *center = v,
                     (Field::Radius, ShapeSpec::Sphere { radius, .. })
-                    | (Field::Radius, ShapeSpec::Cylinder { radius, .. }) => *radius = x,
+                    | (Field::Radius, ShapeSpec::InfiniteCylinder { radius, .. }) => *radius = x,
                     (Field::Point, ShapeSpec::Plane { point, .. })
-                    | (Field::Point, ShapeSpec::Cylinder { point, .. }) => *point = v,
+                    | (Field::Point, ShapeSpec::InfiniteCylinder { point, .. }) => *point = v,
                     (Field::Normal, ShapeSpec::Plane { normal, .. }) => {
                         *normal = direction(v).unwrap_or(v)
                     }
-                    (Field::Axis, ShapeSpec::Cylinder { axis, .. }) => {
+                    (Field::Axis, ShapeSpec::InfiniteCylinder { axis, .. }) => {
                         *axis = direction(v).unwrap_or(v)
                     }
                     _ => {}
                 }
-                scene.objects[i].shape = scene.specs[i].build();
+                if let Some(shape) = spec.build() {
+                    scene.objects[i].shape = shape;
+                }
             }
             Field::Color | Field::Color1 | Field::Color2 | Field::Color3 => {
                 set_color(&mut scene.objects[i].texture, self.field, v)

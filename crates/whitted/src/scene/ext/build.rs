@@ -1,5 +1,5 @@
 //! Drawn objects from the extension's shape records (SPEC §16): each `ExtObject` becomes
-//! one `Object` and its `ShapeSpec::Ext`, in file order, after the report's objects. A
+//! one `Object` and its `ObjectSpec::Ext`, in file order, after the report's objects. A
 //! sphere without modifiers stays the report's sphere (and joins the spheres' tree);
 //! planes and triangles take their frame by moving their points; every other shape is a
 //! `Placed` shape in its frame (scale, then rotate x, y, z in degrees, then translate).
@@ -8,11 +8,11 @@
 //! `Scene::meshes`; a file that cannot be drawn is an error at the record. A CSG block
 //! becomes one object (`csg`), its children drawn in the block's frame.
 
-use super::{ExtItem, ExtObject, ExtShape, Extension, Modifiers};
+use super::{ExtItem, ExtObject, Extension, Modifiers};
 use crate::limits::MAX_SCENE_TRIANGLES;
 use crate::mesh::Mesh;
 use crate::object::Object;
-use crate::scene::{FileLoc, Scene, SceneError, ShapeSpec};
+use crate::scene::{FileLoc, ObjectSpec, Scene, SceneError, ShapeSpec};
 use crate::shapes::{
     AaBox, Capped, Disc, Local, MeshRef, Placed, Plane, Shape, Sphere, Torus, Transform, Triangle,
 };
@@ -25,7 +25,7 @@ use std::sync::Arc;
 #[derive(Debug, Default)]
 pub struct Drawn {
     /// The objects, in file order, each with its spec.
-    pub objects: Vec<(Object, ShapeSpec)>,
+    pub objects: Vec<(Object, ObjectSpec)>,
     /// The meshes, in file order.
     pub meshes: Vec<Arc<Mesh>>,
 }
@@ -49,7 +49,7 @@ pub fn objects(ext: &Extension) -> Result<Drawn, SceneError> {
         match obj {
             ExtItem::Shape(o) => {
                 let (shape, anchor) = match &o.shape {
-                    ExtShape::Mesh { path, .. } => {
+                    ShapeSpec::Mesh { path, .. } => {
                         let (handle, mesh) = mesh(o, path, out.meshes.len())?;
                         let before: u64 = out.meshes.iter().map(|m| m.triangles.len() as u64).sum();
                         let total = before + mesh.triangles.len() as u64;
@@ -65,10 +65,9 @@ pub fn objects(ext: &Extension) -> Result<Drawn, SceneError> {
                     }
                     _ => (shape(o)?, anchor(o)),
                 };
-                let spec = ShapeSpec::Ext {
+                let spec = ObjectSpec::Ext {
                     item: item as u32,
-                    kind: o.shape.keyword(),
-                    shape: shape.clone(),
+                    kind: o.shape.kind(),
                     anchor,
                 };
                 let object = Object {
@@ -80,10 +79,9 @@ pub fn objects(ext: &Extension) -> Result<Drawn, SceneError> {
             }
             ExtItem::Csg(c) => {
                 let (object, anchor) = csg::object(c)?;
-                let spec = ShapeSpec::Ext {
+                let spec = ObjectSpec::Ext {
                     item: item as u32,
                     kind: "csg",
-                    shape: object.shape.clone(),
                     anchor,
                 };
                 out.objects.push((object, spec));
@@ -135,17 +133,7 @@ pub fn frame(m: &Modifiers) -> Option<Transform> {
 /// The point a camera looks at for this object: its defining centre, moved by its frame
 /// (its placing included).
 pub(super) fn anchor(o: &ExtObject) -> DVec3 {
-    let p = match o.shape {
-        ExtShape::Sphere { center, .. }
-        | ExtShape::Disc { center, .. }
-        | ExtShape::Torus { center, .. } => center,
-        ExtShape::Plane { point, .. } => point,
-        ExtShape::Box { min, max } => 0.5 * (min + max),
-        ExtShape::Cylinder { a, b, .. } | ExtShape::Cone { a, b, .. } => 0.5 * (a + b),
-        ExtShape::Triangle { corners: [a, b, c] } => (a + b + c) / 3.0,
-        // Its box's centre, which `objects` knows once the file is read.
-        ExtShape::Mesh { .. } | ExtShape::Gltf { .. } => DVec3::ZERO,
-    };
+    let p = o.shape.anchor();
     placed_frame(o).map_or(p, |f| f.point_to_world(p))
 }
 
@@ -155,7 +143,7 @@ fn placed_frame(o: &ExtObject) -> Result<Transform, SceneError> {
     let singular = || {
         refused(
             &o.loc,
-            o.shape.keyword(),
+            o.shape.kind(),
             "the scale, rotate and translate make a singular frame",
         )
     };
@@ -168,7 +156,7 @@ fn placed_frame(o: &ExtObject) -> Result<Transform, SceneError> {
         ..o.clone()
     };
     let bounds = shape(&written)?.bounds();
-    let before = place::prefix(&o.mods.placing, bounds, &o.loc, o.shape.keyword())?;
+    let before = place::prefix(&o.mods.placing, bounds, &o.loc, o.shape.kind())?;
     before.then(&own).ok_or_else(singular)
 }
 
@@ -180,7 +168,7 @@ pub fn shape(o: &ExtObject) -> Result<Shape, SceneError> {
 
 /// `shape`, its frame followed by `outer` (the frame of the CSG blocks around it).
 pub(super) fn shape_in(o: &ExtObject, outer: &Transform) -> Result<Shape, SceneError> {
-    let bad = |why: &str| refused(&o.loc, o.shape.keyword(), why);
+    let bad = |why: &str| refused(&o.loc, o.shape.kind(), why);
     let singular = || bad("the scale, rotate and translate make a singular frame");
     let own = placed_frame(o)?;
     let f = if outer.is_identity() {
@@ -194,7 +182,7 @@ pub(super) fn shape_in(o: &ExtObject, outer: &Transform) -> Result<Shape, SceneE
             .ok_or_else(|| bad("the shape's fields are out of bounds"))
     };
     match o.shape {
-        ExtShape::Sphere { center, radius } => {
+        ShapeSpec::Sphere { center, radius } => {
             if !(radius > 0.0 && radius.is_finite() && center.is_finite()) {
                 return Err(bad("the radius must be greater than 0"));
             }
@@ -205,46 +193,53 @@ pub(super) fn shape_in(o: &ExtObject, outer: &Transform) -> Result<Shape, SceneE
                 placed(Some(Local::Sphere(s)))
             }
         }
-        ExtShape::Plane { point, normal } => {
+        ShapeSpec::Plane { point, normal } => {
             let n =
                 crate::scene::direction(normal).ok_or_else(|| bad("the normal has zero length"))?;
             let p = f.point_to_world(point);
             let n = f.normal_to_world(n.normalize());
             Ok(Shape::Plane(Plane::new(p, n)))
         }
-        ExtShape::Box { min, max } => placed(AaBox::new(min, max).map(Local::Box)),
-        ExtShape::Cylinder { a, b, radius } => {
+        ShapeSpec::Box { min, max } => placed(AaBox::new(min, max).map(Local::Box)),
+        ShapeSpec::Cylinder { a, b, radius } => {
             placed(Capped::new(a, radius, b, radius, !o.mods.open).map(Local::Capped))
         }
-        ExtShape::Cone { a, ra, b, rb } => {
+        ShapeSpec::Cone { a, ra, b, rb } => {
             placed(Capped::new(a, ra, b, rb, !o.mods.open).map(Local::Capped))
         }
-        ExtShape::Disc {
+        ShapeSpec::Disc {
             center,
             normal,
             radius,
             hole,
         } => placed(Disc::new(center, normal, radius, hole).map(Local::Disc)),
-        ExtShape::Torus {
+        ShapeSpec::Torus {
             center,
             axis,
             major,
             minor,
         } => placed(Torus::new(center, axis, major, minor).map(Local::Torus)),
-        ExtShape::Triangle { corners } => {
+        ShapeSpec::Triangle { corners } => {
             let [a, b, c] = corners.map(|p| f.point_to_world(p));
             Triangle::new(a, b, c)
                 .map(Shape::Triangle)
                 .ok_or_else(|| bad("the triangle is degenerate"))
         }
-        ExtShape::Mesh { .. } | ExtShape::Gltf { .. } => {
+        ShapeSpec::Mesh { .. } | ShapeSpec::Gltf { .. } => {
             Err(bad("a mesh is drawn from its file by `objects`"))
         }
+        // The report's and an NFF's own records, which no extension record gives.
+        ShapeSpec::InfiniteCylinder { .. }
+        | ShapeSpec::OpenCone { .. }
+        | ShapeSpec::Patch { .. } => Err(bad("not a record of the extension")),
     }
 }
 
 #[path = "build_csg.rs"]
 mod csg;
+#[path = "build_lights.rs"]
+mod lights;
+pub use lights::lights;
 #[path = "place.rs"]
 mod place;
 

@@ -6,7 +6,7 @@
 
 use super::{anchor, frame, place, refused, shape_in};
 use crate::object::Object;
-use crate::scene::ext::{Csg as Block, CsgOp, ExtItem};
+use crate::scene::ext::{Csg as Block, ExtItem};
 use crate::scene::SceneError;
 use crate::shapes::csg::{self, Csg, Node, Op};
 use crate::shapes::{Shape, Transform};
@@ -54,7 +54,7 @@ fn build(block: &Block) -> Result<(Csg, DVec3), SceneError> {
         next: 0,
         opens: true,
     }];
-    let mut nodes: Vec<Gather> = vec![(op(block.op), Vec::new())];
+    let mut nodes: Vec<Gather> = vec![(block.op, Vec::new())];
     let mut first = None;
     while let Some(top) = walk.last_mut() {
         let Some(child) = top.block.children.get(top.next) else {
@@ -85,7 +85,7 @@ fn build(block: &Block) -> Result<(Csg, DVec3), SceneError> {
                 let shape = shape_in(o, &outer)?;
                 if !csg::is_solid(&shape) {
                     let why = "a CSG block takes solids only (sphere, plane, box, capped cylinder or cone, torus)";
-                    return Err(refused(&o.loc, o.shape.keyword(), why));
+                    return Err(refused(&o.loc, o.shape.kind(), why));
                 }
                 first.get_or_insert_with(|| outer.point_to_world(anchor(o)));
                 gathered.push(Node::Leaf(Object {
@@ -95,7 +95,7 @@ fn build(block: &Block) -> Result<(Csg, DVec3), SceneError> {
                 }));
             }
             ExtItem::Csg(inner) => {
-                let inner_op = op(inner.op);
+                let inner_op = inner.op;
                 let joins =
                     inner_op == *node_op && (inner_op != Op::Difference || gathered.is_empty());
                 if !joins {
@@ -135,12 +135,4 @@ fn block_frame(block: &Block, outer: &Transform) -> Result<Transform, SceneError
         own = before.then(&own).ok_or_else(singular)?;
     }
     own.then(outer).ok_or_else(singular)
-}
-
-fn op(op: CsgOp) -> Op {
-    match op {
-        CsgOp::Union => Op::Union,
-        CsgOp::Intersection => Op::Intersection,
-        CsgOp::Difference => Op::Difference,
-    }
 }

@@ -7,7 +7,7 @@ use crate::optics::Ray;
 use crate::scene::Scene;
 use crate::texture::Texture;
 
-fn record(shape: ExtShape, mods: Modifiers) -> ExtItem {
+fn record(shape: ShapeSpec, mods: Modifiers) -> ExtItem {
     ExtItem::Shape(ExtObject {
         shape,
         texture: Texture::Uniform(DVec3::ONE),
@@ -43,7 +43,7 @@ fn a_moved_box_is_hit_where_it_was_moved() {
     };
     let ext = Extension {
         objects: vec![record(
-            ExtShape::Box {
+            ShapeSpec::Box {
                 min: DVec3::splat(-1.0),
                 max: DVec3::splat(1.0),
             },
@@ -66,14 +66,14 @@ fn plain_spheres_stay_spheres_and_open_drops_caps() {
     let ext = Extension {
         objects: vec![
             record(
-                ExtShape::Sphere {
+                ShapeSpec::Sphere {
                     center: DVec3::ZERO,
                     radius: 1.0,
                 },
                 Modifiers::default(),
             ),
             record(
-                ExtShape::Cylinder {
+                ShapeSpec::Cylinder {
                     a: DVec3::ZERO,
                     b: DVec3::Y,
                     radius: 1.0,
@@ -102,14 +102,14 @@ fn numbering_continues_the_reports_and_names_replace_it() {
     .unwrap();
     scene.ext.objects = vec![
         record(
-            ExtShape::Sphere {
+            ShapeSpec::Sphere {
                 center: DVec3::X,
                 radius: 1.0,
             },
             Modifiers::default(),
         ),
         record(
-            ExtShape::Torus {
+            ShapeSpec::Torus {
                 center: DVec3::ZERO,
                 axis: DVec3::Y,
                 major: 2.0,
@@ -118,7 +118,7 @@ fn numbering_continues_the_reports_and_names_replace_it() {
             named("ring"),
         ),
         record(
-            ExtShape::Sphere {
+            ShapeSpec::Sphere {
                 center: DVec3::Y,
                 radius: 1.0,
             },
@@ -137,7 +137,7 @@ fn numbering_continues_the_reports_and_names_replace_it() {
 fn unbuilt_records_are_located_errors() {
     let ext = Extension {
         objects: vec![record(
-            ExtShape::Mesh {
+            ShapeSpec::Mesh {
                 path: "m.obj".into(),
                 written: "m.obj".into(),
             },
@@ -163,17 +163,17 @@ fn the_tree_finds_what_a_linear_scan_finds() {
             ..Modifiers::default()
         };
         let shape = match i % 3 {
-            0 => ExtShape::Torus {
+            0 => ShapeSpec::Torus {
                 center: DVec3::ZERO,
                 axis: DVec3::Y,
                 major: 0.6,
                 minor: 0.2,
             },
-            1 => ExtShape::Box {
+            1 => ShapeSpec::Box {
                 min: DVec3::splat(-0.4),
                 max: DVec3::splat(0.4),
             },
-            _ => ExtShape::Cone {
+            _ => ShapeSpec::Cone {
                 a: DVec3::ZERO,
                 ra: 0.5,
                 b: DVec3::Y,

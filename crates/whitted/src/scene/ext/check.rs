@@ -3,7 +3,8 @@
 //! pushes out of bounds is refused with the same words the reader would use. Each check
 //! answers the field to blame and why.
 
-use super::{ExtLight, ExtShape, Focus, LightKind, Modifiers};
+use super::{ExtLight, Focus, LightKind, Modifiers};
+use crate::scene::ShapeSpec;
 use glam::DVec3;
 
 /// A value out of §16's bounds: the field to blame (as the tables name it) and why.
@@ -39,11 +40,11 @@ fn positive(v: f64, field: &'static str) -> Result<(), Violation> {
 }
 
 /// The bounds of a shape record's geometry.
-pub fn shape(s: &ExtShape) -> Result<(), Violation> {
+pub fn shape(s: &ShapeSpec) -> Result<(), Violation> {
     match s {
-        ExtShape::Sphere { radius, .. } => positive(*radius, "Radius"),
-        ExtShape::Plane { normal, .. } => nonzero(*normal, "N", "normal"),
-        ExtShape::Box { min, max } => {
+        ShapeSpec::Sphere { radius, .. } => positive(*radius, "Radius"),
+        ShapeSpec::Plane { normal, .. } => nonzero(*normal, "N", "normal"),
+        ShapeSpec::Box { min, max } => {
             for (axis, (lo, hi)) in ["x", "y", "z"]
                 .iter()
                 .zip(min.to_array().into_iter().zip(max.to_array()))
@@ -54,11 +55,11 @@ pub fn shape(s: &ExtShape) -> Result<(), Violation> {
             }
             Ok(())
         }
-        ExtShape::Cylinder { a, b, radius } => {
+        ShapeSpec::Cylinder { a, b, radius } => {
             nonzero(*b - *a, "B", "axis from A to B")?;
             positive(*radius, "Radius")
         }
-        ExtShape::Cone { a, ra, b, rb } => {
+        ShapeSpec::Cone { a, ra, b, rb } => {
             nonzero(*b - *a, "B", "axis from A to B")?;
             if *ra < 0.0 || *rb < 0.0 {
                 return fail(
@@ -71,7 +72,7 @@ pub fn shape(s: &ExtShape) -> Result<(), Violation> {
             }
             Ok(())
         }
-        ExtShape::Disc {
+        ShapeSpec::Disc {
             normal,
             radius,
             hole,
@@ -87,7 +88,7 @@ pub fn shape(s: &ExtShape) -> Result<(), Violation> {
             }
             Ok(())
         }
-        ExtShape::Torus {
+        ShapeSpec::Torus {
             axis, major, minor, ..
         } => {
             nonzero(*axis, "Axis", "axis")?;
@@ -102,7 +103,7 @@ pub fn shape(s: &ExtShape) -> Result<(), Violation> {
             }
             Ok(())
         }
-        ExtShape::Triangle { corners: [p, q, r] } => {
+        ShapeSpec::Triangle { corners: [p, q, r] } => {
             if (*q - *p).cross(*r - *p).length_squared() > 0.0 {
                 Ok(())
             } else {
@@ -112,7 +113,11 @@ pub fn shape(s: &ExtShape) -> Result<(), Violation> {
                 )
             }
         }
-        ExtShape::Mesh { .. } | ExtShape::Gltf { .. } => Ok(()),
+        ShapeSpec::Mesh { .. } | ShapeSpec::Gltf { .. } => Ok(()),
+        // The report's and an NFF's own records: their readers check them.
+        ShapeSpec::InfiniteCylinder { .. }
+        | ShapeSpec::OpenCone { .. }
+        | ShapeSpec::Patch { .. } => Ok(()),
     }
 }
 
@@ -224,12 +229,12 @@ mod tests {
 
     #[test]
     fn box_min_must_be_below_max_on_every_axis() {
-        let ok = ExtShape::Box {
+        let ok = ShapeSpec::Box {
             min: DVec3::ZERO,
             max: DVec3::ONE,
         };
         assert_eq!(shape(&ok), Ok(()));
-        let flat = ExtShape::Box {
+        let flat = ShapeSpec::Box {
             min: DVec3::ZERO,
             max: DVec3::new(1.0, 0.0, 1.0),
         };
@@ -240,7 +245,7 @@ mod tests {
 
     #[test]
     fn torus_tube_must_be_thinner_than_its_ring() {
-        let t = |major, minor| ExtShape::Torus {
+        let t = |major, minor| ShapeSpec::Torus {
             center: DVec3::ZERO,
             axis: DVec3::Y,
             major,
@@ -291,7 +296,7 @@ mod tests {
 
     #[test]
     fn degenerate_triangle_and_zero_scale_are_refused() {
-        let line = ExtShape::Triangle {
+        let line = ShapeSpec::Triangle {
             corners: [DVec3::ZERO, DVec3::X, DVec3::X * 2.0],
         };
         assert_eq!(shape(&line).unwrap_err().field, "P3");

@@ -29,9 +29,10 @@ pub mod epsilon;
 use crate::base::Color;
 use crate::fileloc::FileLoc;
 use crate::object::Material;
+use crate::scene::ShapeSpec;
+use crate::shapes::csg::Op;
 use crate::texture::Texture;
 use glam::DVec3;
-use std::path::PathBuf;
 
 /// Every extension record of a file, in file order within each list.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -97,132 +98,11 @@ impl Modifiers {
     }
 }
 
-/// A shape record's geometry, as the file gives it (§16's table).
-#[derive(Clone, Debug, PartialEq)]
-pub enum ExtShape {
-    /// `sphere C(3) Radius`.
-    Sphere {
-        /// The centre C.
-        center: DVec3,
-        /// The radius, > 0.
-        radius: f64,
-    },
-    /// `plane P(3) N(3)`; N non-zero as written.
-    Plane {
-        /// A point P on the plane.
-        point: DVec3,
-        /// The normal N (non-zero); inside CSG the solid is the half-space behind it.
-        normal: DVec3,
-    },
-    /// `box Min(3) Max(3)`, Min < Max on each axis.
-    Box {
-        /// The corner Min.
-        min: DVec3,
-        /// The corner Max, above Min on each axis.
-        max: DVec3,
-    },
-    /// `cylinder A(3) B(3) Radius`, capped unless `open`.
-    Cylinder {
-        /// The centre A of one end.
-        a: DVec3,
-        /// The centre B of the other end (B ≠ A).
-        b: DVec3,
-        /// The radius, > 0.
-        radius: f64,
-    },
-    /// `cone A(3) Ra B(3) Rb`, capped unless `open`.
-    Cone {
-        /// The centre A of one end.
-        a: DVec3,
-        /// The radius Ra at A, ≥ 0.
-        ra: f64,
-        /// The centre B of the other end (B ≠ A).
-        b: DVec3,
-        /// The radius Rb at B, ≥ 0 (not both 0).
-        rb: f64,
-    },
-    /// `disc C(3) N(3) Radius Hole`, 0 ≤ Hole < Radius.
-    Disc {
-        /// The centre C.
-        center: DVec3,
-        /// The normal N (non-zero).
-        normal: DVec3,
-        /// The outer radius, > 0.
-        radius: f64,
-        /// The hole's radius, 0 ≤ Hole < Radius.
-        hole: f64,
-    },
-    /// `torus C(3) Axis(3) R r`, 0 < r < R.
-    Torus {
-        /// The centre C.
-        center: DVec3,
-        /// The axis (non-zero) the ring turns about.
-        axis: DVec3,
-        /// The ring's radius R (track field `major`).
-        major: f64,
-        /// The tube's radius r, 0 < r < R (track field `minor`).
-        minor: f64,
-    },
-    /// `triangle P1(3) P2(3) P3(3)`, not degenerate.
-    Triangle {
-        /// P1, P2, P3.
-        corners: [DVec3; 3],
-    },
-    /// A glTF primitive (SPEC §18): the glTF reader's, never written in a Scene.txt.
-    Gltf {
-        /// Its node in the file.
-        node: u32,
-        /// Its primitive in the node's mesh.
-        primitive: u32,
-    },
-    /// `mesh "file"`: `path` resolved against the scene's folder, `written` as quoted.
-    Mesh {
-        /// The file, resolved against the scene file's folder.
-        path: PathBuf,
-        /// The file name as the record quotes it.
-        written: String,
-    },
-}
-
-impl ExtShape {
-    /// The record's keyword (`box`, `torus`, …): its kind for numbering and tracks.
-    pub fn keyword(&self) -> &'static str {
-        match self {
-            ExtShape::Sphere { .. } => "sphere",
-            ExtShape::Plane { .. } => "plane",
-            ExtShape::Box { .. } => "box",
-            ExtShape::Cylinder { .. } => "cylinder",
-            ExtShape::Cone { .. } => "cone",
-            ExtShape::Disc { .. } => "disc",
-            ExtShape::Torus { .. } => "torus",
-            ExtShape::Triangle { .. } => "triangle",
-            ExtShape::Mesh { .. } => "mesh",
-            ExtShape::Gltf { .. } => "gltf",
-        }
-    }
-
-    /// True for the shapes CSG takes (a solid: sphere, plane, box, capped cylinder and
-    /// cone, torus); `open` is the modifier that would make a cylinder or cone a shell.
-    pub fn is_solid(&self, open: bool) -> bool {
-        match self {
-            ExtShape::Sphere { .. }
-            | ExtShape::Plane { .. }
-            | ExtShape::Box { .. }
-            | ExtShape::Torus { .. } => true,
-            ExtShape::Cylinder { .. } | ExtShape::Cone { .. } => !open,
-            ExtShape::Disc { .. }
-            | ExtShape::Triangle { .. }
-            | ExtShape::Mesh { .. }
-            | ExtShape::Gltf { .. } => false,
-        }
-    }
-}
-
 /// One shape record: geometry, TEXTURE, MATERIAL, modifiers, and where it starts.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ExtObject {
-    /// The geometry.
-    pub shape: ExtShape,
+    /// The geometry (the record form every reader shares).
+    pub shape: ShapeSpec,
     /// TEXTURE, as for the report's objects.
     pub texture: Texture,
     /// MATERIAL, as for the report's objects.
@@ -233,33 +113,12 @@ pub struct ExtObject {
     pub loc: FileLoc,
 }
 
-/// A CSG operation (POV-Ray's rules, §16).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CsgOp {
-    /// Every child's surface.
-    Union,
-    /// The surface points of each child inside every other child.
-    Intersection,
-    /// The first child minus the others.
-    Difference,
-}
-
-impl CsgOp {
-    /// The block's keyword.
-    pub fn keyword(self) -> &'static str {
-        match self {
-            CsgOp::Union => "union",
-            CsgOp::Intersection => "intersection",
-            CsgOp::Difference => "difference",
-        }
-    }
-}
-
-/// A CSG block: two or more solids or blocks, then `end` and the whole's modifiers.
+/// A CSG block, the one record form of a block: two or more solids or blocks, then `end`
+/// and the whole's modifiers. `build` makes its built form, a `shapes::csg::Csg` tree.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Csg {
-    /// The operation.
-    pub op: CsgOp,
+    /// The operation (the built tree's own).
+    pub op: Op,
     /// The children in file order (each a solid shape or a nested block).
     pub children: Vec<ExtItem>,
     /// Modifiers after `end` (name, scale, rotate, translate).
@@ -268,7 +127,8 @@ pub struct Csg {
     pub loc: FileLoc,
 }
 
-/// A light record's kind and fields (§16's table).
+/// A light record's kind and fields (§16's table): the one record form of a light's kind,
+/// built into `lights::Kind` by `build::lights`.
 #[derive(Clone, Debug, PartialEq)]
 pub enum LightKind {
     /// `directional D(3)`: travelling along D.

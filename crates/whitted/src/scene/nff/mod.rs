@@ -35,7 +35,7 @@
 pub mod polygon;
 mod reader;
 
-use super::{Scene, SceneError, ShapeSpec, MAX_PIXELS, MAX_SIDE};
+use super::{ObjectSpec, Scene, SceneError, ShapeSpec, MAX_PIXELS, MAX_SIDE};
 use crate::base::Color;
 use crate::camera::Lens;
 use crate::fog::Fog;
@@ -87,7 +87,7 @@ struct View {
 #[derive(Default)]
 struct Built {
     objects: Vec<Object>,
-    specs: Vec<ShapeSpec>,
+    specs: Vec<ObjectSpec>,
     /// Positions and colours as given.
     lights: Vec<(DVec3, Option<Color>)>,
     background: Color,
@@ -107,11 +107,11 @@ impl Built {
             return Err(r.error_at(start, msg));
         };
         self.objects.push(Object {
-            shape: spec.build(),
+            shape: spec.build().expect("an NFF record"),
             texture,
             material,
         });
-        self.specs.push(spec);
+        self.specs.push(ObjectSpec::Record(spec));
         Ok(())
     }
 }
@@ -158,7 +158,7 @@ pub fn parse(src: &str, file: &str) -> std::result::Result<Scene, SceneError> {
                     return Err(r.error_at(at, msg.into()));
                 }
                 let (base, apex) = ((base.0, base.1.abs()), (apex.0, apex.1.abs()));
-                b.push(ShapeSpec::Cone { base, apex }, &r, at)?;
+                b.push(ShapeSpec::OpenCone { base, apex }, &r, at)?;
             }
             "p" => read_polygon(&mut r, &mut b, at, false)?,
             "pp" => read_polygon(&mut r, &mut b, at, true)?,

@@ -13,7 +13,7 @@ mod texture;
 
 use super::error::{FileLoc, SceneError};
 use super::lexer::{Lexer, Token};
-use super::{Scene, ShapeSpec, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
+use super::{ObjectSpec, Scene, ShapeSpec, MAX_INTENSITY, MAX_PIXELS, MAX_SIDE};
 use crate::base::Color;
 use crate::bump::Bump;
 use crate::camera::Camera;
@@ -199,11 +199,11 @@ impl<'a> Parser<'a> {
         })
     }
 
-    fn object(&mut self, spec: ShapeSpec, specs: &mut Vec<ShapeSpec>) -> Result<Object> {
+    fn object(&mut self, spec: ShapeSpec, specs: &mut Vec<ObjectSpec>) -> Result<Object> {
         let texture = self.texture()?;
         let material = self.material()?;
-        let shape = spec.build();
-        specs.push(spec);
+        let shape = spec.build().expect("a report record");
+        specs.push(ObjectSpec::Record(spec));
         Ok(Object {
             shape,
             texture,
@@ -211,26 +211,26 @@ impl<'a> Parser<'a> {
         })
     }
 
-    fn sphere(&mut self, i: u64, n: u64, specs: &mut Vec<ShapeSpec>) -> Result<Object> {
+    fn sphere(&mut self, i: u64, n: u64, specs: &mut Vec<ObjectSpec>) -> Result<Object> {
         self.enter("sphere", Some((i, n)));
         let radius = self.positive("Radius")?;
         let (center, _) = self.vector(["Cx", "Cy", "Cz"])?;
         self.object(ShapeSpec::Sphere { center, radius }, specs)
     }
 
-    fn plane(&mut self, i: u64, n: u64, specs: &mut Vec<ShapeSpec>) -> Result<Object> {
+    fn plane(&mut self, i: u64, n: u64, specs: &mut Vec<ObjectSpec>) -> Result<Object> {
         self.enter("plane", Some((i, n)));
         let (point, _) = self.vector(["Px", "Py", "Pz"])?;
         let normal = self.direction(["Nx", "Ny", "Nz"], "normal")?;
         self.object(ShapeSpec::Plane { point, normal }, specs)
     }
 
-    fn cylinder(&mut self, i: u64, n: u64, specs: &mut Vec<ShapeSpec>) -> Result<Object> {
+    fn cylinder(&mut self, i: u64, n: u64, specs: &mut Vec<ObjectSpec>) -> Result<Object> {
         self.enter("cylinder", Some((i, n)));
         let axis = self.direction(["Ax", "Ay", "Az"], "axis")?;
         let (point, _) = self.vector(["Px", "Py", "Pz"])?;
         let radius = self.positive("Radius")?;
-        let cylinder = ShapeSpec::Cylinder {
+        let cylinder = ShapeSpec::InfiniteCylinder {
             axis,
             point,
             radius,

@@ -22,7 +22,8 @@ use crate::object::Object;
 use crate::optics::Ray;
 use glam::DVec3;
 
-/// A CSG operation.
+/// A CSG operation (POV-Ray's rules): the record's (`scene::ext::Csg`, a block as the
+/// file writes it) and the built tree's.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Op {
     /// Every child's surface.
@@ -31,6 +32,17 @@ pub enum Op {
     Intersection,
     /// The first child minus the others.
     Difference,
+}
+
+impl Op {
+    /// The block's keyword in a Scene.txt.
+    pub fn keyword(self) -> &'static str {
+        match self {
+            Op::Union => "union",
+            Op::Intersection => "intersection",
+            Op::Difference => "difference",
+        }
+    }
 }
 
 /// A child of a block: a solid with its texture and material, or a nested block. Leaves
@@ -80,7 +92,9 @@ pub struct Surface<'a> {
     pub normal: DVec3,
 }
 
-/// A CSG block: an operation over two or more children.
+/// A CSG block as the tracer draws it, an operation over two or more built children: the
+/// built form of a block's record (`scene::ext::Csg`, from which `scene::ext::build`
+/// makes it; nested blocks of one operation flattened into one node).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Csg {
     op: Op,

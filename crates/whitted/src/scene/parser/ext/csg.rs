@@ -10,19 +10,20 @@
 //! its own, not on the call stack, so no nesting can exhaust it. Only the outermost block
 //! is numbered (`csg 3`) and named; its solids and inner blocks are `in csg 3`.
 
-use super::super::super::ext::{Csg, CsgOp, ExtItem};
+use super::super::super::ext::{Csg, ExtItem};
 use super::super::super::lexer::Token;
 use super::super::Result;
 use super::{keywords, Ext};
 use crate::input::quote;
 use crate::limits::MAX_CSG_DEPTH;
+use crate::shapes::csg::Op;
 
 /// The operation a block keyword names.
-pub(super) fn op(word: &str) -> Option<CsgOp> {
+pub(super) fn op(word: &str) -> Option<Op> {
     match word {
-        "union" => Some(CsgOp::Union),
-        "intersection" => Some(CsgOp::Intersection),
-        "difference" => Some(CsgOp::Difference),
+        "union" => Some(Op::Union),
+        "intersection" => Some(Op::Intersection),
+        "difference" => Some(Op::Difference),
         _ => None,
     }
 }
@@ -30,14 +31,14 @@ pub(super) fn op(word: &str) -> Option<CsgOp> {
 /// A block being read: its keyword's token, its operation and the children read so far.
 struct Open<'a> {
     tok: Token<'a>,
-    op: CsgOp,
+    op: Op,
     children: Vec<ExtItem>,
 }
 
 impl<'a> Ext<'_, 'a> {
     /// A top-level CSG block: `op` read at `tok`, its children (nested blocks included)
     /// up to its `end`, then its modifiers.
-    pub(super) fn csg(&mut self, tok: Token<'a>, op: CsgOp) -> Result<Csg> {
+    pub(super) fn csg(&mut self, tok: Token<'a>, op: Op) -> Result<Csg> {
         let n = self.number("csg");
         let mut open = vec![Open {
             tok,

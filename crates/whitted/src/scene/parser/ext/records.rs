@@ -1,13 +1,14 @@
 //! The fields of each extension record (the table in `ext`'s module doc) and the
 //! modifiers after it, each checked against §16's bounds as soon as it is read.
 
-use super::super::super::ext::{check, ExtLight, ExtObject, ExtShape, Focus, LightKind, Modifiers};
+use super::super::super::ext::{check, ExtLight, ExtObject, Focus, LightKind, Modifiers};
 use super::super::Result;
 use super::{keywords, Ext};
 use crate::input::quote;
 use crate::limits::{MAX_AREA_SIDE, MAX_LENS_SAMPLES};
 use crate::mesh::{Pivot, Shading};
 use crate::scene::lexer::Token;
+use crate::scene::ShapeSpec;
 
 impl<'a> Ext<'_, 'a> {
     /// A shape record whose `keyword` is at `tok` (top level, or inside CSG block
@@ -24,40 +25,40 @@ impl<'a> Ext<'_, 'a> {
             "sphere" => {
                 let center = self.vec3("C", ["Cx", "Cy", "Cz"])?;
                 let radius = self.num("Radius")?;
-                ExtShape::Sphere { center, radius }
+                ShapeSpec::Sphere { center, radius }
             }
-            "plane" => ExtShape::Plane {
+            "plane" => ShapeSpec::Plane {
                 point: self.vec3("P", ["Px", "Py", "Pz"])?,
                 normal: self.vec3("N", ["Nx", "Ny", "Nz"])?,
             },
-            "box" => ExtShape::Box {
+            "box" => ShapeSpec::Box {
                 min: self.vec3("Min", ["Minx", "Miny", "Minz"])?,
                 max: self.vec3("Max", ["Maxx", "Maxy", "Maxz"])?,
             },
-            "cylinder" => ExtShape::Cylinder {
+            "cylinder" => ShapeSpec::Cylinder {
                 a: self.vec3("A", ["Ax", "Ay", "Az"])?,
                 b: self.vec3("B", ["Bx", "By", "Bz"])?,
                 radius: self.num("Radius")?,
             },
-            "cone" => ExtShape::Cone {
+            "cone" => ShapeSpec::Cone {
                 a: self.vec3("A", ["Ax", "Ay", "Az"])?,
                 ra: self.num("Ra")?,
                 b: self.vec3("B", ["Bx", "By", "Bz"])?,
                 rb: self.num("Rb")?,
             },
-            "disc" => ExtShape::Disc {
+            "disc" => ShapeSpec::Disc {
                 center: self.vec3("C", ["Cx", "Cy", "Cz"])?,
                 normal: self.vec3("N", ["Nx", "Ny", "Nz"])?,
                 radius: self.num("Radius")?,
                 hole: self.num("Hole")?,
             },
-            "torus" => ExtShape::Torus {
+            "torus" => ShapeSpec::Torus {
                 center: self.vec3("C", ["Cx", "Cy", "Cz"])?,
                 axis: self.vec3("Axis", ["Axisx", "Axisy", "Axisz"])?,
                 major: self.num("R")?,
                 minor: self.num("r")?,
             },
-            "triangle" => ExtShape::Triangle {
+            "triangle" => ShapeSpec::Triangle {
                 corners: [
                     self.vec3("P1", ["P1x", "P1y", "P1z"])?,
                     self.vec3("P2", ["P2x", "P2y", "P2z"])?,
@@ -105,7 +106,7 @@ impl<'a> Ext<'_, 'a> {
     }
 
     /// `mesh "file"`: the path resolved against the scene's folder.
-    fn mesh(&mut self) -> Result<ExtShape> {
+    fn mesh(&mut self) -> Result<ShapeSpec> {
         let tok = self.p.token("file", "a quoted file name")?;
         let written = keywords::unquote(tok.text).map_err(|why| {
             let msg = format!("{why}, found '{}'", quote(tok.text));
@@ -116,7 +117,7 @@ impl<'a> Ext<'_, 'a> {
                 .p
                 .error(&tok, "the mesh's file name is empty".into(), "file"));
         }
-        Ok(ExtShape::Mesh {
+        Ok(ShapeSpec::Mesh {
             path: self.base.join(&written),
             written,
         })

@@ -1,8 +1,10 @@
 //! The extension reader on hand-written files: what each record reads to, and where each
 //! kind of mistake is reported.
 
-use crate::scene::ext::{CsgOp, ExtItem, ExtShape, LightKind};
+use crate::scene::ext::{ExtItem, LightKind};
+use crate::scene::ShapeSpec;
 use crate::scene::{Scene, SceneError};
+use crate::shapes::csg::Op;
 use glam::DVec3;
 
 /// The report's part of a file: one sphere and one light, then `rest`.
@@ -45,7 +47,7 @@ fn every_shape_record_reads_its_fields_in_order() {
     let ExtItem::Shape(b) = &o[0] else { panic!() };
     assert_eq!(
         b.shape,
-        ExtShape::Box {
+        ShapeSpec::Box {
             min: DVec3::new(-1.0, 0.0, -1.0),
             max: DVec3::new(1.0, 2.0, 1.0)
         }
@@ -58,7 +60,7 @@ fn every_shape_record_reads_its_fields_in_order() {
     let ExtItem::Shape(k) = &o[2] else { panic!() };
     assert_eq!(
         k.shape,
-        ExtShape::Cone {
+        ShapeSpec::Cone {
             a: DVec3::ZERO,
             ra: 1.0,
             b: DVec3::new(0.0, 3.0, 0.0),
@@ -68,13 +70,13 @@ fn every_shape_record_reads_its_fields_in_order() {
     let ExtItem::Shape(s) = &o[6] else { panic!() };
     assert_eq!(
         s.shape,
-        ExtShape::Sphere {
+        ShapeSpec::Sphere {
             center: DVec3::new(1.0, 2.0, 3.0),
             radius: 4.0
         }
     );
     let ExtItem::Shape(m) = &o[7] else { panic!() };
-    let ExtShape::Mesh { path, written } = &m.shape else {
+    let ShapeSpec::Mesh { path, written } = &m.shape else {
         panic!()
     };
     assert_eq!(written, "models/tea pot.obj");
@@ -96,10 +98,10 @@ fn csg_blocks_nest_and_take_modifiers_after_end() {
     let [ExtItem::Csg(csg)] = &scene.ext.objects[..] else {
         panic!()
     };
-    assert_eq!(csg.op, CsgOp::Difference);
+    assert_eq!(csg.op, Op::Difference);
     assert_eq!(csg.children.len(), 2);
     assert!(
-        matches!(&csg.children[1], ExtItem::Csg(u) if u.op == CsgOp::Union && u.children.len() == 2)
+        matches!(&csg.children[1], ExtItem::Csg(u) if u.op == Op::Union && u.children.len() == 2)
     );
     assert_eq!(csg.mods.name.as_deref(), Some("bowl"));
     assert_eq!(csg.mods.translate, Some(DVec3::Y));
