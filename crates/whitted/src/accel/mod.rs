@@ -63,6 +63,10 @@ pub struct Accel {
     /// same numbers, without going through `Shape`: 72 bytes a triangle, read in the
     /// tree's leaves).
     tris: Vec<[DVec3; 3]>,
+    /// The triangles of meshes its other primitives name (`ShapePrim::slot`), in the
+    /// tree's order, as `tris` (B − A and C − A computed as `Mesh::line_hit` computes
+    /// them): a leaf's are neighbours in memory, read without the vertex indices.
+    mesh_tris: Vec<[DVec3; 3]>,
     /// Leaves of triangles rounded to f32 for the lanes' filter (`packet`), and for
     /// each of `shapes`' primitive slots the packet of the leaf starting there.
     packets: Vec<packet::TriPacket>,
@@ -201,6 +205,7 @@ impl Accel {
                 index: i as u32,
                 part,
                 mesh,
+                slot: 0,
                 glass: is_glass(o),
                 opaque: is_opaque(o),
             };
@@ -294,6 +299,12 @@ impl Accel {
             leaf_max,
         );
         let tris = in_tree_order(&mut shapes, ShapePrim::TRI, &tris);
+        let mut mesh_tris = Vec::new();
+        for prim in shapes.prims_mut().iter_mut().filter(|p| !p.is_own()) {
+            let [a, b, c] = meshes[prim.mesh as usize].corners(prim.part);
+            prim.slot = mesh_tris.len() as u32;
+            mesh_tris.push([a, b - a, c - a]);
+        }
         let spheres = in_tree_order(&mut shapes, ShapePrim::SPHERE, &spheres);
         let tree = Bvh::build(prims, Prim::bounds);
         let mut accel = Accel {
@@ -303,6 +314,7 @@ impl Accel {
             shapes,
             solo,
             tris,
+            mesh_tris,
             spheres,
             meshes: meshes.to_vec(),
             t_min,

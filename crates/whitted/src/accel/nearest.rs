@@ -21,7 +21,10 @@ impl Accel {
         } else if prim.mesh == ShapePrim::SOLO {
             self.solo[prim.part as usize].hit(ray, t_max)
         } else {
-            self.meshes[prim.mesh as usize].hit(prim.part, ray, t_max)
+            // `Mesh::hit`'s test on the same numbers, read in the tree's order.
+            let [a, e1, e2] = self.mesh_tris[prim.slot as usize];
+            let (_, _, t) = Triangle::uvt_of(a, e1, e2, ray)?;
+            (t > ray.t_min && t < t_max).then_some(t)
         }
     }
 

@@ -185,10 +185,7 @@ impl Accel {
                 .map(|p| match p.mesh {
                     ShapePrim::TRI => Some(self.tris[p.part as usize]),
                     ShapePrim::SOLO | ShapePrim::SPHERE => None,
-                    m => {
-                        let [a, b, c] = self.meshes.get(m as usize)?.corners(p.part);
-                        Some([a, b - a, c - a])
-                    }
+                    _ => Some(self.mesh_tris[p.slot as usize]),
                 })
                 .collect();
             // Fewer than `PACKET_MIN` triangles are tested faster one by one.

@@ -72,6 +72,9 @@ pub struct ShapePrim {
     /// indexes the accelerator's compact triangles), `SPHERE` for a sphere (`part`
     /// indexes the accelerator's spheres), else the slot of its mesh.
     pub mesh: u32,
+    /// For a mesh's triangle, its corner and edges' slot in the accelerator's copy of
+    /// them in the tree's order (0 elsewhere).
+    pub slot: u32,
     /// Kt > 0: shadow rays cross it.
     pub glass: bool,
     /// Kt ≤ 0: shadow rays stop at it. (Neither, for a NaN Kt.)
