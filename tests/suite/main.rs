@@ -27,6 +27,7 @@ mod animate_reliability;
 mod animate_tracks;
 mod background_record;
 mod balance;
+mod box_lanes;
 mod camera_tracks;
 mod check_bounded;
 mod check_browser;

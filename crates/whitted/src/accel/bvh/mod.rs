@@ -15,14 +15,16 @@
 //! moves a hit point by a few ulps of its coordinates, far inside the same margin.
 
 mod build;
-mod node4;
+mod lanes;
+mod node8;
 mod raybox;
 mod walk;
 
 use crate::optics::Ray;
 use crate::shapes::Sphere;
 use glam::DVec3;
-use node4::{WideNode, LEAF};
+use lanes::Choice;
+use node8::{WideNode, LEAF, WIDTH};
 
 /// The build splits every node of more primitives than this (unless it runs out of
 /// depth) ...
@@ -38,10 +40,10 @@ const TRAVERSE_COST: f64 = 0.5;
 pub const FLAT_MAX: usize = 12;
 /// SAH bins per split.
 const BINS: usize = 16;
-/// Deepest level the build creates (10,000 spheres need about 15). The four-wide tree
-/// is no deeper, and its traversal stacks at most three children per level.
+/// Deepest level the build creates (10,000 spheres need about 15). The wide tree is no
+/// deeper, and its traversal stacks at most `WIDTH - 1` children per level.
 const MAX_DEPTH: usize = 32;
-const STACK: usize = 3 * (MAX_DEPTH + 2);
+const STACK: usize = (WIDTH - 1) * (MAX_DEPTH + 2);
 /// Relative box margin: δ = PAD · (|origin|∞ + scale + 1), see `RayBox::new`.
 const PAD: f64 = 1e-5;
 
@@ -143,8 +145,10 @@ const BLANK: Node = Node {
 /// `FLAT_MAX` primitives there are no nodes, only the primitives, opaque ones first.
 #[derive(Clone, Debug)]
 pub struct Bvh<P = Prim> {
-    /// The four-wide nodes (`node4`), root at 0.
+    /// The wide nodes (`node8`), root at 0.
     nodes: Vec<WideNode>,
+    /// The lanes its queries test the nodes' boxes with.
+    lanes: Choice,
     prims: Vec<P>,
     /// The largest coordinate magnitude of the boxes.
     scale: f64,
@@ -163,6 +167,7 @@ impl<P> Default for Bvh<P> {
     fn default() -> Bvh<P> {
         Bvh {
             nodes: Vec::new(),
+            lanes: Choice::chosen(),
             prims: Vec::new(),
             scale: 0.0,
             flat_opaque: 0,
@@ -215,7 +220,7 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
             bvh.flat_opaque = bvh.prims.iter().filter(|p| !p.is_glass()).count();
             return bvh;
         }
-        bvh.nodes = node4::collapse(&build::build_tree(&mut items, leaf_max));
+        bvh.nodes = node8::collapse(&build::build_tree(&mut items, leaf_max));
         bvh.prims = items.into_iter().map(|it| it.prim).collect();
         bvh
     }
@@ -234,6 +239,12 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
     /// How many spheres the tree holds.
     pub fn len(&self) -> usize {
         self.prims.len()
+    }
+
+    /// The lanes its queries test boxes with: `narrow` (two SSE registers of four) or
+    /// `avx2` (one register of eight).
+    pub fn lanes(&self) -> &'static str {
+        self.lanes.name()
     }
 
     /// True when the tree is a flat list (no box tests).
@@ -303,7 +314,7 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
             return;
         }
         let (nodes, len, scale) = (&self.nodes[..], self.prims.len(), self.scale);
-        walk::walk::<ORDERED, STACK>(nodes, len, scale, ray, limit, leaf)
+        walk::walk::<ORDERED, STACK>(self.lanes, nodes, len, scale, ray, limit, leaf)
     }
 
     /// The primitives in the tree's order (a leaf's are neighbours).
@@ -315,7 +326,7 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
     pub fn leaves(&self) -> Vec<(usize, usize)> {
         let mut out = Vec::new();
         for n in &self.nodes {
-            for s in 0..4 {
+            for s in 0..WIDTH {
                 if n.child[s] & LEAF != 0 {
                     out.push(((n.child[s] & !LEAF) as usize, n.count[s] as usize));
                 }
@@ -324,13 +335,15 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
         out
     }
 
-    /// The depth of the four-wide tree (1 for a root whose children are all leaves;
+    /// The depth of the wide tree (1 for a root whose children are all leaves;
     /// 0 for a flat list), for tests and statistics.
     pub fn depth(&self) -> usize {
         fn walk(nodes: &[WideNode], i: usize) -> usize {
             let n = &nodes[i];
-            let below = (0..4)
-                .filter(|&s| n.child[s] & LEAF == 0 && n.count[s] == 0 && n.lo[0][s] <= n.hi[0][s])
+            let below = (0..WIDTH)
+                .filter(|&s| {
+                    n.child[s] & LEAF == 0 && n.count[s] == 0 && n.b[0][0][s] <= n.b[1][0][s]
+                })
                 .map(|s| walk(nodes, n.child[s] as usize))
                 .max()
                 .unwrap_or(0);
@@ -344,5 +357,7 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
     }
 }
 
+#[cfg(all(test, feature = "avx2", target_arch = "x86_64"))]
+mod lanes_tests;
 #[cfg(test)]
 mod tests;

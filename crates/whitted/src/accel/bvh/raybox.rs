@@ -1,11 +1,11 @@
-//! The ray's side of the box test, four boxes at a time in f32 lanes: 1/dir, the corner
-//! each axis enters by, and the origin moved by ±δ so that every box is widened by δ at
-//! no extra cost per node (see `RayBox::new` for why δ suffices, in f32 too).
+//! The ray's side of the box test: 1/dir, the corner each axis enters by, and the origin
+//! moved by ±δ so that every box is widened by δ at no extra cost per node (see
+//! `RayBox::new` for why δ suffices, in f32 too). The lanes that test a node's boxes
+//! against it are `lanes`'.
 
-use super::node4::{up, WideNode};
+use super::node8::up;
 use super::PAD;
 use crate::optics::Ray;
-use wide::{f32x4, CmpGe, CmpLe};
 
 /// Beyond this magnitude of the ray's origin plus the tree's coordinates, the lanes'
 /// bound on their own rounding no longer holds (f32 overflows near 3.4e38, and a ray
@@ -13,16 +13,16 @@ use wide::{f32x4, CmpGe, CmpLe};
 /// declines and the caller visits every primitive.
 const F32_RANGE: f64 = 1e18;
 
-/// A ray prepared for box tests in lanes.
+/// A ray prepared for box tests in f32, per axis.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct RayBox {
-    inv: [f32x4; 3],
+    pub inv: [f32; 3],
     /// Per axis, whether the ray enters by the high corner (its direction's sign bit).
-    neg: [bool; 3],
+    pub neg: [bool; 3],
     /// The origin moved so that the near planes are pushed out by δ ...
-    o_near: [f32x4; 3],
+    pub o_near: [f32; 3],
     /// ... and the far planes too.
-    o_far: [f32x4; 3],
+    pub o_far: [f32; 3],
 }
 
 impl RayBox {
@@ -51,40 +51,23 @@ impl RayBox {
         let delta = PAD * (reach + 1.0);
         let o = ray.origin.to_array();
         let d = ray.dir.to_array();
-        let lane = |x: f64| f32x4::splat(x as f32);
         let mut rb = RayBox {
-            inv: [f32x4::ZERO; 3],
+            inv: [0.0; 3],
             neg: [false; 3],
-            o_near: [f32x4::ZERO; 3],
-            o_far: [f32x4::ZERO; 3],
+            o_near: [0.0; 3],
+            o_far: [0.0; 3],
         };
         for i in 0..3 {
-            rb.inv[i] = lane(1.0 / d[i]);
+            rb.inv[i] = (1.0 / d[i]) as f32;
             // The sign bit decides, so that −0 enters by the high corner like any
             // negative direction (1/−0 = −∞).
             let neg = d[i].is_sign_negative();
             rb.neg[i] = neg;
             let s = if neg { -delta } else { delta };
-            rb.o_near[i] = lane(o[i] + s);
-            rb.o_far[i] = lane(o[i] - s);
+            rb.o_near[i] = (o[i] + s) as f32;
+            rb.o_far[i] = (o[i] - s) as f32;
         }
         Some(rb)
-    }
-
-    /// For each of `n`'s four slots, whether the ray's line meets its widened box at
-    /// some t in [0, t_max] (bit k of the mask for slot k), and the entry parameters.
-    #[inline(always)]
-    pub(super) fn enter4(&self, n: &WideNode, t_max: f32) -> (u32, [f32; 4]) {
-        let mut near = f32x4::splat(f32::NEG_INFINITY);
-        let mut far = f32x4::splat(f32::INFINITY);
-        for i in 0..3 {
-            let (lo, hi) = (f32x4::from(n.lo[i]), f32x4::from(n.hi[i]));
-            let (a, b) = if self.neg[i] { (hi, lo) } else { (lo, hi) };
-            near = near.fast_max((a - self.o_near[i]) * self.inv[i]);
-            far = far.fast_min((b - self.o_far[i]) * self.inv[i]);
-        }
-        let hit = near.cmp_le(far) & far.cmp_ge(f32x4::ZERO) & near.cmp_le(f32x4::splat(t_max));
-        (hit.move_mask() as u32, near.to_array())
     }
 }
 

@@ -1,7 +1,7 @@
-//! The four-wide tree's own parts: f32 rounding outward, the collapse, and the lanes'
+//! The wide tree's own parts: f32 rounding outward, the collapse, and the lanes'
 //! range; the whole queries are checked against the linear scans in `accel::tests`.
 
-use super::node4::{down, up};
+use super::node8::{down, up};
 use super::*;
 
 #[test]
@@ -43,7 +43,8 @@ fn offered(bvh: &Bvh<Prim>, ray: &Ray) -> Vec<u32> {
 #[test]
 fn the_collapse_keeps_every_primitive_once() {
     let bvh = row(1000, 0.0);
-    assert!(bvh.depth() >= 4 && bvh.depth() <= 8, "{}", bvh.depth());
+    // 250 to 1000 leaves, eight to a node: at least three levels (8² < 250).
+    assert!(bvh.depth() >= 3 && bvh.depth() <= 5, "{}", bvh.depth());
     // A ray along the row meets every box: each sphere is offered exactly once,
     // nearest first.
     let seen = offered(&bvh, &Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X));
@@ -106,7 +107,7 @@ fn a_deep_tree_is_walked_whole() {
         })
         .collect();
     let bvh = Bvh::build(prims, Prim::bounds);
-    assert!(bvh.depth() > 12, "{}", bvh.depth());
+    assert!(bvh.depth() > 8, "{}", bvh.depth());
     let seen = offered(&bvh, &Ray::new(DVec3::new(-1.0, 0.0, 0.0), DVec3::X));
     assert_eq!(seen, (0..200).collect::<Vec<u32>>());
 }

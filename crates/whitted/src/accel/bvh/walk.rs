@@ -1,25 +1,29 @@
-//! The walk through the four-wide nodes: each node's four boxes in one lane test
-//! (`raybox`), the children hit entered nearest first when `ORDERED` (nearest-hit
-//! searches, whose limit shrinks as they go), the others stacked with their entry
-//! parameters. Measured on the SPD (callgrind, see docs/performance.md): visiting a
-//! node's leaves at once and stacking only interior nodes cost 2.5–7 % more than this.
+//! The walk through the eight-wide nodes: each node's boxes in one lane test (`lanes`),
+//! the children hit entered nearest first when `ORDERED` (nearest-hit searches, whose
+//! limit shrinks as they go), the others stacked with their entry parameters. The walk
+//! is written once over `Lanes` and compiled for each: `walk` picks the tree's lanes,
+//! and the AVX2 copy runs inside `pulp`'s `vectorize`, so that the whole walk, with the
+//! caller's leaf visitor inlined into it, is compiled for AVX2.
 
-use super::node4::{WideNode, LEAF};
+use super::lanes::{Choice, Lanes, Narrow};
+use super::node8::{WideNode, LEAF, WIDTH};
 use super::raybox::{limit32, RayBox};
 use crate::optics::Ray;
 use arrayvec::ArrayVec;
 
 /// Calls `leaf(first, count, limit)` on every leaf whose box the ray meets within the
 /// limit (its primitives are `first..first + count` of the tree's `len`), as
-/// `Bvh::traverse_leaves` says (`nodes` non-empty, root at 0). `STACK` is at least three
-/// entries per level of the tree: each node stacks at most three children.
+/// `Bvh::traverse_leaves` says (`nodes` non-empty, root at 0). `STACK` is at least
+/// `WIDTH - 1` entries per level of the tree: each node stacks at most that many.
 #[inline(never)]
+#[allow(clippy::too_many_arguments)]
 pub(super) fn walk<const ORDERED: bool, const STACK: usize>(
+    lanes: Choice,
     nodes: &[WideNode],
     len: usize,
     scale: f64,
     ray: &Ray,
-    mut limit: f64,
+    limit: f64,
     mut leaf: impl FnMut(usize, usize, f64) -> Option<f64>,
 ) {
     let Some(rb) = RayBox::new(ray, scale) else {
@@ -27,6 +31,25 @@ pub(super) fn walk<const ORDERED: bool, const STACK: usize>(
         leaf(0, len, limit);
         return;
     };
+    match lanes {
+        Choice::Narrow => walk_in::<ORDERED, STACK, _>(Narrow, nodes, &rb, limit, leaf),
+        #[cfg(all(feature = "avx2", target_arch = "x86_64"))]
+        Choice::Avx2(v3) => v3.vectorize(
+            #[inline(always)]
+            move || walk_in::<ORDERED, STACK, _>(super::lanes::Avx2(v3), nodes, &rb, limit, leaf),
+        ),
+    }
+}
+
+#[inline(always)]
+fn walk_in<const ORDERED: bool, const STACK: usize, L: Lanes>(
+    lanes: L,
+    nodes: &[WideNode],
+    rb: &RayBox,
+    mut limit: f64,
+    mut leaf: impl FnMut(usize, usize, f64) -> Option<f64>,
+) {
+    let r = lanes.ray(rb);
     let mut lim = limit32(limit);
     // The subtrees still to visit: (reference, count, entry t). An `ArrayVec`, never
     // zeroed (zeroing plain arrays per query cost gears 1.3 % of its instructions).
@@ -42,7 +65,7 @@ pub(super) fn walk<const ORDERED: bool, const STACK: usize>(
             lim = limit32(limit);
         } else {
             let n = &nodes[cur as usize];
-            let (mask, t) = rb.enter4(n, lim);
+            let (mask, t) = lanes.enter(&r, n, lim);
             if mask != 0 && !ORDERED {
                 // Any order: the lowest slot hit next, the others stacked highest first
                 // (so they come off the stack in slot order).
@@ -58,8 +81,9 @@ pub(super) fn walk<const ORDERED: bool, const STACK: usize>(
                 continue;
             }
             if mask != 0 {
-                // The slots hit, by entry parameter (insertion into four).
-                let mut order = [0usize; 4];
+                // The slots hit, by entry parameter (insertion, lowest slot first among
+                // equals).
+                let mut order = [0usize; WIDTH];
                 let mut k = 0;
                 let mut bits = mask;
                 while bits != 0 {

@@ -1,12 +1,14 @@
-//! The four-wide tree the queries walk: the binary SAH tree of `build`, collapsed so
-//! that each node holds up to four children whose boxes are tested together in f32
-//! lanes (`raybox`). Each box is the binary tree's f64 box rounded outward to f32 (its
+//! The eight-wide tree the queries walk: the binary SAH tree of `build`, collapsed so
+//! that each node holds up to eight children whose boxes are tested together in f32
+//! lanes (`raybox`: one AVX2 register or two SSE ones, the same operations either way). Each box is the binary tree's f64 box rounded outward to f32 (its
 //! low corner down, its high corner up), so it still contains everything the f64 box
 //! did; the traversal's δ margin does the rest (see `RayBox::new`).
 //!
 //! Collapsing: starting from a binary node's two children, the interior child with the
-//! largest surface area is replaced by its own two children until there are four (or
-//! only leaves are left); leaves keep the binary tree's primitive ranges.
+//! largest surface area is replaced by its own two children until there are `WIDTH` (or
+//! only leaves are left); leaves keep the binary tree's primitive ranges. The width is
+//! the same on every machine, so the tree is too; only the lanes that test a node's
+//! boxes are chosen when the program starts.
 
 use super::Node;
 
@@ -14,24 +16,28 @@ use super::Node;
 /// with `LEAF` set (its count is in `WideNode::count`).
 pub(super) const LEAF: u32 = 1 << 31;
 
-/// Up to four children, their boxes laid out by axis for the lanes.
+/// Children per node.
+pub(super) const WIDTH: usize = 8;
+
+/// Up to `WIDTH` children, their boxes laid out by axis for the lanes. 256 bytes, aligned
+/// to 64 so that a node is four whole cache lines.
 #[derive(Clone, Copy, Debug)]
+#[repr(C, align(64))]
 pub(super) struct WideNode {
-    /// `lo[axis][slot]`, rounded down to f32; empty slots hold +∞.
-    pub lo: [[f32; 4]; 3],
-    /// `hi[axis][slot]`, rounded up to f32; empty slots hold −∞.
-    pub hi: [[f32; 4]; 3],
+    /// `b[0][axis][slot]`: the low corners, rounded down to f32 (empty slots hold +∞);
+    /// `b[1][axis][slot]`: the high corners, rounded up (empty slots hold −∞). A ray
+    /// enters by `b[neg]` on each axis, `neg` its direction's sign bit (no branch).
+    pub b: [[[f32; WIDTH]; 3]; 2],
     /// Per slot: an interior node's index, or `LEAF | first primitive`.
-    pub child: [u32; 4],
+    pub child: [u32; WIDTH],
     /// Per slot: the leaf's primitive count (0 for an interior child or an empty slot).
-    pub count: [u32; 4],
+    pub count: [u32; WIDTH],
 }
 
 const EMPTY: WideNode = WideNode {
-    lo: [[f32::INFINITY; 4]; 3],
-    hi: [[f32::NEG_INFINITY; 4]; 3],
-    child: [0; 4],
-    count: [0; 4],
+    b: [[[f32::INFINITY; WIDTH]; 3], [[f32::NEG_INFINITY; WIDTH]; 3]],
+    child: [0; WIDTH],
+    count: [0; WIDTH],
 };
 
 /// `x` rounded to an f32 no larger than it (−∞ below f32's range).
@@ -67,11 +73,11 @@ pub(super) fn collapse(nodes: &[Node]) -> Vec<WideNode> {
     wide
 }
 
-/// Fills `wide[slot]` with the binary nodes `kids` (expanded to up to four), then
+/// Fills `wide[slot]` with the binary nodes `kids` (expanded to up to `WIDTH`), then
 /// appends their interior children's wide nodes, depth first.
 fn fill(nodes: &[Node], wide: &mut Vec<WideNode>, slot: usize, kids: &[usize]) {
     let mut kids: Vec<usize> = kids.to_vec();
-    while kids.len() < 4 {
+    while kids.len() < WIDTH {
         // The interior child of largest area (the first of equals) opens up.
         let open = kids
             .iter()
@@ -89,8 +95,8 @@ fn fill(nodes: &[Node], wide: &mut Vec<WideNode>, slot: usize, kids: &[usize]) {
     for (s, &k) in kids.iter().enumerate() {
         let n = &nodes[k];
         for axis in 0..3 {
-            w.lo[axis][s] = down(n.b[0][axis]);
-            w.hi[axis][s] = up(n.b[1][axis]);
+            w.b[0][axis][s] = down(n.b[0][axis]);
+            w.b[1][axis][s] = up(n.b[1][axis]);
         }
         if n.count > 0 {
             w.child[s] = LEAF | n.first;
