@@ -26,30 +26,79 @@ pub(super) fn walk<const ORDERED: bool, const STACK: usize>(
     limit: f64,
     mut leaf: impl FnMut(usize, usize, f64) -> Option<f64>,
 ) {
+    match lanes {
+        Choice::Narrow => {
+            walk_in::<ORDERED, STACK, _, _>(Narrow, nodes, len, scale, ray, limit, &mut leaf)
+        }
+        #[cfg(all(feature = "avx2", target_arch = "x86_64"))]
+        Choice::Avx2(v3) => pulp::Simd::vectorize(
+            v3,
+            WalkAvx2::<ORDERED, STACK, _> {
+                v3,
+                nodes,
+                len,
+                scale,
+                ray,
+                limit,
+                leaf: &mut leaf,
+            },
+        ),
+    }
+}
+
+/// The walk in AVX2 lanes as `pulp` runs it: `vectorize` compiles `with_simd` (and all
+/// it inlines: the walk, the caller's visitor) for AVX2. Seven words, all references or
+/// plain values, so that `vectorize` passes it in registers: a larger one is copied to
+/// the stack on every query, and copying a freshly written ray box stalled the bunny's
+/// queries on store forwarding (8 % of its time). The visitor is called directly, not
+/// through `&mut F`'s `FnMut` shim, which the compiler left out of line.
+#[cfg(all(feature = "avx2", target_arch = "x86_64"))]
+struct WalkAvx2<'a, const ORDERED: bool, const STACK: usize, F> {
+    v3: pulp::x86::V3,
+    nodes: &'a [WideNode],
+    len: usize,
+    scale: f64,
+    ray: &'a Ray,
+    limit: f64,
+    leaf: &'a mut F,
+}
+
+#[cfg(all(feature = "avx2", target_arch = "x86_64"))]
+impl<const ORDERED: bool, const STACK: usize, F> pulp::WithSimd for WalkAvx2<'_, ORDERED, STACK, F>
+where
+    F: FnMut(usize, usize, f64) -> Option<f64>,
+{
+    type Output = ();
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _: S) {
+        let lanes = super::lanes::Avx2(self.v3);
+        let (nodes, ray) = (self.nodes, self.ray);
+        walk_in::<ORDERED, STACK, _, _>(
+            lanes, nodes, self.len, self.scale, ray, self.limit, self.leaf,
+        )
+    }
+}
+
+#[inline(always)]
+#[allow(clippy::too_many_arguments)]
+fn walk_in<const ORDERED: bool, const STACK: usize, L: Lanes, F>(
+    lanes: L,
+    nodes: &[WideNode],
+    len: usize,
+    scale: f64,
+    ray: &Ray,
+    mut limit: f64,
+    leaf: &mut F,
+) where
+    F: FnMut(usize, usize, f64) -> Option<f64>,
+{
     let Some(rb) = RayBox::new(ray, scale) else {
         // Beyond the lanes' range: every primitive, in the tree's order, as one leaf.
         leaf(0, len, limit);
         return;
     };
-    match lanes {
-        Choice::Narrow => walk_in::<ORDERED, STACK, _>(Narrow, nodes, &rb, limit, leaf),
-        #[cfg(all(feature = "avx2", target_arch = "x86_64"))]
-        Choice::Avx2(v3) => v3.vectorize(
-            #[inline(always)]
-            move || walk_in::<ORDERED, STACK, _>(super::lanes::Avx2(v3), nodes, &rb, limit, leaf),
-        ),
-    }
-}
-
-#[inline(always)]
-fn walk_in<const ORDERED: bool, const STACK: usize, L: Lanes>(
-    lanes: L,
-    nodes: &[WideNode],
-    rb: &RayBox,
-    mut limit: f64,
-    mut leaf: impl FnMut(usize, usize, f64) -> Option<f64>,
-) {
-    let r = lanes.ray(rb);
+    let r = lanes.ray(&rb);
     let mut lim = limit32(limit);
     // The subtrees still to visit: (reference, count, entry t). An `ArrayVec`, never
     // zeroed (zeroing plain arrays per query cost gears 1.3 % of its instructions).
