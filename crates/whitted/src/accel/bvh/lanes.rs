@@ -15,7 +15,7 @@ use super::raybox::RayBox;
 use std::sync::OnceLock;
 use wide::{f32x4, CmpGe, CmpLe};
 
-/// Which lanes a tree's queries use (`Lanes::chosen`).
+/// Which lanes a tree's queries use (`Choice::chosen`).
 #[derive(Clone, Copy, Debug)]
 pub(super) enum Choice {
     Narrow,
@@ -42,53 +42,52 @@ impl Choice {
         let _ = setting;
         Choice::Narrow
     }
-
-    /// The lanes' name, for statistics and tests.
-    pub(super) fn name(self) -> &'static str {
-        match self {
-            Choice::Narrow => "narrow",
-            #[cfg(all(feature = "avx2", target_arch = "x86_64"))]
-            Choice::Avx2(_) => "avx2",
-        }
-    }
 }
 
-/// A way to test a node's boxes: the ray splatted once per query (`Ray`), then per node
-/// the mask of slots whose widened box the ray's line meets at some t in [0, t_max]
-/// (bit k for slot k) and the entry parameters.
+/// The ray box with each value splatted across a register of lanes `V`, once per query.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Splat<V> {
+    inv: [V; 3],
+    /// Per axis, whether the ray enters by the high corner.
+    neg: [bool; 3],
+    o_near: [V; 3],
+    o_far: [V; 3],
+}
+
+/// A way to test a node's boxes: a value splatted across the lanes (`splat`), then per
+/// node the mask of slots whose widened box the ray's line meets at some t in
+/// [0, t_max] (bit k for slot k) and the entry parameters.
 pub(super) trait Lanes: Copy {
-    type Ray: Copy;
-    fn ray(self, rb: &RayBox) -> Self::Ray;
-    fn enter(self, r: &Self::Ray, n: &WideNode, t_max: f32) -> (u32, [f32; WIDTH]);
+    type V: Copy;
+    fn splat(self, x: f32) -> Self::V;
+    fn enter(self, r: &Splat<Self::V>, n: &WideNode, t_max: f32) -> (u32, [f32; WIDTH]);
+
+    /// The ray box in these lanes.
+    #[inline(always)]
+    fn ray(self, rb: &RayBox) -> Splat<Self::V> {
+        Splat {
+            inv: rb.inv.map(|x| self.splat(x)),
+            neg: rb.neg,
+            o_near: rb.o_near.map(|x| self.splat(x)),
+            o_far: rb.o_far.map(|x| self.splat(x)),
+        }
+    }
 }
 
 /// Two registers of four.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Narrow;
 
-#[derive(Clone, Copy, Debug)]
-pub(super) struct NarrowRay {
-    inv: [f32x4; 3],
-    neg: [bool; 3],
-    o_near: [f32x4; 3],
-    o_far: [f32x4; 3],
-}
-
 impl Lanes for Narrow {
-    type Ray = NarrowRay;
+    type V = f32x4;
 
     #[inline(always)]
-    fn ray(self, rb: &RayBox) -> NarrowRay {
-        NarrowRay {
-            inv: rb.inv.map(f32x4::splat),
-            neg: rb.neg,
-            o_near: rb.o_near.map(f32x4::splat),
-            o_far: rb.o_far.map(f32x4::splat),
-        }
+    fn splat(self, x: f32) -> f32x4 {
+        f32x4::splat(x)
     }
 
     #[inline(always)]
-    fn enter(self, r: &NarrowRay, n: &WideNode, t_max: f32) -> (u32, [f32; WIDTH]) {
+    fn enter(self, r: &Splat<f32x4>, n: &WideNode, t_max: f32) -> (u32, [f32; WIDTH]) {
         let mut mask = 0;
         let mut t = [0.0; WIDTH];
         for h in 0..WIDTH / 4 {
@@ -116,7 +115,7 @@ pub(super) use avx2::Avx2;
 
 #[cfg(all(feature = "avx2", target_arch = "x86_64"))]
 mod avx2 {
-    use super::{Lanes, RayBox, WideNode, WIDTH};
+    use super::{Lanes, Splat, WideNode, WIDTH};
     use core::arch::x86_64::{__m256, _CMP_GE_OQ, _CMP_LE_OQ};
     use pulp::x86::V3;
 
@@ -124,30 +123,16 @@ mod avx2 {
     #[derive(Clone, Copy, Debug)]
     pub(in crate::accel::bvh) struct Avx2(pub V3);
 
-    #[derive(Clone, Copy, Debug)]
-    pub(in crate::accel::bvh) struct Avx2Ray {
-        inv: [__m256; 3],
-        neg: [bool; 3],
-        o_near: [__m256; 3],
-        o_far: [__m256; 3],
-    }
-
     impl Lanes for Avx2 {
-        type Ray = Avx2Ray;
+        type V = __m256;
 
         #[inline(always)]
-        fn ray(self, rb: &RayBox) -> Avx2Ray {
-            let avx = self.0.avx;
-            Avx2Ray {
-                inv: rb.inv.map(|x| avx._mm256_set1_ps(x)),
-                neg: rb.neg,
-                o_near: rb.o_near.map(|x| avx._mm256_set1_ps(x)),
-                o_far: rb.o_far.map(|x| avx._mm256_set1_ps(x)),
-            }
+        fn splat(self, x: f32) -> __m256 {
+            self.0.avx._mm256_set1_ps(x)
         }
 
         #[inline(always)]
-        fn enter(self, r: &Avx2Ray, n: &WideNode, t_max: f32) -> (u32, [f32; WIDTH]) {
+        fn enter(self, r: &Splat<__m256>, n: &WideNode, t_max: f32) -> (u32, [f32; WIDTH]) {
             let avx = self.0.avx;
             let mut near = avx._mm256_set1_ps(f32::NEG_INFINITY);
             let mut far = avx._mm256_set1_ps(f32::INFINITY);

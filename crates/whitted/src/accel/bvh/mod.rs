@@ -241,12 +241,6 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
         self.prims.len()
     }
 
-    /// The lanes its queries test boxes with: `narrow` (two SSE registers of four) or
-    /// `avx2` (one register of eight).
-    pub fn lanes(&self) -> &'static str {
-        self.lanes.name()
-    }
-
     /// True when the tree is a flat list (no box tests).
     pub fn is_flat(&self) -> bool {
         self.nodes.is_empty()

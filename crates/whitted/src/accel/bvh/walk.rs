@@ -74,11 +74,16 @@ where
 
     #[inline(always)]
     fn with_simd<S: pulp::Simd>(self, _: S) {
-        let lanes = super::lanes::Avx2(self.v3);
-        let (nodes, ray) = (self.nodes, self.ray);
-        walk_in::<ORDERED, STACK, _, _>(
-            lanes, nodes, self.len, self.scale, ray, self.limit, self.leaf,
-        )
+        let WalkAvx2 {
+            v3,
+            nodes,
+            len,
+            scale,
+            ray,
+            limit,
+            leaf,
+        } = self;
+        walk_in::<ORDERED, STACK, _, _>(super::lanes::Avx2(v3), nodes, len, scale, ray, limit, leaf)
     }
 }
 
@@ -91,9 +96,9 @@ fn walk_narrow<const ORDERED: bool, const STACK: usize>(
     scale: f64,
     ray: &Ray,
     limit: f64,
-    mut leaf: &mut dyn FnMut(usize, usize, f64) -> Option<f64>,
+    leaf: &mut dyn FnMut(usize, usize, f64) -> Option<f64>,
 ) {
-    walk_in::<ORDERED, STACK, _, _>(Narrow, nodes, len, scale, ray, limit, &mut leaf)
+    walk_in::<ORDERED, STACK, _, _>(Narrow, nodes, len, scale, ray, limit, leaf)
 }
 
 #[inline(always)]
@@ -107,7 +112,7 @@ fn walk_in<const ORDERED: bool, const STACK: usize, L: Lanes, F>(
     mut limit: f64,
     leaf: &mut F,
 ) where
-    F: FnMut(usize, usize, f64) -> Option<f64>,
+    F: FnMut(usize, usize, f64) -> Option<f64> + ?Sized,
 {
     let Some(rb) = RayBox::new(ray, scale) else {
         // Beyond the lanes' range: every primitive, in the tree's order, as one leaf.
