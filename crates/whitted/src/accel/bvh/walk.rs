@@ -74,16 +74,10 @@ where
 
     #[inline(always)]
     fn with_simd<S: pulp::Simd>(self, _: S) {
-        let WalkAvx2 {
-            v3,
-            nodes,
-            len,
-            scale,
-            ray,
-            limit,
-            leaf,
-        } = self;
-        walk_in::<ORDERED, STACK, _, _>(super::lanes::Avx2(v3), nodes, len, scale, ray, limit, leaf)
+        let lanes = super::lanes::Avx2(self.v3);
+        let (nodes, len, scale, ray, limit) =
+            (self.nodes, self.len, self.scale, self.ray, self.limit);
+        walk_in::<ORDERED, STACK, _, _>(lanes, nodes, len, scale, ray, limit, self.leaf)
     }
 }
 
