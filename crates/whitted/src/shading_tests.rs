@@ -153,3 +153,32 @@ fn glass_passes_kt_times_colour_per_crossing() {
     let t = transmission(std::slice::from_ref(&glass), DVec3::ZERO, DVec3::Y, 3.0);
     assert!((t - Color::new(0.8, 0.4, 0.4)).length() < 1e-12, "{t}");
 }
+
+#[test]
+fn phong_weight_without_ks_is_the_same_bits_as_the_product() {
+    // Ks = 0 skips the power; the product it replaces is +0 for every finite power of
+    // max(0, V·R) in [0, 1 + ε], including the ones that underflow (Shine 100000).
+    let vrs = [
+        0.0,
+        1e-300,
+        1e-3,
+        0.5,
+        0.993,
+        0.99999,
+        1.0,
+        1.0 + f64::EPSILON,
+    ];
+    for shine in [0.0, 1.0, 3.0827, 101.148, 100000.0] {
+        for vr in vrs {
+            for i in [0.25, 1.0, 3.5] {
+                let skipped = super::phong(0.0, shine)(i, vr);
+                let product = 0.0 * i * vr.powf(shine);
+                assert_eq!(skipped.to_bits(), product.to_bits(), "{shine} {vr} {i}");
+                let kept = super::phong(0.5, shine)(i, vr);
+                assert_eq!(kept.to_bits(), (0.5 * i * vr.powf(shine)).to_bits());
+            }
+        }
+    }
+    // By hand: Ks 0.5, I 2, (V·R)^3 = 0.125.
+    assert_eq!(super::phong(0.5, 3.0)(2.0, 0.5), 0.125);
+}
