@@ -32,6 +32,7 @@
 //! degenerate shapes, more than `MAX_SCENE_OBJECTS` objects (a polygon's triangles count
 //! one each), all located at file:line:column.
 
+mod ears;
 pub mod polygon;
 mod reader;
 
