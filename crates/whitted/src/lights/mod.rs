@@ -26,7 +26,7 @@ pub mod spot;
 pub use area::Area;
 pub use directional::Directional;
 pub use fade::Fade;
-pub use occluders::{ext_key, Occluders};
+pub use occluders::{ext_key, Clearance, Occluders};
 pub use point::PointLight;
 pub use punctual::Punctual;
 pub use spot::Spot;

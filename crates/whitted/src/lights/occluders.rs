@@ -36,6 +36,33 @@ pub trait Occluders {
         let _ = key;
         self.transmission(p, to_light, dist)
     }
+
+    /// What stands between `p` and the quadrilateral `corners` (a shaft, holding every
+    /// shadow ray from `p` to a point of an area light's grid); by default, not known.
+    #[inline]
+    fn clearance(&self, p: DVec3, corners: &[DVec3; 4]) -> Clearance {
+        let _ = (p, corners);
+        Clearance::Unknown
+    }
+
+    /// What a shadow ray in a shaft with nothing bounded in it (`Clearance::Unbounded`)
+    /// lets through: the same answer as `transmission`, from the unbounded objects alone;
+    /// by default, `transmission`.
+    #[inline]
+    fn transmission_unbounded(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color {
+        self.transmission(p, to_light, dist)
+    }
+}
+
+/// What a shaft holds (`Occluders::clearance`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Clearance {
+    /// Something may stand in the way: each ray is asked as usual.
+    Unknown,
+    /// Nothing bounded and nothing transparent: each ray asks `transmission_unbounded`.
+    Unbounded,
+    /// Nothing at all: every ray lets everything through.
+    Open,
 }
 
 /// The key of the shadow rays of extension light `k` towards its point `i` (0 for a

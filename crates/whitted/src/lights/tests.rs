@@ -138,3 +138,60 @@ fn area_light_half_hidden_by_hand() {
     assert!((c - want).length() < 1e-12, "{c}");
     assert_eq!(count.shadow, 4);
 }
+
+/// 40 white balls of radius 0.3 on a 8 × 5 lattice at y = 1, over the floor y = 0, and
+/// a wall x = 8.
+fn balls_over_a_floor() -> Scene {
+    let mut src = String::from("1 1  0 1 10  0 0 0  0 0  40 2 0 0\n");
+    for i in 0..8 {
+        for j in 0..5 {
+            let (x, z) = (f64::from(i) - 3.5, f64::from(j) - 2.0);
+            src += &format!("0.3 {x} 1 {z}  1 1 1 1  1 0 0 1 0 0\n");
+        }
+    }
+    src += "0 0 0  0 1 0  1 1 1 1  1 0 0 1 0 0\n8 0 0  1 0 0  1 1 1 1  1 0 0 1 0 0\n";
+    Scene::parse(&src, "t.txt").unwrap()
+}
+
+#[test]
+fn an_area_lights_shafts_give_the_linear_scans_answers() {
+    // Floor points and ball points near a 4 × 4 area light: through the tracer (whose
+    // shafts skip the trees where nothing bounded is in the way, and every ray where
+    // the floor cannot be met either) and through the linear scan (no shafts), the same
+    // bits and the same ray counts.
+    let scene = balls_over_a_floor();
+    let tracer = Tracer::new(&scene);
+    let light = Area::new(
+        DVec3::new(0.0, 6.0, 0.0),
+        DVec3::new(2.0, 0.0, 0.0),
+        DVec3::new(0.0, 0.0, 2.0),
+        4,
+        4,
+        Color::ONE,
+        1.0,
+    );
+    let mut seen = [0; 3];
+    let floor = (0..41).flat_map(|i| (0..41).map(move |j| (i, j)));
+    let points = floor
+        .map(|(i, j)| DVec3::new(f64::from(i) * 0.6 - 12.0, 0.0, f64::from(j) * 0.5 - 10.0))
+        .chain((0..40).map(|k| DVec3::new(f64::from(k % 8) - 3.5, 1.3, f64::from(k / 8) - 2.0)));
+    for p in points {
+        let inc = light.incident(p).unwrap();
+        let (mut fast, mut slow) = (0, 0);
+        let a = light.shadow(0, &tracer, p, &inc, &mut fast);
+        let b = light.shadow(0, scene.objects.as_slice(), p, &inc, &mut slow);
+        assert_eq!(
+            a.to_array().map(f64::to_bits),
+            b.to_array().map(f64::to_bits),
+            "{p}"
+        );
+        assert_eq!(fast, slow);
+        seen[tracer.clearance(p, &light.corners) as usize] += 1;
+    }
+    // Not vacuous: open shafts (the floor between the balls and the wall), shafts the
+    // wall may cut (the floor beyond it, and left of the light: each ray asks the
+    // planes) and shafts with balls in them.
+    assert!(seen[Clearance::Open as usize] > 300, "{seen:?}");
+    assert!(seen[Clearance::Unbounded as usize] > 300, "{seen:?}");
+    assert!(seen[Clearance::Unknown as usize] > 100, "{seen:?}");
+}

@@ -32,8 +32,8 @@ pub use surface::{facing, surface_at};
 
 use crate::accel::{Accel, Hint, LightBuffer, NO_PART};
 use crate::base::Color;
-use crate::lights::Occluders;
 use crate::lights::SceneLight;
+use crate::lights::{Clearance, Occluders};
 use crate::object::{Highlight, Object};
 use crate::optics::{reflect, refract, Ray};
 pub use crate::record::{NoRecord, Record};
@@ -378,5 +378,15 @@ impl Occluders for Tracer<'_> {
     fn transmission_keyed(&self, key: usize, p: DVec3, to_light: DVec3, dist: f64) -> Color {
         self.accel
             .transmission_keyed(&self.scene.objects, key, p, to_light, dist)
+    }
+
+    #[inline]
+    fn clearance(&self, p: DVec3, corners: &[DVec3; 4]) -> Clearance {
+        self.accel.clearance(p, corners)
+    }
+
+    #[inline]
+    fn transmission_unbounded(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color {
+        self.accel.transmission_unbounded(p, to_light, dist)
     }
 }

@@ -18,6 +18,7 @@ mod build;
 mod lanes;
 mod node8;
 mod raybox;
+mod shaft;
 mod walk;
 
 use crate::optics::Ray;
@@ -25,6 +26,7 @@ use crate::shapes::Sphere;
 use glam::DVec3;
 use lanes::Choice;
 use node8::{WideNode, LEAF, WIDTH};
+pub use shaft::Shaft;
 
 /// The build splits every node of more primitives than this (unless it runs out of
 /// depth) ...

@@ -1,0 +1,173 @@
+//! Shafts (Haines and Wallace, "Shaft Culling for Efficient Ray-Traced Radiosity", 1991):
+//! the convex hull of a surface point and an area light's four corners, which holds every
+//! shadow ray from the point to a point of the light's grid. `Bvh::shaft_clear` says
+//! whether any box of the tree meets it; where none does, no primitive of the tree can
+//! stop or tint one of those rays, and the light's many rays need not walk the tree.
+//!
+//! A box misses the shaft when it lies beyond the hull's own box, or wholly outside one
+//! of the planes through the point and two neighbouring corners (each a face of the
+//! hull, or a plane holding a flat hull, so the hull lies on one side). Both tests are
+//! widened by the traversal's δ (see `RayBox::new`): a primitive's computed hit lies
+//! within its box widened by δ, and a shadow ray's rounded direction keeps it within far
+//! less than δ of the hull. The answer may be "met" where no ray meets anything (then
+//! the rays walk as before), never "clear" where a ray could.
+
+use super::node8::LEAF;
+use super::{Bvh, PAD, STACK, WIDTH};
+use arrayvec::ArrayVec;
+use glam::DVec3;
+
+/// Beyond this coordinate magnitude no shaft is made (as the lanes decline, `RayBox`).
+const RANGE: f64 = 1e18;
+
+/// How many nodes a shaft's walk may open before it gives up and says "met": a shaft
+/// through the middle of a model meets box after box, and the rays then walk anyway.
+const NODES_MAX: usize = 24;
+
+/// The hull of a point and four corners, as a box and up to four planes.
+#[derive(Clone, Debug)]
+pub struct Shaft {
+    p: DVec3,
+    corners: [DVec3; 4],
+    lo: DVec3,
+    hi: DVec3,
+    /// Unit normal n and offset d: the hull lies where n·x ≤ d.
+    planes: ArrayVec<(DVec3, f64), 4>,
+    /// The largest coordinate magnitude of the hull.
+    reach: f64,
+}
+
+impl Shaft {
+    /// The shaft from `p` to the quadrilateral `corners` (in order round it); `None`
+    /// beyond the coordinates' range or for coordinates that are not finite.
+    pub fn new(p: DVec3, corners: &[DVec3; 4]) -> Option<Shaft> {
+        let (mut lo, mut hi) = (p, p);
+        for &c in corners {
+            lo = lo.min(c);
+            hi = hi.max(c);
+        }
+        let reach = lo.abs().max(hi.abs()).max_element();
+        if !p.is_finite() || !corners.iter().all(|c| c.is_finite()) || reach >= RANGE {
+            return None;
+        }
+        // How far off its plane the hull may lie by rounding: far below δ.
+        let tol = 1e-9 * (reach + 1.0);
+        let mut planes = ArrayVec::new();
+        for i in 0..4 {
+            let (a, b) = (corners[i], corners[(i + 1) % 4]);
+            let Some(n) = (a - p).cross(b - p).try_normalize() else {
+                continue; // two equal corners (a grid one point wide) or p on the edge
+            };
+            let d = n.dot(p);
+            let side = corners.map(|c| n.dot(c) - d);
+            if side.iter().all(|&s| s <= tol) {
+                planes.push((n, d));
+            } else if side.iter().all(|&s| s >= -tol) {
+                planes.push((-n, -d));
+            }
+            // Corners on both sides (a quadrilateral that is not convex): not a face.
+        }
+        Some(Shaft {
+            p,
+            corners: *corners,
+            lo,
+            hi,
+            planes,
+            reach,
+        })
+    }
+
+    /// Whether the box `lo`–`hi` lies beyond the shaft widened by `delta`.
+    #[inline]
+    pub fn misses(&self, lo: DVec3, hi: DVec3, delta: f64) -> bool {
+        if lo.cmpgt(self.hi + delta).any() || hi.cmplt(self.lo - delta).any() {
+            return true;
+        }
+        self.planes.iter().any(|&(n, d)| {
+            // The box's corner least far along n.
+            let x = DVec3::select(n.cmpgt(DVec3::ZERO), lo, hi);
+            n.dot(x) > d + delta
+        })
+    }
+}
+
+impl Shaft {
+    /// Whether no shadow ray of the shaft (from its point, t_min ≥ 0 and t_min < t) can
+    /// meet the plane through `point` with unit normal `n`, as `Plane::hit` tests it.
+    /// That test's numerator N·(P − O) is the same for every ray of the shaft (their
+    /// origin is its point); its denominator N·D has one sign over all of them when the
+    /// corners lie beyond a margin on one side of the shaft's point (N·(Q − O) is linear
+    /// in Q, so its extremes are at corners, and a rounded direction is far closer than
+    /// the margin). Then t = N·(P − O)/N·D is −0 or below where the signs differ, and
+    /// where they agree it is at most |N·(P − O)| / (min |N·(C − O)| / max |C − O|),
+    /// which below half of t_min leaves every ray's t under t_min. A point on the plane
+    /// (a floor lit from above) is the case this is for: its numerator is rounding.
+    pub fn misses_plane(&self, point: DVec3, n: DVec3, t_min: f64) -> bool {
+        let num = n.dot(point - self.p);
+        let along = self.corners.map(|c| n.dot(c - self.p));
+        let far = self
+            .corners
+            .map(|c| (c - self.p).length())
+            .into_iter()
+            .fold(0.0, f64::max);
+        let margin = 1e-9 * (self.reach + 1.0);
+        let (low, high) = along
+            .into_iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
+                (a.min(x), b.max(x))
+            });
+        let (sign, least) = if low > margin {
+            (1.0, low)
+        } else if high < -margin {
+            (-1.0, -high)
+        } else {
+            return false;
+        };
+        // t ≤ 0 (or NaN) unless the numerator has the denominator's sign.
+        let same = sign * num;
+        t_min >= 0.0 && (same.is_nan() || same <= 0.0 || same < 0.5 * t_min * least / far)
+    }
+}
+
+impl<P> Bvh<P> {
+    /// Whether no box of the tree meets `shaft` (as the module says), so that no shadow
+    /// ray inside it meets a primitive of the tree. A flat list (no boxes) is clear only
+    /// when empty.
+    pub fn shaft_clear(&self, shaft: &Shaft) -> bool {
+        if self.nodes.is_empty() {
+            return self.prims.is_empty();
+        }
+        let delta = PAD * (shaft.reach + self.scale + 1.0);
+        let mut stack = ArrayVec::<u32, STACK>::new();
+        stack.push(0);
+        let mut opened = 0;
+        while let Some(i) = stack.pop() {
+            opened += 1;
+            if opened > NODES_MAX {
+                return false;
+            }
+            let n = &self.nodes[i as usize];
+            for s in 0..WIDTH {
+                let corner = |c: usize| {
+                    DVec3::new(
+                        f64::from(n.b[c][0][s]),
+                        f64::from(n.b[c][1][s]),
+                        f64::from(n.b[c][2][s]),
+                    )
+                };
+                // (An empty slot's box runs from +∞ to −∞: always missed.)
+                if shaft.misses(corner(0), corner(1), delta) {
+                    continue;
+                }
+                if n.child[s] & LEAF != 0 || stack.try_push(n.child[s]).is_err() {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+}
+
+#[cfg(test)]
+#[path = "shaft_tests.rs"]
+mod tests;
