@@ -18,7 +18,7 @@ pub struct Area {
     /// The N1 × N2 shadow points, i major.
     pub points: Vec<DVec3>,
     /// The grid's four extreme points, in order round it: every point lies in their
-    /// quadrilateral (the shaft's base, `Occluders::shaft_clear`).
+    /// quadrilateral (the shaft's base, `Occluders::clearance`).
     pub corners: [DVec3; 4],
     /// Its colour.
     pub color: Color,
@@ -75,8 +75,9 @@ impl LightSource for Area {
 
     /// The mean of the transmissions towards every grid point (a point on `p` itself lets
     /// everything through). Where the shaft from `p` to the grid's corners holds nothing
-    /// bounded (`Occluders::shaft_clear`: most of a floor around a model), each ray asks
-    /// only the unbounded objects, the same answer without walking a tree.
+    /// bounded (`Occluders::clearance`: most of a floor around a model), each ray asks
+    /// only the unbounded objects, the same answer without walking a tree; where it
+    /// holds nothing at all, no ray is cast (but each is counted).
     fn shadow<O: Occluders + ?Sized>(
         &self,
         k: usize,
