@@ -28,7 +28,8 @@ mod shadow_cache;
 mod tiles;
 mod unique;
 
-pub use bvh::{Bounded, Bvh, Prim, Shaft, ShapePrim};
+use bvh::Shaft;
+pub use bvh::{Bounded, Bvh, Prim, ShapePrim};
 pub use dirgrid::DirGrid;
 pub use lightbuf::LightBuffer;
 pub use tiles::{Hint, TileView};

@@ -108,7 +108,10 @@ impl Accel {
 
     /// `transmission` for a ray in a shaft without bounded objects: the unbounded opaque
     /// objects alone, as `shadow` tests them first; past them, with no transparent
-    /// object and nothing bounded in the way, `shadow` lets everything through.
+    /// object and nothing bounded in the way, `shadow` lets everything through. (The
+    /// loop is written out in both: one helper shared with `shadow`, inlined, still
+    /// moved the registers of `shading::direct` and cost the orbit 0.6 % more
+    /// instructions, 1,071.2 M against 1,077.3 M.)
     #[inline]
     pub fn transmission_unbounded(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color {
         let ray = Ray::new(p, to_light).with_t_min(self.t_min);
