@@ -19,6 +19,7 @@
 //!   rounding of the product is the same.
 
 mod bvh;
+mod clearance;
 mod dirgrid;
 mod lightbuf;
 mod nearest;

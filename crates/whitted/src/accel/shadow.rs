@@ -3,9 +3,8 @@
 //! parent module for the order of the product).
 
 use super::shadow_cache::{self, Blocker};
-use super::{Accel, Shaft, ShapePrim, CROSSINGS_MAX, GLASS_LINEAR_MAX, NO_PART};
+use super::{Accel, ShapePrim, CROSSINGS_MAX, GLASS_LINEAR_MAX, NO_PART};
 use crate::base::Color;
-use crate::lights::Clearance;
 use crate::object::Object;
 use crate::optics::Ray;
 use crate::shapes::Shape;
@@ -78,49 +77,6 @@ impl Accel {
             to_light,
             dist,
         )
-    }
-
-    /// What stands between `p` and the quadrilateral `corners` (an area light's grid
-    /// lies in it): `Unknown` with any transparent object in the scene or where a box of
-    /// either tree meets the shaft (`bvh::shaft`); else `Open` when no unbounded opaque
-    /// object can be met either (only planes are asked: `Shaft::misses_plane`), and
-    /// `Unbounded` when one may, which `transmission_unbounded` then asks ray by ray.
-    pub fn clearance(&self, p: DVec3, corners: &[DVec3; 4]) -> Clearance {
-        if !self.glass_all.is_empty() {
-            return Clearance::Unknown;
-        }
-        let Some(shaft) = Shaft::new(p, corners) else {
-            return Clearance::Unknown;
-        };
-        if !(self.tree.shaft_clear(&shaft) && self.shapes.shaft_clear(&shaft)) {
-            return Clearance::Unknown;
-        }
-        let missed = |shape: &Shape| match shape {
-            Shape::Plane(pl) => shaft.misses_plane(pl.point, pl.normal(), self.t_min),
-            _ => false,
-        };
-        if self.unbounded_opaque.iter().all(missed) {
-            Clearance::Open
-        } else {
-            Clearance::Unbounded
-        }
-    }
-
-    /// `transmission` for a ray in a shaft without bounded objects: the unbounded opaque
-    /// objects alone, as `shadow` tests them first; past them, with no transparent
-    /// object and nothing bounded in the way, `shadow` lets everything through. (The
-    /// loop is written out in both: one helper shared with `shadow`, inlined, still
-    /// moved the registers of `shading::direct` and cost the orbit 0.6 % more
-    /// instructions, 1,071.2 M against 1,077.3 M.)
-    #[inline]
-    pub fn transmission_unbounded(&self, p: DVec3, to_light: DVec3, dist: f64) -> Color {
-        let ray = Ray::new(p, to_light).with_t_min(self.t_min);
-        for shape in &self.unbounded_opaque {
-            if shape.hit(&ray, dist).is_some() {
-                return Color::ZERO;
-            }
-        }
-        Color::ONE
     }
 
     #[inline(always)]

@@ -20,9 +20,11 @@ use glam::DVec3;
 /// Beyond this coordinate magnitude no shaft is made (as the lanes decline, `RayBox`).
 const RANGE: f64 = 1e18;
 
-/// How many nodes a shaft's walk may open before it gives up and says "met": a shaft
-/// through the middle of a model meets box after box, and the rays then walk anyway.
+/// How many nodes a shaft's walk may open, and how many primitives of its leaves it may
+/// ask, before it gives up and says "met": a shaft through the middle of a model meets
+/// box after box, and the rays then walk anyway.
 const NODES_MAX: usize = 24;
+const PRIMS_MAX: usize = 48;
 
 /// The hull of a point and four corners, as a box and up to four planes.
 #[derive(Clone, Debug)]
@@ -35,6 +37,11 @@ pub struct Shaft {
     planes: ArrayVec<(DVec3, f64), 4>,
     /// The largest coordinate magnitude of the hull.
     reach: f64,
+    /// How far a light's sample point may lie off the corners' quadrilateral, by
+    /// rounding: far below δ.
+    eta: f64,
+    /// The farthest corner's distance from the point, plus `eta`.
+    far: f64,
 }
 
 impl Shaft {
@@ -67,6 +74,10 @@ impl Shaft {
             }
             // Corners on both sides (a quadrilateral that is not convex): not a face.
         }
+        let far = corners
+            .iter()
+            .fold(0.0, |m: f64, &c| m.max((c - p).length()))
+            + tol;
         Some(Shaft {
             p,
             corners: *corners,
@@ -74,6 +85,8 @@ impl Shaft {
             hi,
             planes,
             reach,
+            eta: tol,
+            far,
         })
     }
 
@@ -130,17 +143,18 @@ impl Shaft {
 }
 
 impl<P> Bvh<P> {
-    /// Whether no box of the tree meets `shaft` (as the module says), so that no shadow
-    /// ray inside it meets a primitive of the tree. A flat list (no boxes) is clear only
-    /// when empty.
-    pub fn shaft_clear(&self, shaft: &Shaft) -> bool {
+    /// Whether no shadow ray inside `shaft` can meet a primitive of the tree: every box
+    /// the shaft meets (as the module says) is a leaf whose primitives `leaf` clears one
+    /// by one (`Shaft::misses_triangle`; `|_| false` where it cannot tell). A flat list
+    /// (no boxes) is clear only when empty.
+    pub fn shaft_clear(&self, shaft: &Shaft, mut leaf: impl FnMut(&[P]) -> bool) -> bool {
         if self.nodes.is_empty() {
             return self.prims.is_empty();
         }
         let delta = PAD * (shaft.reach + self.scale + 1.0);
         let mut stack = ArrayVec::<u32, STACK>::new();
         stack.push(0);
-        let mut opened = 0;
+        let (mut opened, mut asked) = (0, 0);
         while let Some(i) = stack.pop() {
             opened += 1;
             if opened > NODES_MAX {
@@ -159,7 +173,13 @@ impl<P> Bvh<P> {
                 if shaft.misses(corner(0), corner(1), delta) {
                     continue;
                 }
-                if n.child[s] & LEAF != 0 || stack.try_push(n.child[s]).is_err() {
+                if n.child[s] & LEAF != 0 {
+                    let (first, count) = ((n.child[s] & !LEAF) as usize, n.count[s] as usize);
+                    asked += count;
+                    if asked > PRIMS_MAX || !leaf(&self.prims[first..first + count]) {
+                        return false;
+                    }
+                } else if stack.try_push(n.child[s]).is_err() {
                     return false;
                 }
             }
@@ -167,6 +187,9 @@ impl<P> Bvh<P> {
         true
     }
 }
+
+#[path = "shaft_tri.rs"]
+mod tri;
 
 #[cfg(test)]
 #[path = "shaft_tests.rs"]

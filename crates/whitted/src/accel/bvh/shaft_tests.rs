@@ -91,7 +91,7 @@ proptest! {
         let at = |i: f64, j: f64| centre + a1 * (i - 0.5) + a2 * (j - 0.5);
         let corners = [at(0.0, 0.0), at(1.0, 0.0), at(1.0, 1.0), at(0.0, 1.0)];
         let shaft = Shaft::new(p, &corners).unwrap();
-        if bvh.shaft_clear(&shaft) {
+        if bvh.shaft_clear(&shaft, |_| false) {
             for i in 0..5 {
                 for j in 0..5 {
                     let q = at(f64::from(i) / 4.0, f64::from(j) / 4.0);
@@ -117,12 +117,12 @@ fn clear_and_met_shafts_both_occur() {
         .map(|i| (DVec3::new(3.0 * f64::from(i), 2.0, 0.0), 0.5))
         .collect();
     let bvh = tree(&balls);
-    let clear = |p: DVec3| bvh.shaft_clear(&Shaft::new(p, &square()).unwrap());
+    let clear = |p: DVec3| bvh.shaft_clear(&Shaft::new(p, &square()).unwrap(), |_| false);
     assert!(!clear(DVec3::ZERO));
     assert!(clear(DVec3::new(0.0, 0.0, 30.0)));
     // A flat list (too few primitives for a tree) is clear only when empty.
-    assert!(!tree(&balls[..3]).shaft_clear(&Shaft::new(DVec3::ZERO, &square()).unwrap()));
-    assert!(tree(&[]).shaft_clear(&Shaft::new(DVec3::ZERO, &square()).unwrap()));
+    assert!(!tree(&balls[..3]).shaft_clear(&Shaft::new(DVec3::ZERO, &square()).unwrap(), |_| false));
+    assert!(tree(&[]).shaft_clear(&Shaft::new(DVec3::ZERO, &square()).unwrap(), |_| false));
 }
 
 proptest! {
