@@ -41,6 +41,14 @@ pub struct Still<'s> {
     corners: Option<Camera>,
 }
 
+/// The camera rays a picture of `size` drawn with `aa` casts: samples² a pixel, times the
+/// lens rays a `focus` record traces for every camera sample.
+pub fn camera_rays(scene: &Scene, size: (u32, u32), aa: Antialias) -> u64 {
+    let n = Options::new(size.0, size.1, aa).grid_side();
+    let lens = u64::from(crate::render::rays_per_sample(scene));
+    estimate::camera_rays(size.0, size.1, n, 1, 1).saturating_mul(lens)
+}
+
 impl<'s> Still<'s> {
     /// `scene` (whose own resolution is `native`) drawn at `size` through `lens`; `None`
     /// when its eye is on the point it looks at.
@@ -95,9 +103,8 @@ impl<'s> Still<'s> {
     /// drawn as the picture will be (its anti-aliasing), predicts on the current pool.
     pub fn enormous(&self) -> Option<Enormous> {
         let (w, h, n) = (self.width, self.height, self.options().grid_side());
-        // A `focus` record traces its lens rays for every camera sample.
         let lens = u64::from(crate::render::rays_per_sample(self.scene));
-        let rays = estimate::camera_rays(w, h, n, 1, 1).saturating_mul(lens);
+        let rays = camera_rays(self.scene, (w, h), self.aa);
         if rays <= estimate::ENORMOUS {
             return None;
         }
@@ -135,3 +142,7 @@ impl<'s> Still<'s> {
         render(&self.tracer, &self.camera, &self.options(), sink)
     }
 }
+
+#[cfg(test)]
+#[path = "tests.rs"]
+mod tests;

@@ -18,7 +18,7 @@ use crate::exit::Outcome;
 use crate::output::{check_target, write_atomic, ExrDepth, ImageFormat, OutputError};
 use crate::passes::{visible::picture, Pass, PassSet};
 use crate::render::adaptive::AntialiasError;
-use crate::render::estimate::Enormous;
+use crate::render::estimate::{self, Enormous};
 use crate::render::{Adaptive, Antialias, Layered, Picture};
 use crate::scene::{Scene, SceneError};
 use crate::trace::RayCount;
@@ -248,6 +248,12 @@ impl Job {
 
     /// The warning before an enormous request (on the current thread pool).
     pub fn enormous(&self) -> Option<Enormous> {
+        // Below the threshold the answer is arithmetic: the tracer, whose trees are the
+        // costly part of making one, is built only to time a sample of a picture past it.
+        let size = (self.scene.width, self.scene.height);
+        if super::camera_rays(&self.scene, size, self.aa()) <= estimate::ENORMOUS {
+            return None;
+        }
         self.still().enormous()
     }
 

@@ -27,6 +27,8 @@ pub mod rules;
 mod surface;
 mod unseen;
 pub use count::RayCount;
+#[cfg(test)]
+pub(crate) use query::MADE;
 pub use rules::Rules;
 pub use surface::{facing, surface_at};
 

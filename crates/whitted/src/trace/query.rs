@@ -11,6 +11,12 @@ use crate::scene::Scene;
 use glam::DVec3;
 use std::sync::Arc;
 
+#[cfg(test)]
+thread_local! {
+    /// Tracers made on this thread, for tests that ask how many a call builds.
+    pub(crate) static MADE: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
+}
+
 impl<'a> Tracer<'a> {
     /// The scene this tracer draws.
     pub fn scene(&self) -> &'a Scene {
@@ -19,6 +25,8 @@ impl<'a> Tracer<'a> {
 
     /// Prepares `scene` for tracing: builds its BVH (once; every frame shares it).
     pub fn new(scene: &'a Scene) -> Tracer<'a> {
+        #[cfg(test)]
+        MADE.with(|m| m.set(m.get() + 1));
         Tracer::with_accel(scene, Arc::new(Accel::for_scene(scene)))
     }
 
