@@ -25,6 +25,10 @@ use glam::DVec3;
 /// Rounding allowance per unit of a product's operands' magnitudes.
 const ROUND: f64 = 1e-12;
 
+/// A quotient at least this large cannot underflow to a zero of either sign (which
+/// `uvt_of`'s range test would let through as u = −0).
+const TINY: f64 = 1e-290;
+
 impl Shaft {
     /// Whether no ray of the shaft (from its point towards any point of its light, with
     /// t_min ≥ 0) meets the triangle A, A + E1, A + E2 as `Triangle::uvt_of` tests it.
@@ -67,22 +71,24 @@ impl Shaft {
         if same.is_nan() || same <= 0.0 || n.abs() / det_low * (1.0 + 1e-9) < t_min {
             return true;
         }
-        // u < 0 and v < 0: the numerators against the determinant's sign.
+        // u < 0 and v < 0: the numerators against the determinant's sign, by more than
+        // the numerators' rounding and too far from 0 for the quotient to underflow.
+        let det_high = m.length() + k_det;
+        let negative = |sign: f64, low: f64, k: f64| sign == -sd && (low - k) / det_high > TINY;
         let w_u = e2.cross(s);
         let k_u = ROUND * s.length() * e2.length();
         let (su, low_u) = cone(w_u);
-        if su == -sd && low_u > k_u {
+        if negative(su, low_u, k_u) {
             return true;
         }
         let k_v = ROUND * q.length();
         let (sv, low_v) = cone(q);
-        if sv == -sd && low_v > k_v {
+        if negative(sv, low_v, k_v) {
             return true;
         }
         // u > 1 and u + v > 1: u − 1 = D·(E2 × s + m) / det, u + v − 1 = D·(E2 × s + q
         // + m) / det, each at least its numerator's least over the largest determinant,
         // which must beat the quotients' rounding.
-        let det_high = m.length() + k_det;
         let u_max = s.length() * e2.length() / det_low;
         let v_max = q.length() / det_low;
         let err = |k: f64, x_max: f64| (k + x_max * k_det) / det_low + ROUND * x_max;
