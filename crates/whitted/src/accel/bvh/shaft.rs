@@ -116,29 +116,30 @@ impl Shaft {
     /// which below half of t_min leaves every ray's t under t_min. A point on the plane
     /// (a floor lit from above) is the case this is for: its numerator is rounding.
     pub fn misses_plane(&self, point: DVec3, n: DVec3, t_min: f64) -> bool {
-        let num = n.dot(point - self.p);
-        let along = self.corners.map(|c| n.dot(c - self.p));
-        let far = self
-            .corners
-            .map(|c| (c - self.p).length())
-            .into_iter()
-            .fold(0.0, f64::max);
-        let margin = 1e-9 * (self.reach + 1.0);
-        let (low, high) = along
-            .into_iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), x| {
-                (a.min(x), b.max(x))
-            });
-        let (sign, least) = if low > margin {
-            (1.0, low)
-        } else if high < -margin {
-            (-1.0, -high)
-        } else {
+        let Some((sign, least)) = self.side(n) else {
             return false;
         };
         // t ≤ 0 (or NaN) unless the numerator has the denominator's sign.
-        let same = sign * num;
-        t_min >= 0.0 && (same.is_nan() || same <= 0.0 || same < 0.5 * t_min * least / far)
+        let same = sign * n.dot(point - self.p);
+        t_min >= 0.0 && (same.is_nan() || same <= 0.0 || same < 0.5 * t_min * least / self.far)
+    }
+
+    /// The one sign w·(Q − p) takes over the light's quadrilateral, its sample points up
+    /// to η off it (w·(Q − p) is linear in Q, so its extremes are at corners), and the
+    /// least |w·(Q − p)| there; `None` where the corners are not all beyond |w|·η on one
+    /// side.
+    fn side(&self, w: DVec3) -> Option<(f64, f64)> {
+        let along = self.corners.map(|c| w.dot(c - self.p));
+        let slack = w.length() * self.eta;
+        let sign = if along.iter().all(|&x| x > slack) {
+            1.0
+        } else if along.iter().all(|&x| x < -slack) {
+            -1.0
+        } else {
+            return None;
+        };
+        let least = along.iter().fold(f64::INFINITY, |m, &x| m.min(x.abs()));
+        Some((sign, least - slack))
     }
 }
 

@@ -8,7 +8,7 @@ use crate::shapes::Sphere;
 use proptest::prelude::*;
 
 /// The square light of side 2 at height 5 over the origin, its corners in order.
-fn square() -> [DVec3; 4] {
+pub(super) fn square() -> [DVec3; 4] {
     [
         DVec3::new(-1.0, 5.0, -1.0),
         DVec3::new(1.0, 5.0, -1.0),

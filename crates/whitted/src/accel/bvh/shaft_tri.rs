@@ -37,24 +37,12 @@ impl Shaft {
         if t_min.is_nan() || t_min < 0.0 {
             return false;
         }
-        let (p, far, eta) = (self.p, self.far, self.eta);
-        if !(far > 0.0 && far.is_finite()) {
-            return false;
-        }
+        let (p, far) = (self.p, self.far);
         // The sign w·D keeps over the shaft's unit directions (0 for none), and the least
         // |w·D| it can take there.
-        let cone = |w: DVec3| -> (f64, f64) {
-            let along = self.corners.map(|c| w.dot(c - p));
-            let slack = w.length() * eta;
-            let sign = if along.iter().all(|&x| x > slack) {
-                1.0
-            } else if along.iter().all(|&x| x < -slack) {
-                -1.0
-            } else {
-                return (0.0, 0.0);
-            };
-            let least = along.iter().fold(f64::INFINITY, |m, &x| m.min(x.abs()));
-            (sign, (least - slack) / far)
+        let cone = |w: DVec3| match self.side(w) {
+            Some((sign, least)) => (sign, least / far),
+            None => (0.0, 0.0),
         };
         let m = e1.cross(e2);
         let k_det = ROUND * e1.length() * e2.length();

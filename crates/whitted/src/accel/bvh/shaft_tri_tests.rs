@@ -2,20 +2,11 @@
 //! neighbour) and against the exact test: where it says "missed", none of 25 rays from
 //! the point to the light's grid meets the triangle as `Triangle::uvt_of` tests it.
 
+use super::super::tests::square;
 use super::*;
 use crate::optics::Ray;
 use crate::shapes::Triangle;
 use proptest::prelude::*;
-
-/// The square light of side 2 at height 5 over the origin, its corners in order.
-fn square() -> [DVec3; 4] {
-    [
-        DVec3::new(-1.0, 5.0, -1.0),
-        DVec3::new(1.0, 5.0, -1.0),
-        DVec3::new(1.0, 5.0, 1.0),
-        DVec3::new(-1.0, 5.0, 1.0),
-    ]
-}
 
 /// Whether a ray from `p` towards one of the 5 × 5 points of the light `at` meets the
 /// triangle, exactly.
