@@ -5,7 +5,7 @@
 //!
 //! ```text
 //! let still = Still::new(&scene, native, (w, h), &lens, aa)?;   // None: eye on look_at
-//! still.enormous()                → Some(Enormous { rays, seconds, .. }) past 2^28 rays
+//! still.enormous(rays)            → Enormous { rays, seconds, .. } (rays: camera_rays)
 //! still.render(Picture::observed(STREAM_BAND, &send)) → (Frame, RayCount)
 //! still.render(Layered(passes))   → (Layers, RayCount)
 //! ```
@@ -99,15 +99,13 @@ impl<'s> Still<'s> {
         }
     }
 
-    /// Past `estimate::ENORMOUS` camera rays: the count and the seconds a 1/8-size sample,
-    /// drawn as the picture will be (its anti-aliasing), predicts on the current pool.
-    pub fn enormous(&self) -> Option<Enormous> {
+    /// The warning before this picture's `rays` camera rays (`camera_rays`, which the
+    /// caller compares with `estimate::ENORMOUS` before it makes a `Still`): with the
+    /// seconds a 1/8-size sample, drawn as the picture will be (its anti-aliasing),
+    /// predicts on the current pool.
+    pub fn enormous(&self, rays: u64) -> Enormous {
         let (w, h, n) = (self.width, self.height, self.options().grid_side());
         let lens = u64::from(crate::render::rays_per_sample(self.scene));
-        let rays = camera_rays(self.scene, (w, h), self.aa);
-        if rays <= estimate::ENORMOUS {
-            return None;
-        }
         let k = estimate::SAMPLE_DIVISOR;
         let small = ((w / k).max(1), (h / k).max(1));
         let seconds = Camera::framed(
@@ -124,7 +122,7 @@ impl<'s> Still<'s> {
             let sample = estimate::camera_rays(small.0, small.1, n, 1, 1).saturating_mul(lens);
             estimate::predict(rays, sample, t.elapsed().as_secs_f64())
         });
-        Some(Enormous {
+        Enormous {
             rays,
             frames: None,
             width: w,
@@ -132,7 +130,7 @@ impl<'s> Still<'s> {
             per_pixel: u64::from(n) * u64::from(n) * lens,
             seconds,
             threads: rayon::current_num_threads(),
-        })
+        }
     }
 
     /// The picture (`Picture`, observed or not) or its layers (`Layered`), drawn as the

@@ -251,10 +251,8 @@ impl Job {
         // Below the threshold the answer is arithmetic: the tracer, whose trees are the
         // costly part of making one, is built only to time a sample of a picture past it.
         let size = (self.scene.width, self.scene.height);
-        if super::camera_rays(&self.scene, size, self.aa()) <= estimate::ENORMOUS {
-            return None;
-        }
-        self.still().enormous()
+        let rays = super::camera_rays(&self.scene, size, self.aa());
+        (rays > estimate::ENORMOUS).then(|| self.still().enormous(rays))
     }
 
     /// Draws the picture on the current thread pool and writes it under OUT.

@@ -4,20 +4,15 @@
 use super::*;
 use crate::trace::MADE;
 
-fn job(samples: u32, size: Option<(u32, u32)>) -> Job {
+#[test]
+fn a_small_pictures_warning_builds_no_tracer() {
     let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/../../scenes/01-ambient.txt");
     let request = Request {
         scene: scene.into(),
-        samples,
-        size,
+        samples: 1,
         ..Request::default()
     };
-    Job::prepare(&request).unwrap()
-}
-
-#[test]
-fn a_small_pictures_warning_builds_no_tracer() {
-    let job = job(1, None);
+    let job = Job::prepare(&request).unwrap();
     let before = MADE.with(|m| m.get());
     assert!(job.enormous().is_none());
     assert_eq!(MADE.with(|m| m.get()), before);
