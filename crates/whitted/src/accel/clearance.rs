@@ -15,8 +15,9 @@ impl Accel {
     /// lies in it): `Unknown` with any transparent object in the scene or where a box of
     /// either tree meets the shaft (`bvh::shaft`) and is not a leaf of triangles each
     /// of which every ray misses (`Shaft::misses_triangle`); else `Open` when no
-    /// unbounded opaque object can be met either (only planes are asked: `Shaft::misses_plane`), and
-    /// `Unbounded` when one may, which `transmission_unbounded` then asks ray by ray.
+    /// unbounded opaque object can be met either (only planes are asked:
+    /// `Shaft::misses_plane`), and `Unbounded` when one may, which
+    /// `transmission_unbounded` then asks ray by ray.
     pub fn clearance(&self, p: DVec3, corners: &[DVec3; 4]) -> Clearance {
         if !self.glass_all.is_empty() {
             return Clearance::Unknown;

@@ -153,6 +153,25 @@ fn balls_over_a_floor() -> Scene {
     Scene::parse(&src, "t.txt").unwrap()
 }
 
+/// A 4 × 4 area light of unit colour and intensity at `position`, spanned by `a1`, `a2`.
+fn grid4(position: DVec3, a1: DVec3, a2: DVec3) -> Area {
+    Area::new(position, a1, a2, 4, 4, Color::ONE, 1.0)
+}
+
+/// The shadow of `light` at `p` through the tracer (and its shafts) and through the
+/// linear scan (no shafts): the same bits and ray counts, asserted. What the tracer's
+/// shaft said, or `None` where the light does not reach `p`.
+fn shadow_both(scene: &Scene, tracer: &Tracer, light: &Area, p: DVec3) -> Option<Clearance> {
+    let inc = light.incident(p)?;
+    let (mut fast, mut slow) = (0, 0);
+    let a = light.shadow(0, tracer, p, &inc, &mut fast);
+    let b = light.shadow(0, scene.objects.as_slice(), p, &inc, &mut slow);
+    let bits = |c: Color| c.to_array().map(f64::to_bits);
+    assert_eq!(bits(a), bits(b), "{p}");
+    assert_eq!(fast, slow, "{p}");
+    Some(tracer.clearance(p, &light.corners))
+}
+
 #[test]
 fn an_area_lights_shafts_give_the_linear_scans_answers() {
     // Floor points and ball points near a 4 × 4 area light: through the tracer (whose
@@ -161,32 +180,15 @@ fn an_area_lights_shafts_give_the_linear_scans_answers() {
     // bits and the same ray counts.
     let scene = balls_over_a_floor();
     let tracer = Tracer::new(&scene);
-    let light = Area::new(
-        DVec3::new(0.0, 6.0, 0.0),
-        DVec3::new(2.0, 0.0, 0.0),
-        DVec3::new(0.0, 0.0, 2.0),
-        4,
-        4,
-        Color::ONE,
-        1.0,
-    );
+    let light = grid4(DVec3::new(0.0, 6.0, 0.0), 2.0 * DVec3::X, 2.0 * DVec3::Z);
     let mut seen = [0; 3];
     let floor = (0..41).flat_map(|i| (0..41).map(move |j| (i, j)));
     let points = floor
         .map(|(i, j)| DVec3::new(f64::from(i) * 0.6 - 12.0, 0.0, f64::from(j) * 0.5 - 10.0))
         .chain((0..40).map(|k| DVec3::new(f64::from(k % 8) - 3.5, 1.3, f64::from(k / 8) - 2.0)));
     for p in points {
-        let inc = light.incident(p).unwrap();
-        let (mut fast, mut slow) = (0, 0);
-        let a = light.shadow(0, &tracer, p, &inc, &mut fast);
-        let b = light.shadow(0, scene.objects.as_slice(), p, &inc, &mut slow);
-        assert_eq!(
-            a.to_array().map(f64::to_bits),
-            b.to_array().map(f64::to_bits),
-            "{p}"
-        );
-        assert_eq!(fast, slow);
-        seen[tracer.clearance(p, &light.corners) as usize] += 1;
+        let clear = shadow_both(&scene, &tracer, &light, p).expect("every point is lit");
+        seen[clear as usize] += 1;
     }
     // Not vacuous: open shafts (the floor between the balls and the wall), shafts the
     // wall may cut (the floor beyond it, and left of the light: each ray asks the
@@ -224,38 +226,20 @@ fn terrain() -> (Scene, Vec<[DVec3; 3]>) {
 #[test]
 fn a_surfaces_own_triangles_clear_their_shafts_with_the_linear_scans_answers() {
     // Points on each triangle of the terrain (as rounding leaves them), under a 4 × 4
-    // area light low on one side: through the tracer (whose shafts ask the triangles of the leaves they
-    // meet) and through the linear scan, the same bits and ray counts; and the points
-    // facing the light see it through open shafts, though their own leaves' boxes hold
-    // them, while hills hide it from others.
+    // area light low on one side: through the tracer (whose shafts ask the triangles of
+    // the leaves they meet) and through the linear scan, the same bits and ray counts;
+    // and the points facing the light see it through open shafts, though their own
+    // leaves' boxes hold them, while hills hide it from others.
     let (scene, tris) = terrain();
     let tracer = Tracer::new(&scene);
-    let light = Area::new(
-        DVec3::new(5.0, 1.5, 0.5),
-        DVec3::new(0.0, 1.0, 0.0),
-        DVec3::new(0.0, 0.0, 2.0),
-        4,
-        4,
-        Color::ONE,
-        1.0,
-    );
+    let light = grid4(DVec3::new(5.0, 1.5, 0.5), DVec3::Y, 2.0 * DVec3::Z);
     let mut seen = [0; 3];
     for [a, b, c] in &tris {
         for (u, v) in [(0.2, 0.3), (0.6, 0.1), (0.05, 0.9)] {
             let p = *a + u * (*b - *a) + v * (*c - *a);
-            let Some(inc) = light.incident(p) else {
-                continue;
-            };
-            let (mut fast, mut slow) = (0, 0);
-            let x = light.shadow(0, &tracer, p, &inc, &mut fast);
-            let y = light.shadow(0, scene.objects.as_slice(), p, &inc, &mut slow);
-            assert_eq!(
-                x.to_array().map(f64::to_bits),
-                y.to_array().map(f64::to_bits),
-                "{p}"
-            );
-            assert_eq!(fast, slow);
-            seen[tracer.clearance(p, &light.corners) as usize] += 1;
+            if let Some(clear) = shadow_both(&scene, &tracer, &light, p) {
+                seen[clear as usize] += 1;
+            }
         }
     }
     assert!(seen[Clearance::Open as usize] > 60, "{seen:?}");
