@@ -183,9 +183,17 @@ fn split<P>(
 }
 
 /// The bin of a centre coordinate `c`: bins of width 1/k from `c0`, the last one closed.
+/// The same bin as `(((c - c0) * k) as usize).min(BINS - 1)` for every `c` (NaN and
+/// negatives to bin 0), without that conversion's saturating steps for the whole of
+/// `usize`: the comparison leaves `as u32` values in [0, BINS).
 #[inline]
 fn bin(c: f64, c0: f64, k: f64) -> usize {
-    (((c - c0) * k) as usize).min(BINS - 1)
+    let x = (c - c0) * k;
+    if x >= (BINS - 1) as f64 {
+        BINS - 1
+    } else {
+        x as u32 as usize
+    }
 }
 
 /// The cheapest binned SAH split of `items` along `axis` (centres from `c0` over
@@ -236,4 +244,34 @@ fn partition<P>(items: &mut [Item<P>], pred: impl Fn(&Item<P>) -> bool) -> usize
         }
     }
     i
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{bin, BINS};
+
+    /// `bin` against the saturating conversion it replaces, at bin edges (by hand: with
+    /// c0 = 1 and k = 4, c = 1.25 is the start of bin 1 and c = 4.75 of the last, bin
+    /// 15 of 16), beyond both ends, and at NaN.
+    #[test]
+    fn bin_is_the_saturating_conversion() {
+        let old = |c: f64, c0: f64, k: f64| (((c - c0) * k) as usize).min(BINS - 1);
+        assert_eq!(bin(1.25, 1.0, 4.0), 1);
+        assert_eq!(bin(1.2499, 1.0, 4.0), 0);
+        assert_eq!(bin(4.75, 1.0, 4.0), 15);
+        assert_eq!(bin(4.7499, 1.0, 4.0), 14);
+        assert_eq!(bin(5.0, 1.0, 4.0), 15);
+        assert_eq!(bin(0.5, 1.0, 4.0), 0);
+        assert_eq!(bin(f64::NAN, 1.0, 4.0), 0);
+        let mut c = -3.0;
+        while c < 9.0 {
+            for k in [4.0, 3.7, 1e-300, 1e300, f64::INFINITY] {
+                assert_eq!(bin(c, 1.0, k), old(c, 1.0, k), "c {c} k {k}");
+            }
+            c += 1.0 / 64.0 + 1e-9;
+        }
+        for c in [f64::INFINITY, f64::NEG_INFINITY, f64::NAN, 1e308, -1e308] {
+            assert_eq!(bin(c, 1.0, 4.0), old(c, 1.0, 4.0), "c {c}");
+        }
+    }
 }
