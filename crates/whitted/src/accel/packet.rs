@@ -240,7 +240,6 @@ impl Accel {
                 false => self.shapes.traverse_any(ray, limit, visit),
             };
         }
-        let prims = self.shapes.prims();
         // The ray prepared for the lanes, made at the first packet the walk meets (a
         // shadow ray that meets none pays nothing for it).
         let mut r32: Option<Option<Ray32>> = None;
@@ -248,24 +247,56 @@ impl Accel {
             ray,
             limit,
             #[inline(always)]
-            |first, count, mut limit| {
-                let k = self.packet_at[first];
-                if k != NO_PACKET && self.packets[k as usize].count as usize == count {
-                    if let Some(r) = r32.get_or_insert_with(|| Ray32::new(ray)) {
-                        let mut mask = self.packets[k as usize].candidates(r);
-                        while mask != 0 {
-                            let lane = mask.trailing_zeros() as usize;
-                            mask &= mask - 1;
-                            limit = visit(&prims[first + lane], limit)?;
-                        }
-                        return Some(limit);
-                    }
-                }
-                for prim in &prims[first..first + count] {
-                    limit = visit(prim, limit)?;
-                }
-                Some(limit)
-            },
+            |first, count, limit| self.shapes_leaf(&mut r32, ray, first, count, limit, &mut visit),
         )
+    }
+
+    /// `shapes_traverse_any` over the leaves of one node: the one that holds the leaf of
+    /// the shapes' primitive at `at` (`Bvh::holder_leaves`).
+    #[inline(always)]
+    pub(super) fn shapes_holder(
+        &self,
+        at: usize,
+        ray: &Ray,
+        limit: f64,
+        mut visit: impl FnMut(&ShapePrim, f64) -> Option<f64>,
+    ) {
+        let mut r32: Option<Option<Ray32>> = None;
+        self.shapes
+            .holder_leaves(at, ray, limit, |first, count, limit| {
+                self.shapes_leaf(&mut r32, ray, first, count, limit, &mut visit)
+            })
+    }
+
+    /// One leaf of the shapes' tree: `visit` on the primitives `first..first + count`
+    /// that the leaf's packet passes (all of them without one, or for a ray beyond the
+    /// lanes' bounds; `r32` is the lanes' ray, made the first time it is needed).
+    #[inline(always)]
+    fn shapes_leaf(
+        &self,
+        r32: &mut Option<Option<Ray32>>,
+        ray: &Ray,
+        first: usize,
+        count: usize,
+        mut limit: f64,
+        visit: &mut impl FnMut(&ShapePrim, f64) -> Option<f64>,
+    ) -> Option<f64> {
+        let prims = self.shapes.prims();
+        let k = self.packet_at.get(first).copied().unwrap_or(NO_PACKET);
+        if k != NO_PACKET && self.packets[k as usize].count as usize == count {
+            if let Some(r) = r32.get_or_insert_with(|| Ray32::new(ray)) {
+                let mut mask = self.packets[k as usize].candidates(r);
+                while mask != 0 {
+                    let lane = mask.trailing_zeros() as usize;
+                    mask &= mask - 1;
+                    limit = visit(&prims[first + lane], limit)?;
+                }
+                return Some(limit);
+            }
+        }
+        for prim in &prims[first..first + count] {
+            limit = visit(prim, limit)?;
+        }
+        Some(limit)
     }
 }

@@ -15,6 +15,7 @@
 //! moves a hit point by a few ulps of its coordinates, far inside the same margin.
 
 mod build;
+mod holder;
 mod lanes;
 mod node8;
 mod raybox;
@@ -156,6 +157,8 @@ pub struct Bvh<P = Prim> {
     scale: f64,
     /// In a flat list, how many opaque primitives come first.
     flat_opaque: usize,
+    /// For each primitive (in the tree's order), the node whose slot holds its leaf.
+    holder: Vec<u32>,
 }
 
 struct Item<P> {
@@ -173,6 +176,7 @@ impl<P> Default for Bvh<P> {
             prims: Vec::new(),
             scale: 0.0,
             flat_opaque: 0,
+            holder: Vec::new(),
         }
     }
 }
@@ -224,6 +228,7 @@ impl<P: Bounded + Send + Sync> Bvh<P> {
         }
         bvh.nodes = node8::collapse(&build::build_tree(&mut items, leaf_max));
         bvh.prims = items.into_iter().map(|it| it.prim).collect();
+        bvh.holder = holder::table(&bvh.nodes, bvh.prims.len());
         bvh
     }
 

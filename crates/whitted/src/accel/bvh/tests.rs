@@ -57,6 +57,45 @@ fn the_collapse_keeps_every_primitive_once() {
 }
 
 #[test]
+fn holder_leaves_offers_the_leaves_of_one_node() {
+    let bvh = row(1000, 0.0);
+    // Every primitive's holder has the leaf that holds it in one of its slots.
+    for i in 0..1000 {
+        let n = &bvh.nodes[bvh.holder[i] as usize];
+        assert!(
+            (0..WIDTH).any(|s| n.child[s] & LEAF != 0
+                && ((n.child[s] & !LEAF) as usize
+                    ..(n.child[s] & !LEAF) as usize + n.count[s] as usize)
+                    .contains(&i)),
+            "{i}"
+        );
+    }
+    // Along the row, sphere 500's node offers its leaves' spheres, 500 among them, in
+    // a run of neighbours around it (at most eight leaves of up to four); off the row,
+    // none.
+    let along = Ray::new(DVec3::new(-5.0, 0.0, 0.0), DVec3::X);
+    let mut seen = Vec::new();
+    bvh.holder_leaves(500, &along, f64::INFINITY, |first, count, l| {
+        seen.extend(bvh.prims[first..first + count].iter().map(|p| p.index));
+        Some(l)
+    });
+    assert!(
+        seen.contains(&500) && seen.len() <= WIDTH * LEAF_SAH_MAX,
+        "{seen:?}"
+    );
+    assert!(seen.windows(2).all(|w| w[1] == w[0] + 1), "{seen:?}");
+    // The limit stops it short of sphere 500 (at x = 1500, entered at t = 1504).
+    let mut short = 0;
+    bvh.holder_leaves(500, &along, 1400.0, |_, count, l| {
+        short += count;
+        Some(l)
+    });
+    assert_eq!(short, 0);
+    let beside = Ray::new(DVec3::new(-5.0, 5.0, 0.0), DVec3::X);
+    bvh.holder_leaves(500, &beside, f64::INFINITY, |_, _, _| panic!("offered"));
+}
+
+#[test]
 fn a_ray_beside_the_row_is_offered_nothing() {
     let bvh = row(1000, 0.0);
     let beside = Ray::new(DVec3::new(-5.0, 1.5, 0.0), DVec3::X);
