@@ -85,6 +85,25 @@ fn find(parent: &mut [u32], mut x: u32) -> u32 {
     x
 }
 
+/// Sorts `v` ascending: by insertion where it is short (a vertex's few edges; the
+/// standard sort's set-up cost more than the sorting on a million-triangle mesh), by
+/// `sort_unstable` otherwise. The entries are distinct, so the order is the same.
+fn sort_small(v: &mut [(u32, u32)]) {
+    if v.len() > 16 {
+        v.sort_unstable();
+        return;
+    }
+    for i in 1..v.len() {
+        let x = v[i];
+        let mut j = i;
+        while j > 0 && v[j - 1] > x {
+            v[j] = v[j - 1];
+            j -= 1;
+        }
+        v[j] = x;
+    }
+}
+
 /// The smooth normals of the triangles (of non-zero area) over `vertices`, split where
 /// faces meet at more than `angle_deg` degrees.
 pub fn smooth(vertices: &[DVec3], triangles: &[[u32; 3]], angle_deg: f64) -> Smoothed {
@@ -138,7 +157,7 @@ pub fn smooth(vertices: &[DVec3], triangles: &[[u32; 3]], angle_deg: f64) -> Smo
     };
     for lo in 0..vertices.len() {
         let bucket = &mut edges[start[lo] as usize..start[lo + 1] as usize];
-        bucket.sort_unstable();
+        sort_small(bucket);
         let mut i = 0;
         while i < bucket.len() {
             let mut j = i + 1;

@@ -240,3 +240,27 @@ fn a_fan_of_many_faces_and_a_fin_of_three() {
     assert_eq!(at(&s, 0, 0), DVec3::new(0.0, 0.0, -1.0));
     assert_eq!(s.normals.len(), 9);
 }
+
+#[test]
+fn short_and_long_lists_sort_as_the_standard_sort() {
+    // By hand: [(2, 5), (1, 9), (2, 1)] → [(1, 9), (2, 1), (2, 5)].
+    let mut v = [(2, 5), (1, 9), (2, 1)];
+    sort_small(&mut v);
+    assert_eq!(v, [(1, 9), (2, 1), (2, 5)]);
+    // Lengths 0 to 40 (both sides of the insertion limit), pseudo-random entries.
+    let mut x = 0x9e37_79b9_u32;
+    for n in 0..40 {
+        let mut v: Vec<(u32, u32)> = (0..n)
+            .map(|k| {
+                x ^= x << 13;
+                x ^= x >> 17;
+                x ^= x << 5;
+                (x % 7, k)
+            })
+            .collect();
+        let mut want = v.clone();
+        want.sort_unstable();
+        sort_small(&mut v);
+        assert_eq!(v, want, "{n}");
+    }
+}

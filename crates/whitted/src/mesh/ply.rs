@@ -211,15 +211,18 @@ pub fn read(bytes: &[u8], path: &str) -> Result<Raw, MeshError> {
             kind @ ("face" | "tristrips") => {
                 let parser = Parser::<Face>::new();
                 let vertices = raw.positions.len();
+                // One buffer each for every face's indices, signed and checked.
+                let (mut indices, mut face) = (Vec::new(), Vec::new());
                 for k in 0..def.count {
                     let f = elements.next(&parser, def).map_err(located)?;
+                    f.indices(&mut indices);
                     let line = (header.encoding == Encoding::Ascii).then_some(elements.line);
                     let why = |m: String| malformed(path, line, format!("{kind} {k}: {m}"));
                     if kind == "face" {
                         faces += 1;
-                        short += u64::from(f.indices.len() < 3);
-                        let mut face = Vec::with_capacity(f.indices.len());
-                        for &i in &f.indices {
+                        short += u64::from(indices.len() < 3);
+                        face.clear();
+                        for &i in &indices {
                             let i = u32::try_from(i)
                                 .map_err(|_| why(format!("the vertex index {i} is negative")))?;
                             face.push(i);
@@ -227,7 +230,7 @@ pub fn read(bytes: &[u8], path: &str) -> Result<Raw, MeshError> {
                         raw.fan(&face, vertices).map_err(why)?;
                     } else {
                         strips += 1;
-                        raw.strip(&f.indices, vertices).map_err(why)?;
+                        raw.strip(&indices, vertices).map_err(why)?;
                     }
                     if raw.over_limit() {
                         let count = raw.triangles.len() as u64;

@@ -78,20 +78,46 @@ pub fn is_index_list(name: &str) -> bool {
     name == "vertex_indices" || name == "vertex_index"
 }
 
-/// A face's or strip's vertex indices, as written (signed).
+/// A face's or strip's vertex indices, as written: the list `ply_rs_bw` read, kept as
+/// it came (no copy per face: a million-face file made three allocations a face).
 #[derive(Default)]
 pub struct Face {
-    /// The indices.
-    pub indices: Vec<i64>,
+    list: List,
+}
+
+/// An index list in its file's integer type.
+#[derive(Default)]
+enum List {
+    #[default]
+    None,
+    I8(Vec<i8>),
+    U8(Vec<u8>),
+    I16(Vec<i16>),
+    U16(Vec<u16>),
+    I32(Vec<i32>),
+    U32(Vec<u32>),
 }
 
 impl Face {
-    fn take<T: Into<i64> + Copy>(&mut self, name: &str, v: &[T]) -> PropertyAccessResult {
+    /// Puts the indices, signed, into `out` (emptied first).
+    pub fn indices(&self, out: &mut Vec<i64>) {
+        out.clear();
+        match &self.list {
+            List::None => {}
+            List::I8(v) => out.extend(v.iter().map(|&i| i64::from(i))),
+            List::U8(v) => out.extend(v.iter().map(|&i| i64::from(i))),
+            List::I16(v) => out.extend(v.iter().map(|&i| i64::from(i))),
+            List::U16(v) => out.extend(v.iter().map(|&i| i64::from(i))),
+            List::I32(v) => out.extend(v.iter().map(|&i| i64::from(i))),
+            List::U32(v) => out.extend(v.iter().map(|&i| i64::from(i))),
+        }
+    }
+
+    fn take(&mut self, name: &str, list: List) -> PropertyAccessResult {
         if !is_index_list(name) {
             return PropertyAccessResult::Ignored;
         }
-        self.indices.clear();
-        self.indices.extend(v.iter().map(|&i| i.into()));
+        self.list = list;
         PropertyAccessResult::Set
     }
 }
@@ -101,22 +127,22 @@ impl PropertyAccess for Face {
         Face::default()
     }
     fn set_list_char(&mut self, name: &str, v: Vec<i8>) -> PropertyAccessResult {
-        self.take(name, &v)
+        self.take(name, List::I8(v))
     }
     fn set_list_uchar(&mut self, name: &str, v: Vec<u8>) -> PropertyAccessResult {
-        self.take(name, &v)
+        self.take(name, List::U8(v))
     }
     fn set_list_short(&mut self, name: &str, v: Vec<i16>) -> PropertyAccessResult {
-        self.take(name, &v)
+        self.take(name, List::I16(v))
     }
     fn set_list_ushort(&mut self, name: &str, v: Vec<u16>) -> PropertyAccessResult {
-        self.take(name, &v)
+        self.take(name, List::U16(v))
     }
     fn set_list_int(&mut self, name: &str, v: Vec<i32>) -> PropertyAccessResult {
-        self.take(name, &v)
+        self.take(name, List::I32(v))
     }
     fn set_list_uint(&mut self, name: &str, v: Vec<u32>) -> PropertyAccessResult {
-        self.take(name, &v)
+        self.take(name, List::U32(v))
     }
 }
 
