@@ -362,11 +362,14 @@ impl Accel {
         self.blocked(Some(light), blocker)
     }
 
-    /// The place of `prim`, a reference into the shapes' tree's primitives, in them.
+    /// The place of `prim`, a reference into the shapes' tree's primitives (as every
+    /// walk over them gives), in them. (A reference from elsewhere would give a place
+    /// past the end, which `Bvh::holder_leaves` ignores: never a wrong answer.)
     #[inline(always)]
     fn shapes_at(&self, prim: &ShapePrim) -> u32 {
         let base = self.shapes.prims().as_ptr() as usize;
-        ((prim as *const ShapePrim as usize - base) / std::mem::size_of::<ShapePrim>()) as u32
+        let offset = (prim as *const ShapePrim as usize).wrapping_sub(base);
+        u32::try_from(offset / std::mem::size_of::<ShapePrim>()).unwrap_or(u32::MAX)
     }
 
     /// Whether a walk found `blocker`; if so, it becomes the light's cached one.

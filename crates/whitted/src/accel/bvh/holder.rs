@@ -27,7 +27,7 @@ impl<P> Bvh<P> {
     /// `query_leaves` over the leaves of one node alone: the node that holds the leaf of
     /// the primitive at `at` (in the tree's order), its boxes tested in the narrow lanes
     /// (the same bits as the walk's); its interior children are skipped. Nothing for a
-    /// flat list or a ray beyond the lanes' range.
+    /// flat list, a place past the end or a ray beyond the lanes' range.
     pub fn holder_leaves(
         &self,
         at: usize,
