@@ -142,17 +142,22 @@ mod tests {
 
     #[test]
     fn cached_answers_are_the_linear_scans() {
-        // Two scenes' accelerators used in turn by one thread, three lights each: shadow
+        // Three scenes' accelerators used in turn by one thread, three lights each: shadow
         // rays from the points the camera-like rays meet, towards each light, as a
         // frame casts them (neighbours in turn, so the cache has something to reuse).
         let mut rng = Rng(0x5eed_0fca_11ab_1e57);
-        let scenes: Vec<_> = [300, 700].map(|n| scene(&mut rng, n)).into();
+        let mut scenes: Vec<_> = [300, 700].map(|n| scene(&mut rng, n)).into();
+        // A third with 400 triangles, smooth triangles and cones among the spheres (a
+        // third of them glass): blockers of the shapes' tree, and their nodes' leaves.
+        let spheres = scene(&mut rng, 60);
+        scenes.push(super::super::tests::with_shapes(spheres, &mut rng, 400));
         let accels: Vec<_> = scenes.iter().map(|o| Accel::new(o)).collect();
         assert!(accels.iter().all(|a| a.cached));
+        let before = super::super::shadow::HOLDER_FOUND.with(|n| n.get());
         let lights = [rng.vec(4.0), rng.vec(4.0), DVec3::new(0.0, 30.0, 0.0)];
         let (mut tried, mut shadowed) = (0, 0);
         for k in 0..60_000 {
-            let which = k / 50 % 2;
+            let which = k / 50 % 3;
             let (objects, accel) = (&scenes[which], &accels[which]);
             let (u, v) = (
                 (k % 250) as f64 / 125.0 - 1.0,
@@ -179,6 +184,9 @@ mod tests {
             }
         }
         assert!(tried > 10_000 && shadowed > 10_000, "{tried} {shadowed}");
+        // Blockers found beside a cached shape (1,361 here).
+        let found = super::super::shadow::HOLDER_FOUND.with(|n| n.get()) - before;
+        assert!(found > 300, "{found}");
     }
 
     #[test]

@@ -290,7 +290,7 @@ fn same_answers_as_the_linear_scans_with_triangles_and_cones() {
 }
 
 /// `objects` and `n` random triangles, smooth triangles and cones after them.
-fn with_shapes(mut objects: Vec<Object>, rng: &mut Rng, n: usize) -> Vec<Object> {
+pub(super) fn with_shapes(mut objects: Vec<Object>, rng: &mut Rng, n: usize) -> Vec<Object> {
     for i in 0..n {
         let a = rng.vec(6.0);
         let (b, c) = (a + rng.vec(1.5), a + rng.vec(1.5));
