@@ -5,7 +5,7 @@
 //!
 //! ```text
 //! let still = Still::new(&scene, native, (w, h), &lens, aa)?;   // None: eye on look_at
-//! still.enormous(rays)            → Enormous { rays, seconds, .. } (rays: camera_rays)
+//! still.enormous()                → Enormous { rays, seconds, .. } (past camera_rays' 2^28)
 //! still.render(Picture::observed(STREAM_BAND, &send)) → (Frame, RayCount)
 //! still.render(Layered(passes))   → (Layers, RayCount)
 //! ```
@@ -99,12 +99,13 @@ impl<'s> Still<'s> {
         }
     }
 
-    /// The warning before this picture's `rays` camera rays (`camera_rays`, which the
-    /// caller compares with `estimate::ENORMOUS` before it makes a `Still`): with the
-    /// seconds a 1/8-size sample, drawn as the picture will be (its anti-aliasing),
-    /// predicts on the current pool.
-    pub fn enormous(&self, rays: u64) -> Enormous {
+    /// The warning before this picture's camera rays (`camera_rays`, which the caller
+    /// compares with `estimate::ENORMOUS` before it makes a `Still`): with the seconds a
+    /// 1/8-size sample, drawn as the picture will be (its anti-aliasing), predicts on the
+    /// current pool.
+    pub fn enormous(&self) -> Enormous {
         let (w, h, n) = (self.width, self.height, self.options().grid_side());
+        let rays = camera_rays(self.scene, (w, h), self.aa);
         let lens = u64::from(crate::render::rays_per_sample(self.scene));
         let k = estimate::SAMPLE_DIVISOR;
         let small = ((w / k).max(1), (h / k).max(1));
@@ -119,7 +120,7 @@ impl<'s> Still<'s> {
             let t = std::time::Instant::now();
             let sampled = Options::new(small.0, small.1, self.aa);
             render(&self.tracer, &cam, &sampled, Picture::new());
-            let sample = estimate::camera_rays(small.0, small.1, n, 1, 1).saturating_mul(lens);
+            let sample = camera_rays(self.scene, small, self.aa);
             estimate::predict(rays, sample, t.elapsed().as_secs_f64())
         });
         Enormous {

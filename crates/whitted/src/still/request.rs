@@ -252,7 +252,7 @@ impl Job {
         // costly part of making one, is built only to time a sample of a picture past it.
         let size = (self.scene.width, self.scene.height);
         let rays = super::camera_rays(&self.scene, size, self.aa());
-        (rays > estimate::ENORMOUS).then(|| self.still().enormous(rays))
+        (rays > estimate::ENORMOUS).then(|| self.still().enormous())
     }
 
     /// Draws the picture on the current thread pool and writes it under OUT.
