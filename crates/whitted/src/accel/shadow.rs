@@ -232,7 +232,7 @@ impl Accel {
                 |prim, limit| {
                     if prim.opaque {
                         if self.shape_hit(prim, ray, dist).is_some() {
-                            blocker = Blocker::Shape(*prim, self.shapes_at(prim));
+                            blocker = Blocker::Shape(*prim, self.shapes.place(prim));
                             return None;
                         }
                     } else if prim.glass && !found.overflow {
@@ -311,7 +311,7 @@ impl Accel {
             #[inline(always)]
             |prim, limit| {
                 if prim.opaque && self.shape_hit(prim, ray, dist).is_some() {
-                    blocker = Blocker::Shape(*prim, self.shapes_at(prim));
+                    blocker = Blocker::Shape(*prim, self.shapes.place(prim));
                     return None;
                 }
                 Some(limit)
@@ -352,7 +352,7 @@ impl Accel {
         let mut blocker = Blocker::None;
         self.shapes_holder(at as usize, ray, dist, |prim, limit| {
             if prim.opaque && self.shape_hit(prim, ray, dist).is_some() {
-                blocker = Blocker::Shape(*prim, self.shapes_at(prim));
+                blocker = Blocker::Shape(*prim, self.shapes.place(prim));
                 return None;
             }
             Some(limit)
@@ -360,16 +360,6 @@ impl Accel {
         #[cfg(test)]
         HOLDER_FOUND.with(|n| n.set(n.get() + !matches!(blocker, Blocker::None) as usize));
         self.blocked(Some(light), blocker)
-    }
-
-    /// The place of `prim`, a reference into the shapes' tree's primitives (as every
-    /// walk over them gives), in them. (A reference from elsewhere would give a place
-    /// past the end, which `Bvh::holder_leaves` ignores: never a wrong answer.)
-    #[inline(always)]
-    fn shapes_at(&self, prim: &ShapePrim) -> u32 {
-        let base = self.shapes.prims().as_ptr() as usize;
-        let offset = (prim as *const ShapePrim as usize).wrapping_sub(base);
-        u32::try_from(offset / std::mem::size_of::<ShapePrim>()).unwrap_or(u32::MAX)
     }
 
     /// Whether a walk found `blocker`; if so, it becomes the light's cached one.

@@ -1,5 +1,6 @@
 //! The node that holds each primitive's leaf (`Bvh::holder`, a table in the tree's
-//! order), and a query over that node's leaves alone: where the shadow cache's last
+//! order, read at a primitive's place, `Bvh::place`), and a query over that node's
+//! leaves alone: where the shadow cache's last
 //! blocker misses, the blocker of a neighbouring ray is most often in a leaf beside
 //! its own (`Accel::shape_blocks`), found there without walking down from the root.
 
@@ -24,6 +25,15 @@ pub(super) fn table(nodes: &[WideNode], len: usize) -> Vec<u32> {
 }
 
 impl<P> Bvh<P> {
+    /// The place in the tree's order of `prim`, a reference into `prims()` (as every walk
+    /// gives); a reference from elsewhere gives a place past the end, which
+    /// `holder_leaves` ignores.
+    #[inline(always)]
+    pub fn place(&self, prim: &P) -> u32 {
+        let offset = (prim as *const P as usize).wrapping_sub(self.prims.as_ptr() as usize);
+        u32::try_from(offset / std::mem::size_of::<P>().max(1)).unwrap_or(u32::MAX)
+    }
+
     /// `query_leaves` over the leaves of one node alone: the node that holds the leaf of
     /// the primitive at `at` (in the tree's order), its boxes tested in the narrow lanes
     /// (the same bits as the walk's); its interior children are skipped. Nothing for a

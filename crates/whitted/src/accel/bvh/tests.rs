@@ -93,6 +93,11 @@ fn holder_leaves_offers_the_leaves_of_one_node() {
     assert_eq!(short, 0);
     let beside = Ray::new(DVec3::new(-5.0, 5.0, 0.0), DVec3::X);
     bvh.holder_leaves(500, &beside, f64::INFINITY, |_, _, _| panic!("offered"));
+    // A primitive's place, from a reference into the tree; one from elsewhere lies past
+    // the end.
+    assert!((0..1000).all(|i| bvh.place(&bvh.prims[i]) == i as u32));
+    let elsewhere = bvh.prims[500];
+    assert!(bvh.place(&elsewhere) as usize >= 1000);
     // A place past the end: nothing.
     bvh.holder_leaves(1000, &along, f64::INFINITY, |_, _, _| panic!("offered"));
     bvh.holder_leaves(u32::MAX as usize, &along, f64::INFINITY, |_, _, _| {
