@@ -71,33 +71,79 @@ impl<'a> Lexer<'a> {
     }
 }
 
+/// Whether an ASCII byte is a blank: what `char::is_whitespace` says of it (tab, line
+/// feed, vertical tab, form feed, carriage return, space).
+fn is_blank(b: u8) -> bool {
+    matches!(b, b'\t' | b'\n' | 0x0b | 0x0c | b'\r' | b' ')
+}
+
+impl Lexer<'_> {
+    /// The character at the cursor when it is not ASCII (whose bytes are read as they
+    /// are).
+    fn wide_char(&self) -> char {
+        self.src[self.pos..].chars().next().unwrap_or('\0')
+    }
+
+    /// Moves past blanks and comments to the next token's first character.
+    fn skip_blanks(&mut self) {
+        let bytes = self.src.as_bytes();
+        let mut in_comment = false;
+        while let Some(&b) = bytes.get(self.pos) {
+            if b >= 0x80 {
+                let c = self.wide_char();
+                if !in_comment && !c.is_whitespace() {
+                    break;
+                }
+                self.bump(c);
+            } else if b == b'\n' {
+                in_comment = false;
+                self.bump('\n');
+            } else {
+                if b == b'#' {
+                    in_comment = true;
+                } else if !in_comment && !is_blank(b) {
+                    break;
+                }
+                self.pos += 1;
+                self.column += 1;
+            }
+        }
+    }
+
+    /// Moves past a token that is not quoted: up to a blank or a `#`.
+    fn skip_word(&mut self) {
+        let bytes = self.src.as_bytes();
+        while let Some(&b) = bytes.get(self.pos) {
+            if b >= 0x80 {
+                let c = self.wide_char();
+                if c.is_whitespace() {
+                    break;
+                }
+                self.bump(c);
+            } else if is_blank(b) || b == b'#' {
+                break;
+            } else {
+                self.pos += 1;
+                self.column += 1;
+            }
+        }
+    }
+}
+
 impl<'a> Iterator for Lexer<'a> {
     type Item = Token<'a>;
 
+    /// Reads ASCII a byte at a time (every scene file is ASCII but for its strings), and
+    /// other characters as characters: the same tokens and columns as reading every
+    /// character as a `char`.
     fn next(&mut self) -> Option<Token<'a>> {
-        // Skip blanks and comments.
-        let mut in_comment = false;
-        while let Some(c) = self.src[self.pos..].chars().next() {
-            if c == '\n' {
-                in_comment = false;
-            } else if c == '#' {
-                in_comment = true;
-            } else if !in_comment && !c.is_whitespace() {
-                break;
-            }
-            self.bump(c);
-        }
+        self.skip_blanks();
         let start = self.pos;
         let (line, column) = (self.line, self.column);
         if self.src[self.pos..].starts_with('"') {
             self.quoted();
         } else {
-            while let Some(c) = self.src[self.pos..].chars().next() {
-                if c.is_whitespace() || c == '#' {
-                    break;
-                }
-                self.bump(c);
-            }
+            self.skip_word();
         }
         (self.pos > start).then(|| Token {
             text: &self.src[start..self.pos],
@@ -162,6 +208,53 @@ mod tests {
                 ("\"open 3", 3, 1),
             ]
         );
+    }
+
+    /// The tokens of reading every character as a `char` (the lexer before its ASCII
+    /// path), quoted strings aside.
+    fn by_chars(src: &str) -> Vec<(String, usize, usize)> {
+        let (mut out, mut line, mut column) = (Vec::new(), 1, 1);
+        let (mut word, mut at, mut in_comment) = (String::new(), (1, 1), false);
+        for c in src.chars().chain(['\n']) {
+            let ends = c.is_whitespace() || c == '#';
+            if ends && !word.is_empty() {
+                out.push((std::mem::take(&mut word), at.0, at.1));
+            }
+            if c == '\n' {
+                in_comment = false;
+            } else if c == '#' {
+                in_comment = true;
+            } else if !in_comment && !ends {
+                if word.is_empty() {
+                    at = (line, column);
+                }
+                word.push(c);
+            }
+            (line, column) = if c == '\n' {
+                (line + 1, 1)
+            } else {
+                (line, column + 1)
+            };
+        }
+        out
+    }
+
+    proptest::proptest! {
+        /// Text of ASCII and other blanks and letters, comments and line ends: the same
+        /// tokens at the same lines and columns as reading it character by character.
+        #[test]
+        fn the_ascii_path_reads_as_characters_do(
+            parts in proptest::collection::vec(proptest::sample::select(vec![
+                "1", "-2.5e3", " ", "\t", "\n", "\r", "\u{b}", "\u{c}", "#", "é", "\u{a0}",
+                "\u{2003}", "\u{85}", "x\u{3000}y", "ß7",
+            ]), 0..60),
+        ) {
+            let src: String = parts.concat();
+            let got: Vec<_> = Lexer::new(&src)
+                .map(|t| (t.text.to_string(), t.line, t.column))
+                .collect();
+            proptest::prop_assert_eq!(got, by_chars(&src));
+        }
     }
 
     #[test]
