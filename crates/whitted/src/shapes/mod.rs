@@ -194,7 +194,11 @@ impl Shape {
     /// infinite.
     #[inline]
     pub fn is_bounded(&self) -> bool {
-        self.bounds().is_some()
+        match self {
+            Shape::Plane(_) | Shape::Quadric(_) => false,
+            Shape::Csg(c) => c.bounds().is_some(),
+            _ => true,
+        }
     }
 
     /// The low and high corners of a box around a bounded shape; `None` for the
@@ -263,5 +267,27 @@ mod tests {
         let r = Ray::new(DVec3::ZERO, -DVec3::Z);
         assert_eq!(s.crossings(&r, 100.0).collect::<Vec<_>>(), vec![4.0, 6.0]);
         assert_eq!(s.crossings(&r, 5.0).collect::<Vec<_>>(), vec![4.0]);
+    }
+
+    #[test]
+    fn is_bounded_says_what_bounds_says() {
+        // The project's scenes hold every kind of shape (planes and quadrics, meshes,
+        // placed shapes, CSG trees with and without a box).
+        let dir = concat!(env!("CARGO_MANIFEST_DIR"), "/../../scenes");
+        let mut kinds = [0usize; 2];
+        for name in [
+            "new-shapes.txt",
+            "meshes.txt",
+            "csg-piece.txt",
+            "showcase.txt",
+        ] {
+            let scene = crate::scene::Scene::load(&std::path::Path::new(dir).join(name))
+                .expect("the project's scenes load");
+            for o in &scene.objects {
+                assert_eq!(o.shape.is_bounded(), o.shape.bounds().is_some(), "{name}");
+                kinds[o.shape.is_bounded() as usize] += 1;
+            }
+        }
+        assert!(kinds[0] > 0 && kinds[1] > 0, "{kinds:?}");
     }
 }
