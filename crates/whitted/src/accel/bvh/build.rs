@@ -148,16 +148,7 @@ fn split<P>(
     };
     // Binned SAH over the three axes of the centres: the cheapest split, the lower axis
     // on a tie.
-    let mut best: Option<(f64, usize, usize)> = None;
-    for axis in 0..3 {
-        if extent[axis] > 0.0 {
-            if let Some((cost, bin)) = sah_axis(items, axis, clo[axis], extent[axis]) {
-                if best.is_none_or(|b| cost < b.0) {
-                    best = Some((cost, axis, bin));
-                }
-            }
-        }
-    }
+    let best = sah(items, clo, extent);
     if let Some((cost, _, _)) = best {
         let area = surface_area(lo, hi);
         if n <= LEAF_SAH_MAX.max(leaf_max) && n as f64 * area <= TRAVERSE_COST * area + cost {
@@ -196,35 +187,70 @@ fn bin(c: f64, c0: f64, k: f64) -> usize {
     }
 }
 
-/// The cheapest binned SAH split of `items` along `axis` (centres from `c0` over
-/// `extent` > 0): (cost, last bin on the left), if some split leaves both sides non-empty.
-fn sah_axis<P>(items: &[Item<P>], axis: usize, c0: f64, extent: f64) -> Option<(f64, usize)> {
-    let n = items.len();
+/// A bin's box and count.
+type Bin = (DVec3, DVec3, usize);
+
+/// The cheapest binned SAH split of `items` over the three axes of their centres (from
+/// `c0` over `extent`; an axis without extent is not split): (cost, axis, last bin on
+/// the left), the lower axis on a tie, if some split leaves both sides non-empty. The
+/// items are binned on all three axes in one pass (an axis without extent puts them all
+/// in its bin 0, unused), each bin growing in the items' order.
+fn sah<P>(items: &[Item<P>], c0: DVec3, extent: DVec3) -> Option<(f64, usize, usize)> {
     let k = BINS as f64 / extent;
-    let mut bins = [(DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize); BINS];
+    let empty: Bin = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0);
+    let mut bins = [[empty; BINS]; 3];
     for it in items.iter() {
-        let b = &mut bins[bin(it.centre[axis], c0, k)];
-        b.0 = b.0.min(it.lo);
-        b.1 = b.1.max(it.hi);
-        b.2 += 1;
+        for (axis, bins) in bins.iter_mut().enumerate() {
+            let b = &mut bins[bin(it.centre[axis], c0[axis], k[axis])];
+            b.0 = b.0.min(it.lo);
+            b.1 = b.1.max(it.hi);
+            b.2 += 1;
+        }
     }
+    let mut best: Option<(f64, usize, usize)> = None;
+    for (axis, bins) in bins.iter().enumerate() {
+        if extent[axis] > 0.0 {
+            if let Some((cost, bin)) = sweep(bins, items.len()) {
+                if best.is_none_or(|b| cost < b.0) {
+                    best = Some((cost, axis, bin));
+                }
+            }
+        }
+    }
+    best
+}
+
+/// The cheapest split of one axis's bins over `n` items: (cost, last bin on the left).
+/// Empty bins are passed over: splitting after one costs what splitting after the bin
+/// before it does (the same two sides, the same arithmetic), and a cost must be lower
+/// to replace the best, so the answer is that of every split asked. Most of a small
+/// node's bins are empty.
+fn sweep(bins: &[Bin; BINS], n: usize) -> Option<(f64, usize)> {
     // Costs of splitting after bin i: sweep from the right, then from the left.
     let mut right = [0.0f64; BINS];
     let (mut rlo, mut rhi, mut rn) = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize);
+    // An empty right side: its box has no area.
+    let mut cost = 0.0;
     for i in (1..BINS).rev() {
-        rlo = rlo.min(bins[i].0);
-        rhi = rhi.max(bins[i].1);
-        rn += bins[i].2;
-        right[i - 1] = surface_area(rlo, rhi) * rn as f64;
+        if bins[i].2 > 0 {
+            rlo = rlo.min(bins[i].0);
+            rhi = rhi.max(bins[i].1);
+            rn += bins[i].2;
+            cost = surface_area(rlo, rhi) * rn as f64;
+        }
+        right[i - 1] = cost;
     }
     let (mut llo, mut lhi, mut ln) = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize);
     let mut best: Option<(f64, usize)> = None;
     for i in 0..BINS - 1 {
+        if bins[i].2 == 0 {
+            continue;
+        }
         llo = llo.min(bins[i].0);
         lhi = lhi.max(bins[i].1);
         ln += bins[i].2;
-        if ln == 0 || ln == n {
-            continue;
+        if ln == n {
+            break;
         }
         let cost = surface_area(llo, lhi) * ln as f64 + right[i];
         if cost.is_finite() && best.is_none_or(|b| cost < b.0) {
@@ -248,7 +274,74 @@ fn partition<P>(items: &mut [Item<P>], pred: impl Fn(&Item<P>) -> bool) -> usize
 
 #[cfg(test)]
 mod tests {
-    use super::{bin, BINS};
+    use super::{bin, surface_area, sweep, Bin, BINS};
+    use glam::DVec3;
+    use proptest::prelude::*;
+
+    /// Every split after bins 0 to 14 costed in turn, empty bins included.
+    fn sweep_every_bin(bins: &[Bin; BINS], n: usize) -> Option<(f64, usize)> {
+        let mut right = [0.0f64; BINS];
+        let (mut rlo, mut rhi, mut rn) = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize);
+        for i in (1..BINS).rev() {
+            rlo = rlo.min(bins[i].0);
+            rhi = rhi.max(bins[i].1);
+            rn += bins[i].2;
+            right[i - 1] = surface_area(rlo, rhi) * rn as f64;
+        }
+        let (mut llo, mut lhi, mut ln) = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0usize);
+        let mut best: Option<(f64, usize)> = None;
+        for i in 0..BINS - 1 {
+            llo = llo.min(bins[i].0);
+            lhi = lhi.max(bins[i].1);
+            ln += bins[i].2;
+            if ln == 0 || ln == n {
+                continue;
+            }
+            let cost = surface_area(llo, lhi) * ln as f64 + right[i];
+            if cost.is_finite() && best.is_none_or(|b| cost < b.0) {
+                best = Some((cost, i));
+            }
+        }
+        best
+    }
+
+    #[test]
+    fn a_sweep_by_hand() {
+        // Unit cubes at x = 0 (bin 2, two items) and x = 10 (bin 9, one item): every split
+        // from bin 2 to bin 8 parts them alike, costing 6 · 2 + 6 · 1 = 18; bin 2 is the
+        // first of them.
+        let empty: Bin = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0);
+        let mut bins = [empty; BINS];
+        bins[2] = (DVec3::ZERO, DVec3::ONE, 2);
+        bins[9] = (DVec3::new(10.0, 0.0, 0.0), DVec3::new(11.0, 1.0, 1.0), 1);
+        assert_eq!(sweep(&bins, 3), Some((18.0, 2)));
+        // All items in one bin: no split.
+        let mut one = [empty; BINS];
+        one[5] = bins[2];
+        assert_eq!(sweep(&one, 2), None);
+    }
+
+    proptest! {
+        /// Bins mostly empty (as a small node's are) or full, with boxes that share
+        /// faces and zeros of either sign: the same split as costing every bin.
+        #[test]
+        fn passing_over_empty_bins_gives_every_bins_answer(
+            full in proptest::collection::vec(
+                (any::<bool>(), 1usize..4, [-2i8..3, -2i8..3, -2i8..3], [0u8..3, 0u8..3, 0u8..3]), BINS),
+            sparse in any::<bool>(),
+        ) {
+            let empty: Bin = (DVec3::INFINITY, DVec3::NEG_INFINITY, 0);
+            let mut bins = [empty; BINS];
+            for (b, (on, count, lo, size)) in bins.iter_mut().zip(&full) {
+                if *on && (!sparse || count % 3 == 0) {
+                    let lo = DVec3::from_array(lo.map(|v| if v == 0 { -0.0 } else { v as f64 }));
+                    *b = (lo, lo + DVec3::from_array(size.map(|v| v as f64)), *count);
+                }
+            }
+            let n = bins.iter().map(|b| b.2).sum();
+            prop_assert_eq!(sweep(&bins, n), sweep_every_bin(&bins, n));
+        }
+    }
 
     /// `bin` against the saturating conversion it replaces, at bin edges (by hand: with
     /// c0 = 1 and k = 4, c = 1.25 is the start of bin 1 and c = 4.75 of the last, bin
