@@ -44,11 +44,17 @@ struct Ring<'a> {
     alive_ids: Vec<usize>,
     /// Each vertex's place in `alive_points`.
     place: Vec<usize>,
+    /// The points cut so far, in turn, and how many had been cut when each vertex was
+    /// last asked: the vertices alive then are those alive now and those cut since.
+    killed: Vec<DVec2>,
+    asked_at: Vec<usize>,
+    /// Whether an ear's vertex test runs when it is asked (else when it leaves the heap).
+    eager: bool,
 }
 
 impl<'a> Ring<'a> {
     /// The whole outline, nothing asked yet.
-    fn new(flat: &'a [DVec2], convex: bool) -> Ring<'a> {
+    fn new(flat: &'a [DVec2], convex: bool, eager: bool) -> Ring<'a> {
         let n = flat.len();
         Ring {
             flat,
@@ -60,6 +66,9 @@ impl<'a> Ring<'a> {
             alive_points: flat.to_vec(),
             alive_ids: (0..n).collect(),
             place: (0..n).collect(),
+            killed: Vec::with_capacity(n),
+            asked_at: vec![0; n],
+            eager,
         }
     }
 
@@ -68,9 +77,10 @@ impl<'a> Ring<'a> {
         (self.prev[i], self.next[i])
     }
 
-    /// Corner `i`'s place in the heap: 0 for a corner without area, its box's width plus
-    /// height for an ear (positive, so its bits order as the numbers do), none otherwise.
-    fn key(&self, i: usize) -> Option<u64> {
+    /// Corner `i`'s place in the heap by its shape alone: 0 for a corner without area, its
+    /// box's width plus height for a left turn (positive, so its bits order as the numbers
+    /// do), none for a right turn.
+    fn shape_key(&self, i: usize) -> Option<u64> {
         let (a, c) = self.corner(i);
         let (pa, pb, pc) = (self.flat[a], self.flat[i], self.flat[c]);
         let turn = cross(pa, pb, pc);
@@ -80,20 +90,29 @@ impl<'a> Ring<'a> {
         if turn < 0.0 {
             return None;
         }
-        // Any other alive vertex inside (or on) the triangle blocks the ear. The three
-        // corners themselves, and copies of them, are left out by their points; which
-        // vertex is asked first does not change the answer, so the packed array is read
-        // in its own order.
-        if !self.convex
-            && self
-                .alive_points
-                .iter()
-                .any(|&q| inside(q, pa, pb, pc) && q != pa && q != pb && q != pc)
-        {
-            return None;
-        }
         let size = pa.max(pb).max(pc) - pa.min(pb).min(pc);
         Some((size.x + size.y).to_bits())
+    }
+
+    /// Whether a vertex alive when `since` points had been cut lies inside (or on) corner
+    /// `i`'s triangle: those alive now and those cut since. The three corners themselves,
+    /// and copies of them, are left out by their points; the answer is whether any such
+    /// vertex exists, so the packed arrays are read in their own order.
+    fn blocked(&self, i: usize, since: usize) -> bool {
+        if self.convex {
+            return false;
+        }
+        let (a, c) = self.corner(i);
+        let (pa, pb, pc) = (self.flat[a], self.flat[i], self.flat[c]);
+        let within = |&q: &DVec2| inside(q, pa, pb, pc) && q != pa && q != pb && q != pc;
+        self.alive_points.iter().any(within) || self.killed[since..].iter().any(within)
+    }
+
+    /// Corner `i`'s place in the heap: `shape_key` for an ear, none for a left turn whose
+    /// triangle holds another alive vertex.
+    fn key(&self, i: usize) -> Option<u64> {
+        let key = self.shape_key(i)?;
+        (key == 0 || !self.blocked(i, self.killed.len())).then_some(key)
     }
 
     /// Takes vertex `i` out of the ring (its neighbours now meet).
@@ -107,12 +126,19 @@ impl<'a> Ring<'a> {
         if let Some(&moved) = self.alive_ids.get(k) {
             self.place[moved] = k;
         }
+        self.killed.push(self.flat[i]);
     }
 
     /// Asks corner `i` again, forgetting what the heap held for it.
     fn ask(&mut self, i: usize) {
         self.version[i] += 1;
-        if let Some(key) = self.key(i) {
+        self.asked_at[i] = self.killed.len();
+        let key = if self.eager {
+            self.key(i)
+        } else {
+            self.shape_key(i)
+        };
+        if let Some(key) = key {
             self.heap.push(Reverse((key, i, self.version[i])));
         }
     }
@@ -121,8 +147,17 @@ impl<'a> Ring<'a> {
 /// The triangles of the counter-clockwise polygon `flat` (index triples, each in the
 /// polygon's winding); `convex` says every corner turns left and the outline winds once.
 pub(super) fn clip(flat: &[DVec2], convex: bool) -> Vec<[usize; 3]> {
+    clip_with(flat, convex, false)
+}
+
+/// `clip`, the vertex test of an ear run when it is asked (`eager`) or when it leaves the
+/// heap: the same cuts, since the heap's order is its keys' and the test at the heap's
+/// top asks the vertices that were alive when it was asked. Tested last, an ear is tested
+/// once; tested first, every corner asked is, and each cut asks two, most of which are
+/// asked again before they reach the top.
+fn clip_with(flat: &[DVec2], convex: bool, eager: bool) -> Vec<[usize; 3]> {
     let n = flat.len();
-    let mut ring = Ring::new(flat, convex);
+    let mut ring = Ring::new(flat, convex, eager);
     (0..n).for_each(|i| ring.ask(i));
     let mut alive = vec![true; n];
     let mut left = n;
@@ -140,6 +175,9 @@ pub(super) fn clip(flat: &[DVec2], convex: bool) -> Vec<[usize; 3]> {
             continue;
         };
         if !alive[i] || version != ring.version[i] {
+            continue;
+        }
+        if !eager && key != 0 && ring.blocked(i, ring.asked_at[i]) {
             continue;
         }
         let (a, c) = ring.corner(i);
@@ -208,7 +246,7 @@ mod tests {
             (0.0, 0.0),
         ]
         .map(|(x, y)| DVec2::new(x, y));
-        let ring = Ring::new(&p, false);
+        let ring = Ring::new(&p, false, true);
         assert_eq!(ring.key(1), None);
         assert_eq!(ring.key(2), Some(3.0f64.to_bits()));
         assert_eq!(ring.key(5), Some(0));
@@ -226,7 +264,7 @@ mod tests {
         ) {
             let flat: Vec<DVec2> =
                 pts.iter().map(|&(x, y)| DVec2::new(x as f64, y as f64)).collect();
-            let mut ring = Ring::new(&flat, false);
+            let mut ring = Ring::new(&flat, false, true);
             let mut alive: Vec<usize> = (0..flat.len()).collect();
             for cut in cuts {
                 for &i in &alive {
@@ -237,6 +275,26 @@ mod tests {
                 }
                 let i = alive.remove(cut.index(alive.len()));
                 ring.cut(i);
+            }
+        }
+
+        /// Outlines on a coarse grid (repeated and collinear points, crossing edges) and
+        /// star-shaped ones: testing an ear as it leaves the heap cuts what testing it
+        /// when asked does.
+        #[test]
+        fn ears_tested_at_the_top_cut_as_ears_tested_when_asked(
+            pts in proptest::collection::vec((0u8..7, 0u8..7), 3..60),
+            radii in proptest::collection::vec(0.2f64..1.0, 3..150),
+        ) {
+            let grid: Vec<DVec2> =
+                pts.iter().map(|&(x, y)| DVec2::new(x as f64, y as f64)).collect();
+            let n = radii.len();
+            let star: Vec<DVec2> = radii.iter().enumerate().map(|(i, r)| {
+                let a = std::f64::consts::TAU * i as f64 / n as f64;
+                DVec2::new(r * a.cos(), r * a.sin())
+            }).collect();
+            for flat in [&grid, &star] {
+                prop_assert_eq!(clip_with(flat, false, false), clip_with(flat, false, true));
             }
         }
     }
