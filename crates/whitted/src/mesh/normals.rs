@@ -175,13 +175,29 @@ pub fn smooth(vertices: &[DVec3], triangles: &[[u32; 3]], angle_deg: f64) -> Smo
             i = j;
         }
     }
-    // Each group's angle-weighted sum, kept at its root.
-    let mut sums = vec![DVec3::ZERO; parent.len()];
+    // Each corner's root: the least corner of its group (a union points the greater root
+    // at the lesser, and halving a path only moves a corner's parent lower).
     for c in 0..parent.len() as u32 {
-        let r = find(&mut parent, c);
-        parent[c as usize] = r;
+        parent[c as usize] = find(&mut parent, c);
+    }
+    // Each group's angle-weighted sum, the groups numbered in the order of their roots
+    // (in corner order a group's root comes first). Each corner's parent becomes its
+    // group's number (a root's is written before any other corner of its group reads
+    // it), and `roots` keeps each group's root: its face's normal stands in for a sum of
+    // zero. The sums are those the roots' own slots kept before, in the same order.
+    let (mut sums, mut roots) = (Vec::new(), Vec::new());
+    for c in 0..parent.len() as u32 {
+        let r = parent[c as usize];
+        let g = if r == c {
+            sums.push(DVec3::ZERO);
+            roots.push(r);
+            roots.len() as u32 - 1
+        } else {
+            parent[r as usize]
+        };
+        parent[c as usize] = g;
         let (n, angles) = faces[c as usize / 3];
-        sums[r as usize] += angles[c as usize % 3] * n;
+        sums[g as usize] += angles[c as usize % 3] * n;
     }
     // One new vertex per (input vertex, group), in corner order.
     let mut first: Vec<Option<(u32, u32)>> = vec![None; vertices.len()];
@@ -198,7 +214,7 @@ pub fn smooth(vertices: &[DVec3], triangles: &[[u32; 3]], angle_deg: f64) -> Smo
             let add = |out: &mut Smoothed| {
                 let n = sums[r as usize]
                     .try_normalize()
-                    .unwrap_or(faces[r as usize / 3].0);
+                    .unwrap_or(faces[roots[r as usize] as usize / 3].0);
                 out.normals.push(n);
                 out.origin.push(v);
                 out.normals.len() as u32 - 1
