@@ -178,8 +178,10 @@ impl Accel {
     pub(super) fn build_packets(&mut self) {
         let prims = self.shapes.prims();
         let mut at = vec![NO_PACKET; prims.len()];
-        let mut packets = Vec::new();
-        for (first, count) in self.shapes.leaves() {
+        let leaves = self.shapes.leaves();
+        // At most one packet a leaf: sized first rather than grown by doubling.
+        let mut packets = Vec::with_capacity(leaves.len());
+        for (first, count) in leaves {
             let tris: Option<Vec<[DVec3; 3]>> = prims[first..first + count]
                 .iter()
                 .map(|p| match p.mesh {
