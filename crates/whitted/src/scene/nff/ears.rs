@@ -14,6 +14,11 @@
 //! vertex) go first, without a triangle. A convex polygon needs no vertex tests (every
 //! left turn is an ear), so it is cut in O(n log n); others take O(n²). Should no ear be
 //! left in a polygon that is not simple, the rest is cut as a fan from its lowest vertex.
+//!
+//! A corner enters the heap by its shape alone, and its vertex test runs when it reaches
+//! the top, against the vertices that were alive when it was asked (`Ring::blocked`):
+//! the cuts of testing every corner as it is asked, with most tests never run (a corner
+//! is usually asked again before it reaches the top).
 
 use glam::DVec2;
 use std::cmp::Reverse;
