@@ -44,7 +44,8 @@ struct Ring<'a> {
     next: Vec<usize>,
     version: Vec<u32>,
     heap: BinaryHeap<Reverse<(u64, usize, u32)>>,
-    /// The alive vertices' points, in no particular order, and which vertex each is.
+    /// The alive vertices' points, in no particular order, and which vertex each is
+    /// (none for a convex outline).
     alive_points: Vec<DVec2>,
     alive_ids: Vec<usize>,
     /// Each vertex's place in `alive_points`.
@@ -53,7 +54,8 @@ struct Ring<'a> {
     /// last asked: the vertices alive then are those alive now and those cut since.
     killed: Vec<DVec2>,
     asked_at: Vec<usize>,
-    /// Whether an ear's vertex test runs when it is asked (else when it leaves the heap).
+    /// Whether an ear's vertex test runs when it is asked, else when it leaves the heap
+    /// (`clip`'s way; the other is the tests' reference).
     eager: bool,
 }
 
@@ -61,6 +63,8 @@ impl<'a> Ring<'a> {
     /// The whole outline, nothing asked yet.
     fn new(flat: &'a [DVec2], convex: bool, eager: bool) -> Ring<'a> {
         let n = flat.len();
+        // A convex outline tests no vertex: it keeps no packed points.
+        let tested = if convex { 0 } else { n };
         Ring {
             flat,
             convex,
@@ -68,10 +72,10 @@ impl<'a> Ring<'a> {
             next: (0..n).map(|i| (i + 1) % n).collect(),
             version: vec![0; n],
             heap: BinaryHeap::with_capacity(n),
-            alive_points: flat.to_vec(),
-            alive_ids: (0..n).collect(),
-            place: (0..n).collect(),
-            killed: Vec::with_capacity(n),
+            alive_points: flat[..tested].to_vec(),
+            alive_ids: (0..tested).collect(),
+            place: (0..tested).collect(),
+            killed: Vec::new(),
             asked_at: vec![0; n],
             eager,
         }
@@ -125,6 +129,9 @@ impl<'a> Ring<'a> {
         let (a, c) = self.corner(i);
         self.next[a] = c;
         self.prev[c] = a;
+        if self.convex {
+            return;
+        }
         let k = self.place[i];
         self.alive_points.swap_remove(k);
         self.alive_ids.swap_remove(k);
