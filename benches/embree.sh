@@ -9,7 +9,7 @@
 # (default 0; PIN=0 leaves them free); medians printed: wall and CPU seconds of each, the
 # rays per second, ours over Embree, and the share of Embree's answers that agree with ours.
 #
-#   cargo build --release --bin raytrace --example embree_rays
+#   cargo build --release --bin raytrace --features examples --example embree_rays
 #   benches/embree.sh [NAME...]            # default: tetra teapot gears
 #   SPD=/path/to/spd RUNS=9 benches/embree.sh
 #
@@ -26,7 +26,7 @@ BIN_DIR=${BIN_DIR:-${CARGO_TARGET_DIR:-$repo/target}/release}
 dump="$BIN_DIR/examples/embree_rays"
 for f in "$BIN_DIR/raytrace" "$dump"; do
   [ -x "$f" ] || {
-    echo "$f is missing: cargo build --release --bin raytrace --example embree_rays" >&2
+    echo "$f is missing: cargo build --release --bin raytrace --features examples --example embree_rays" >&2
     exit 2
   }
 done

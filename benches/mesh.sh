@@ -14,7 +14,7 @@ BIN_DIR=${1:-${CARGO_TARGET_DIR:-$repo/target}/release}
 rt="$BIN_DIR/raytrace"
 work=$(mktemp -d /tmp/mesh-bench.XXXXXX)
 trap 'rm -rf "$work"' EXIT
-cargo run -q --release --example torus_ply -- "$work/torus.ply" 1000 500
+cargo run -q --release --features examples --example torus_ply -- "$work/torus.ply" 1000 500
 ls -l "$work/torus.ply"
 cat >"$work/torus.txt" <<'SCENE'
 640 480  0 4 7  0 -0.1 0  0 0  0 1 0 1

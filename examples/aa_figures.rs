@@ -1,8 +1,8 @@
 //! Figures for benches/pov/adaptive.sh (adaptive anti-aliasing, SPEC §15):
 //!
 //! ```text
-//! cargo run --release --example aa_figures -- compare REF.png IMG.png   # PSNR dB, FLIP mean
-//! cargo run --release --example aa_figures -- heat SCENE.txt OUT.png T D # leaves per pixel
+//! cargo run --release --features examples --example aa_figures -- compare REF.png IMG.png   # PSNR dB, FLIP mean
+//! cargo run --release --features examples --example aa_figures -- heat SCENE.txt OUT.png T D # leaves per pixel
 //! ```
 //!
 //! `heat` draws the scene adaptively and writes the count of leaves of every pixel on a

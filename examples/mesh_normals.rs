@@ -1,7 +1,7 @@
 //! The cost of `smooth` normals (SPEC §18, issue 55's speed goal: a million triangles
 //! under 0.3 s, near-linear at any valence), timed on meshes made here:
 //!
-//!     cargo run --release --example mesh_normals   # best of 5 runs each: CPU and wall time
+//!     cargo run --release --features examples --example mesh_normals   # best of 5 runs each: CPU and wall time
 //!
 //! - a torus of 1000 × 500 quads cut in two: 1,000,000 triangles, 500,000 vertices
 //!   (valence 6), with a crease every 50 rings (smooth 30 splits there);

@@ -3,7 +3,7 @@
 //! two-joint skin (the torus bends about its second joint, weights blending over a
 //! quarter turn) and a one-second animation of that joint, for the skinning measure.
 //!
-//!     cargo run --release --example torus_glb -- OUT.glb [MAJOR_STEPS MINOR_STEPS] [--skin]
+//!     cargo run --release --features examples --example torus_glb -- OUT.glb [MAJOR_STEPS MINOR_STEPS] [--skin]
 //!
 //! The torus of `torus_ply` (radii 1 and 0.4 about the y axis), MAJOR_STEPS ×
 //! MINOR_STEPS quads (default 1000 × 500), two triangles each. The GLB container is

@@ -2,7 +2,7 @@
 //! tracer reads PLY with): the mesh of the performance goal, a million triangles by
 //! default, with a unit normal per vertex (smooth shading).
 //!
-//!     cargo run --release --example torus_ply -- OUT.ply [MAJOR_STEPS MINOR_STEPS]
+//!     cargo run --release --features examples --example torus_ply -- OUT.ply [MAJOR_STEPS MINOR_STEPS]
 //!
 //! A torus of radii 1 and 0.4 about the y axis, MAJOR_STEPS × MINOR_STEPS quads (default
 //! 1000 × 500) cut into two triangles each: 2 · MAJOR_STEPS · MINOR_STEPS triangles.

@@ -3,7 +3,7 @@
 
     python3 benches/embree/cast.py DUMP_DIR
 
-DUMP_DIR is what `cargo run --release --example embree_rays -- SCENE.nff DUMP_DIR` wrote
+DUMP_DIR is what `cargo run --release --features examples --example embree_rays -- SCENE.nff DUMP_DIR` wrote
 (triangles.f64, rays.f64, counts.json: examples/embree_rays/dump.rs says their layout).
 The triangles go into one Embree triangle geometry (robust scene flag, embreex's
 default); the scene is committed (its tree built) before any timing. Then, on the calling

@@ -22,7 +22,7 @@
 # The machine may be shared: ray counts are exact, times are paired runs on a busy box.
 # Environment: BIN_DIR (default: the release folder of $CARGO_TARGET_DIR, else target/release)
 # holding raytrace, animate and examples/aa_figures (cargo build --release --bins
-# --example aa_figures); THREADS (default 2); KEEP=1 keeps the images (and writes
+# --features examples --example aa_figures); THREADS (default 2); KEEP=1 keeps the images (and writes
 # heat.png, the leaves-per-pixel map of frame 0 at the chosen threshold).
 # POV-Ray: `apt-get install povray` (see common.sh, which this sources).
 set -euo pipefail
@@ -31,7 +31,7 @@ N=${1:-10}
 pov_setup adaptive
 FIG="$BIN_DIR/examples/aa_figures"
 for b in "$BIN_DIR/raytrace" "$BIN_DIR/animate" "$FIG"; do
-  [ -x "$b" ] || { echo "no $b: cargo build --release --bins --example aa_figures" >&2; exit 2; }
+  [ -x "$b" ] || { echo "no $b: cargo build --release --bins --features examples --example aa_figures" >&2; exit 2; }
 done
 
 ours() { # ours OUT.png [raytrace options...]: prints "camera-rays/px all-rays"

@@ -24,7 +24,7 @@ model() { # model NAME: the PLY, fit, and centre height
   bunny) echo "$repo/scenes/models/bunny.ply 2 0.992" ;;
   torus)
     [ -f "$work/torus.ply" ] ||
-      (cd "$repo" && cargo run -q --release --example torus_ply -- "$work/torus.ply" 1000 500)
+      (cd "$repo" && cargo run -q --release --features examples --example torus_ply -- "$work/torus.ply" 1000 500)
     echo "$work/torus.ply 3 0.6"
     ;;
   *) echo "unknown model $1 (bunny, torus)" >&2; exit 2 ;;

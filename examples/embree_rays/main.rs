@@ -2,7 +2,7 @@
 //! the Embree harness (`benches/embree.sh`, `benches/embree/cast.py`): a developer's
 //! tool, not part of `raytrace`.
 //!
-//!     cargo run --release --example embree_rays -- SCENE.nff OUT_DIR
+//!     cargo run --release --features examples --example embree_rays -- SCENE.nff OUT_DIR
 //!
 //! OUT_DIR gets `triangles.f64`, `rays.f64` and `counts.json` (`dump` says their layout);
 //! the rays are the trace loop's, found again by `walk` through the tracer's public

@@ -83,6 +83,8 @@ fn the_lean_tracer_builds_and_renders() {
         .args(["run", "--offline", "--release", "-p", "whitted"])
         .args([
             "--no-default-features",
+            "--features",
+            "examples",
             "--example",
             "lean_render",
             "--target-dir",

@@ -1,6 +1,6 @@
 //! The tracer taken in part: a Scene.txt parsed and rendered into memory, then encoded as
 //! a PNG, with whatever features this build has. `cargo run --release -p whitted
-//! --no-default-features --example lean_render` is the lean build's check
+//! --no-default-features --features examples --example lean_render` is the lean build's check
 //! (tests/suite/lean_build.rs): it prints one line `lean: WxH, N PNG bytes, M primary
 //! rays; exr FEATURE, jpeg FEATURE` and exits 0, or says what went wrong and exits 1.
 
