@@ -1,8 +1,10 @@
 //! The eight-wide tree the queries walk: the binary SAH tree of `build`, collapsed so
 //! that each node holds up to eight children whose boxes are tested together in f32
-//! lanes (`raybox`: one AVX2 register or two SSE ones, the same operations either way). Each box is the binary tree's f64 box rounded outward to f32 (its
-//! low corner down, its high corner up), so it still contains everything the f64 box
-//! did; the traversal's δ margin does the rest (see `RayBox::new`).
+//! lanes (`raybox`: one AVX2 register or two SSE ones, the same operations either way).
+//! Each box is the binary tree's box rounded outward to f32 (its low corner down, its
+//! high corner up; the build's items are rounded so already, and rounding outward
+//! commutes with taking the union), so it still contains everything the primitives'
+//! f64 boxes did; the traversal's δ margin does the rest (see `RayBox::new`).
 //!
 //! Collapsing: starting from a binary node's two children, the interior child with the
 //! largest surface area is replaced by its own two children until there are `WIDTH` (or
