@@ -1,11 +1,13 @@
 //! The two lanes give the same bits: for random nodes (empty slots, flat boxes, boxes
 //! behind the ray) and rays (zero, negative-zero and tiny direction components), the
-//! AVX2 lanes' mask and entry parameters equal the narrow lanes'. Skipped, and said so,
+//! AVX2 lanes' mask and entry parameters equal the narrow lanes', and so do their masks
+//! of the boxes beyond a random shaft. Skipped, and said so,
 //! on a processor without AVX2 (and not built without the `avx2` feature).
 
 use super::lanes::{Avx2, Choice, Lanes, Narrow};
 use super::node8::{down, up, WideNode, WIDTH};
 use super::raybox::RayBox;
+use super::Shaft;
 use crate::optics::Ray;
 use glam::DVec3;
 use proptest::prelude::*;
@@ -68,6 +70,43 @@ proptest! {
         prop_assert_eq!(t0.map(f32::to_bits), t1.map(f32::to_bits));
         // Empty slots are never entered.
         prop_assert_eq!(m0 >> used, 0);
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+    /// The shaft test too: random boxes, a random point and parallelogram, the same
+    /// mask from both lanes.
+    #[test]
+    fn avx2_lanes_miss_a_shaft_as_the_narrow_lanes_do(
+        corners in proptest::collection::vec(
+            (-50.0..50.0f64, -50.0..50.0f64, -50.0..50.0f64,
+             -50.0..50.0f64, -50.0..50.0f64, -50.0..50.0f64), WIDTH),
+        used in 1..=WIDTH,
+        p in (-60.0..60.0f64, -60.0..60.0f64, -60.0..60.0f64),
+        c in (-60.0..60.0f64, -60.0..60.0f64, -60.0..60.0f64),
+        e in (-20.0..20.0f64, -20.0..20.0f64, -20.0..20.0f64, -20.0..20.0f64),
+    ) {
+        let Some(avx2) = pulp::x86::V3::try_new().map(Avx2) else {
+            eprintln!("skipped: this processor has no AVX2");
+            return Ok(());
+        };
+        let n = node(&corners, used);
+        let (c0, e1, e2) = (
+            DVec3::new(c.0, c.1, c.2),
+            DVec3::new(e.0, e.1, 0.0),
+            DVec3::new(0.0, e.2, e.3),
+        );
+        let quad = [c0, c0 + e1, c0 + e1 + e2, c0 + e2];
+        let Some(shaft) = Shaft::new(DVec3::new(p.0, p.1, p.2), &quad) else {
+            return Ok(());
+        };
+        let q = shaft.in_lanes(1e-3, 50.0);
+        let m0 = Narrow.misses(&Narrow.shaft(&q), &n);
+        let m1 = avx2.0.vectorize(|| avx2.misses(&avx2.shaft(&q), &n));
+        prop_assert_eq!(m0, m1);
+        // Empty slots are always missed.
+        prop_assert_eq!(m0 >> used, (1u32 << (WIDTH - used)) - 1);
     }
 }
 

@@ -12,8 +12,9 @@
 //! less than δ of the hull. The answer may be "met" where no ray meets anything (then
 //! the rays walk as before), never "clear" where a ray could.
 
-use super::node8::LEAF;
-use super::{Bvh, PAD, STACK, WIDTH};
+use super::lanes::{Choice, Lanes, Narrow, ShaftBox};
+use super::node8::{down, up, WideNode, LEAF, WIDTH};
+use super::{Bvh, PAD, STACK};
 use arrayvec::ArrayVec;
 use glam::DVec3;
 
@@ -143,50 +144,122 @@ impl Shaft {
     }
 }
 
+impl Shaft {
+    /// The shaft widened by `delta` for the lanes' f32 test of a tree whose boxes'
+    /// coordinates are at most `scale` in magnitude: the box rounded outward, each
+    /// plane's normal rounded to nearest and its offset raised by the lanes' rounding.
+    /// A box the lanes find past a plane then lies past it widened by `delta`, as
+    /// `misses` asks: the f32 product n·x is off the exact one by at most about
+    /// 4·2⁻²⁴·|n|₁·scale (three roundings of the sums and products, one of n's
+    /// components), under half of the allowance 2⁻²⁰·(scale + 1).
+    pub(super) fn in_lanes(&self, delta: f64, scale: f64) -> ShaftBox {
+        let slack = (scale + 1.0) / (1u64 << 20) as f64;
+        ShaftBox {
+            lo: (self.lo - delta).to_array().map(down),
+            hi: (self.hi + delta).to_array().map(up),
+            planes: self
+                .planes
+                .iter()
+                .map(|&(n, d)| {
+                    // The low corner where n_i > 0 (as `misses` picks it), else the high one.
+                    let corner = n.to_array().map(|x| if x > 0.0 { 0 } else { 1 });
+                    (
+                        n.to_array().map(|x| x as f32),
+                        corner,
+                        up(d + delta + slack),
+                    )
+                })
+                .collect(),
+        }
+    }
+}
+
 impl<P> Bvh<P> {
     /// Whether no shadow ray inside `shaft` can meet a primitive of the tree: every box
-    /// the shaft meets (as the module says) is a leaf whose primitives `leaf` clears one
-    /// by one (`Shaft::misses_triangle`; `|_| false` where it cannot tell). A flat list
-    /// (no boxes) is clear only when empty.
+    /// the shaft meets (as the module says; a node's eight boxes in one lane test,
+    /// `Lanes::misses`) is a leaf whose primitives `leaf` clears one by one
+    /// (`Shaft::misses_triangle`; `|_| false` where it cannot tell). A flat list (no
+    /// boxes) is clear only when empty.
     pub fn shaft_clear(&self, shaft: &Shaft, mut leaf: impl FnMut(&[P]) -> bool) -> bool {
         if self.nodes.is_empty() {
             return self.prims.is_empty();
         }
         let delta = PAD * (shaft.reach + self.scale + 1.0);
-        let mut stack = ArrayVec::<u32, STACK>::new();
-        stack.push(0);
-        let (mut opened, mut asked) = (0, 0);
-        while let Some(i) = stack.pop() {
-            opened += 1;
-            if opened > NODES_MAX {
-                return false;
-            }
-            let n = &self.nodes[i as usize];
-            for s in 0..WIDTH {
-                let corner = |c: usize| {
-                    DVec3::new(
-                        f64::from(n.b[c][0][s]),
-                        f64::from(n.b[c][1][s]),
-                        f64::from(n.b[c][2][s]),
-                    )
-                };
-                // (An empty slot's box runs from +∞ to −∞: always missed.)
-                if shaft.misses(corner(0), corner(1), delta) {
-                    continue;
-                }
-                if n.child[s] & LEAF != 0 {
-                    let (first, count) = ((n.child[s] & !LEAF) as usize, n.count[s] as usize);
-                    asked += count;
-                    if asked > PRIMS_MAX || !leaf(&self.prims[first..first + count]) {
-                        return false;
-                    }
-                } else if stack.try_push(n.child[s]).is_err() {
+        let q = shaft.in_lanes(delta, self.scale);
+        match self.lanes {
+            Choice::Narrow => shaft_walk(Narrow, &self.nodes, &self.prims, &q, &mut leaf),
+            #[cfg(all(feature = "avx2", target_arch = "x86_64"))]
+            Choice::Avx2(v3) => pulp::Simd::vectorize(
+                v3,
+                ShaftAvx2 {
+                    v3,
+                    nodes: &self.nodes,
+                    prims: &self.prims,
+                    q: &q,
+                    leaf: &mut leaf,
+                },
+            ),
+        }
+    }
+}
+
+/// `shaft_walk` in AVX2 lanes, as `pulp` runs it (see `walk::WalkAvx2`).
+#[cfg(all(feature = "avx2", target_arch = "x86_64"))]
+struct ShaftAvx2<'a, P, F> {
+    v3: pulp::x86::V3,
+    nodes: &'a [WideNode],
+    prims: &'a [P],
+    q: &'a ShaftBox,
+    leaf: &'a mut F,
+}
+
+#[cfg(all(feature = "avx2", target_arch = "x86_64"))]
+impl<P, F: FnMut(&[P]) -> bool> pulp::WithSimd for ShaftAvx2<'_, P, F> {
+    type Output = bool;
+
+    #[inline(always)]
+    fn with_simd<S: pulp::Simd>(self, _: S) -> bool {
+        let lanes = super::lanes::Avx2(self.v3);
+        shaft_walk(lanes, self.nodes, self.prims, self.q, self.leaf)
+    }
+}
+
+/// The walk of `Bvh::shaft_clear`: the boxes the shaft meets, slot by slot in each
+/// node, their leaves asked as they come.
+#[inline(always)]
+fn shaft_walk<L: Lanes, P>(
+    lanes: L,
+    nodes: &[WideNode],
+    prims: &[P],
+    q: &ShaftBox,
+    leaf: &mut impl FnMut(&[P]) -> bool,
+) -> bool {
+    let s = lanes.shaft(q);
+    let mut stack = ArrayVec::<u32, STACK>::new();
+    stack.push(0);
+    let (mut opened, mut asked) = (0, 0);
+    while let Some(i) = stack.pop() {
+        opened += 1;
+        if opened > NODES_MAX {
+            return false;
+        }
+        let n = &nodes[i as usize];
+        let mut met = !lanes.misses(&s, n) & ((1 << WIDTH) - 1);
+        while met != 0 {
+            let slot = met.trailing_zeros() as usize;
+            met &= met - 1;
+            if n.child[slot] & LEAF != 0 {
+                let (first, count) = ((n.child[slot] & !LEAF) as usize, n.count[slot] as usize);
+                asked += count;
+                if asked > PRIMS_MAX || !leaf(&prims[first..first + count]) {
                     return false;
                 }
+            } else if stack.try_push(n.child[slot]).is_err() {
+                return false;
             }
         }
-        true
     }
+    true
 }
 
 #[path = "shaft_tri.rs"]

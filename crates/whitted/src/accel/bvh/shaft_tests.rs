@@ -179,3 +179,94 @@ fn a_floor_point_under_a_light_misses_the_floor() {
     // A wall x = 5 behind the point: missed (every ray moves away from it).
     assert!(s.misses_plane(DVec3::new(5.0, 0.0, 0.0), DVec3::X, 1e-6));
 }
+
+/// A wide node holding the boxes `b` (low and high corners) in its first slots, the
+/// rest empty.
+pub(super) fn node_of(b: &[(DVec3, DVec3)]) -> WideNode {
+    let mut n = WideNode {
+        b: [[[f32::INFINITY; WIDTH]; 3], [[f32::NEG_INFINITY; WIDTH]; 3]],
+        child: [0; WIDTH],
+        count: [0; WIDTH],
+    };
+    for (s, (lo, hi)) in b.iter().enumerate() {
+        for axis in 0..3 {
+            n.b[0][axis][s] = down(lo[axis]);
+            n.b[1][axis][s] = up(hi[axis]);
+        }
+    }
+    n
+}
+
+#[test]
+fn the_lanes_miss_the_boxes_by_hand_as_the_f64_test_does() {
+    // The boxes of the first test, in slots 0 to 3: missed beyond the hull, met, missed
+    // by a face alone, met; slots 4 to 7 empty, missed.
+    let s = Shaft::new(DVec3::ZERO, &square()).unwrap();
+    let n = node_of(&[
+        (DVec3::new(9.5, 1.5, -0.5), DVec3::new(10.5, 2.5, 0.5)),
+        (DVec3::new(-0.1, 2.0, -0.1), DVec3::new(0.1, 2.1, 0.1)),
+        (DVec3::new(0.5, 1.0, -0.1), DVec3::new(0.6, 1.5, 0.1)),
+        (DVec3::new(0.25, 1.0, -0.1), DVec3::new(0.35, 1.5, 0.1)),
+    ]);
+    let q = s.in_lanes(1e-5, 10.5);
+    assert_eq!(Narrow.misses(&Narrow.shaft(&q), &n), 0b1111_0101);
+}
+
+#[test]
+fn the_lanes_widen_the_shaft_by_delta_and_no_more_than_their_allowance() {
+    // The face x = y/5 of the first test (unit normal (5, −1, 0)/√26, offset 0): a box
+    // whose corner least far along it, (x, 1.5), lies 0.9δ outside is met (the f64 test
+    // widens by δ, and so must the lanes: their own allowance, (scale + 1)·2⁻²⁰, is
+    // 0.58δ here); one 4δ outside is missed. The same at the hull's far edge (x up to
+    // 1 at y = 5): x from 1 + 0.9δ met, from 1 + 4δ missed.
+    let s = Shaft::new(DVec3::ZERO, &square()).unwrap();
+    let (delta, scale) = (1e-5, 5.1);
+    let at = |k: f64| {
+        let x = 0.3 + 26f64.sqrt() * k * delta / 5.0;
+        (DVec3::new(x, 1.0, -0.1), DVec3::new(x + 0.1, 1.5, 0.1))
+    };
+    let beyond = |k: f64| {
+        let x = 1.0 + k * delta;
+        (DVec3::new(x, 4.9, -0.1), DVec3::new(x + 0.1, 5.0, 0.1))
+    };
+    let b = [at(0.9), at(4.0), beyond(0.9), beyond(4.0)];
+    for (k, &(lo, hi)) in b.iter().enumerate() {
+        assert_eq!(s.misses(lo, hi, delta), k % 2 == 1, "box {k}");
+    }
+    let q = s.in_lanes(delta, scale);
+    assert_eq!(Narrow.misses(&Narrow.shaft(&q), &node_of(&b)), 0b1111_1010);
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    /// Random boxes about a random shaft from a point to a parallelogram: every box the
+    /// lanes find beyond the shaft, the f64 test (`Shaft::misses`, with the same δ)
+    /// finds beyond it too; so a shaft is never called clear that the f64 walk would
+    /// have found met. (The lanes may meet a box that the f64 test misses by less
+    /// than their allowance.)
+    #[test]
+    fn a_box_the_lanes_miss_the_f64_test_misses(
+        p in v3(),
+        c in (v3(), v3(), v3()),
+        boxes in proptest::collection::vec((v3(), 0.0f64..2.0, 0.0f64..2.0, 0.0f64..2.0), WIDTH),
+        used in 1..=WIDTH,
+    ) {
+        let (c0, e1, e2) = c;
+        let corners = [c0, c0 + e1, c0 + e1 + e2, c0 + e2];
+        let Some(s) = Shaft::new(p, &corners) else { return Ok(()) };
+        let b: Vec<(DVec3, DVec3)> = boxes[..used]
+            .iter()
+            .map(|&(lo, x, y, z)| (lo, lo + DVec3::new(x, y, z)))
+            .collect();
+        let n = node_of(&b);
+        let scale = 12.0;
+        let delta = PAD * (s.reach + scale + 1.0);
+        let mask = Narrow.misses(&Narrow.shaft(&s.in_lanes(delta, scale)), &n);
+        prop_assert_eq!(mask >> used, (1u32 << (WIDTH - used)) - 1);
+        for k in (0..used).filter(|k| mask & (1 << k) != 0) {
+            let corner = |c: usize| DVec3::from_array([0, 1, 2].map(|a| f64::from(n.b[c][a][k])));
+            prop_assert!(s.misses(corner(0), corner(1), delta), "slot {}", k);
+        }
+    }
+}
