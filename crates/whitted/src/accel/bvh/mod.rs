@@ -19,6 +19,7 @@ mod holder;
 mod lanes;
 mod node8;
 mod raybox;
+mod sah;
 mod shaft;
 mod walk;
 
