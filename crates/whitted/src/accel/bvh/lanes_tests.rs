@@ -45,20 +45,33 @@ fn component() -> impl Strategy<Value = f64> {
     ]
 }
 
+/// The corners of a node's eight boxes, in [-50, 50]³.
+fn boxes() -> impl Strategy<Value = Vec<(f64, f64, f64, f64, f64, f64)>> {
+    let c = || -50.0..50.0f64;
+    proptest::collection::vec((c(), c(), c(), c(), c(), c()), WIDTH)
+}
+
+/// The AVX2 lanes, or `None` (and a line saying the test is skipped) on a processor
+/// without AVX2.
+fn avx2() -> Option<Avx2> {
+    let lanes = pulp::x86::V3::try_new().map(Avx2);
+    if lanes.is_none() {
+        eprintln!("skipped: this processor has no AVX2");
+    }
+    lanes
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(2000))]
     #[test]
     fn avx2_lanes_give_the_narrow_lanes_bits(
-        corners in proptest::collection::vec(
-            (-50.0..50.0f64, -50.0..50.0f64, -50.0..50.0f64,
-             -50.0..50.0f64, -50.0..50.0f64, -50.0..50.0f64), WIDTH),
+        corners in boxes(),
         used in 1..=WIDTH,
         o in (-80.0..80.0f64, -80.0..80.0f64, -80.0..80.0f64),
         d in (component(), component(), component()),
         t_max in prop_oneof![Just(f32::INFINITY), 0.0..200.0f32],
     ) {
-        let Some(avx2) = pulp::x86::V3::try_new().map(Avx2) else {
-            eprintln!("skipped: this processor has no AVX2");
+        let Some(avx2) = avx2() else {
             return Ok(());
         };
         let n = node(&corners, used);
@@ -79,16 +92,13 @@ proptest! {
     /// mask from both lanes.
     #[test]
     fn avx2_lanes_miss_a_shaft_as_the_narrow_lanes_do(
-        corners in proptest::collection::vec(
-            (-50.0..50.0f64, -50.0..50.0f64, -50.0..50.0f64,
-             -50.0..50.0f64, -50.0..50.0f64, -50.0..50.0f64), WIDTH),
+        corners in boxes(),
         used in 1..=WIDTH,
         p in (-60.0..60.0f64, -60.0..60.0f64, -60.0..60.0f64),
         c in (-60.0..60.0f64, -60.0..60.0f64, -60.0..60.0f64),
         e in (-20.0..20.0f64, -20.0..20.0f64, -20.0..20.0f64, -20.0..20.0f64),
     ) {
-        let Some(avx2) = pulp::x86::V3::try_new().map(Avx2) else {
-            eprintln!("skipped: this processor has no AVX2");
+        let Some(avx2) = avx2() else {
             return Ok(());
         };
         let n = node(&corners, used);

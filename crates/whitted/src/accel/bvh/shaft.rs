@@ -91,9 +91,11 @@ impl Shaft {
         })
     }
 
-    /// Whether the box `lo`–`hi` lies beyond the shaft widened by `delta`.
-    #[inline]
-    pub fn misses(&self, lo: DVec3, hi: DVec3, delta: f64) -> bool {
+    /// Whether the box `lo`–`hi` lies beyond the shaft widened by `delta`, in f64. The
+    /// lanes' test (`in_lanes`, `Lanes::misses`) calls a box missed only where this
+    /// does; the tests check it against this.
+    #[cfg(test)]
+    pub(super) fn misses(&self, lo: DVec3, hi: DVec3, delta: f64) -> bool {
         if lo.cmpgt(self.hi + delta).any() || hi.cmplt(self.lo - delta).any() {
             return true;
         }
@@ -102,6 +104,34 @@ impl Shaft {
             let x = DVec3::select(n.cmpgt(DVec3::ZERO), lo, hi);
             n.dot(x) > d + delta
         })
+    }
+
+    /// The shaft widened by `delta` for the lanes' f32 test of a tree whose boxes'
+    /// coordinates are at most `scale` in magnitude: the box rounded outward, each
+    /// plane's normal rounded to nearest and its offset raised by the lanes' rounding.
+    /// A box the lanes find past a plane then lies past it widened by `delta`, as
+    /// `misses` asks: the f32 product n·x is off the exact one by at most about
+    /// 4·2⁻²⁴·|n|₁·scale (three roundings of the sums and products, one of n's
+    /// components), under half of the allowance 2⁻²⁰·(scale + 1).
+    pub(super) fn in_lanes(&self, delta: f64, scale: f64) -> ShaftBox {
+        let slack = (scale + 1.0) / (1u64 << 20) as f64;
+        ShaftBox {
+            lo: (self.lo - delta).to_array().map(down),
+            hi: (self.hi + delta).to_array().map(up),
+            planes: self
+                .planes
+                .iter()
+                .map(|&(n, d)| {
+                    // The low corner where n_i > 0 (as `misses` picks it), else the high one.
+                    let corner = n.to_array().map(|x| if x > 0.0 { 0 } else { 1 });
+                    (
+                        n.to_array().map(|x| x as f32),
+                        corner,
+                        up(d + delta + slack),
+                    )
+                })
+                .collect(),
+        }
     }
 }
 
@@ -141,36 +171,6 @@ impl Shaft {
         };
         let least = along.iter().fold(f64::INFINITY, |m, &x| m.min(x.abs()));
         Some((sign, least - slack))
-    }
-}
-
-impl Shaft {
-    /// The shaft widened by `delta` for the lanes' f32 test of a tree whose boxes'
-    /// coordinates are at most `scale` in magnitude: the box rounded outward, each
-    /// plane's normal rounded to nearest and its offset raised by the lanes' rounding.
-    /// A box the lanes find past a plane then lies past it widened by `delta`, as
-    /// `misses` asks: the f32 product n·x is off the exact one by at most about
-    /// 4·2⁻²⁴·|n|₁·scale (three roundings of the sums and products, one of n's
-    /// components), under half of the allowance 2⁻²⁰·(scale + 1).
-    pub(super) fn in_lanes(&self, delta: f64, scale: f64) -> ShaftBox {
-        let slack = (scale + 1.0) / (1u64 << 20) as f64;
-        ShaftBox {
-            lo: (self.lo - delta).to_array().map(down),
-            hi: (self.hi + delta).to_array().map(up),
-            planes: self
-                .planes
-                .iter()
-                .map(|&(n, d)| {
-                    // The low corner where n_i > 0 (as `misses` picks it), else the high one.
-                    let corner = n.to_array().map(|x| if x > 0.0 { 0 } else { 1 });
-                    (
-                        n.to_array().map(|x| x as f32),
-                        corner,
-                        up(d + delta + slack),
-                    )
-                })
-                .collect(),
-        }
     }
 }
 
