@@ -118,9 +118,9 @@ pub(super) struct ShaftSplat<V> {
     count: usize,
 }
 
-/// Slots 4h to 4h + 3 of a node's row of eight, in one register.
+/// Slots 4h to 4h + 3, one half of a node's row of eight, in one register.
 #[inline(always)]
-fn quarter(v: &[f32; WIDTH], h: usize) -> f32x4 {
+fn half_row(v: &[f32; WIDTH], h: usize) -> f32x4 {
     f32x4::from([v[4 * h], v[4 * h + 1], v[4 * h + 2], v[4 * h + 3]])
 }
 
@@ -144,7 +144,7 @@ impl Lanes for Narrow {
             let mut near = f32x4::splat(f32::NEG_INFINITY);
             let mut far = f32x4::splat(f32::INFINITY);
             for i in 0..3 {
-                let half = |v: &[f32; WIDTH]| quarter(v, h);
+                let half = |v: &[f32; WIDTH]| half_row(v, h);
                 let neg = r.neg[i] as usize;
                 let (a, b) = (half(&n.b[neg][i]), half(&n.b[1 - neg][i]));
                 near = near.fast_max((a - r.o_near[i]) * r.inv[i]);
@@ -161,7 +161,7 @@ impl Lanes for Narrow {
     fn misses(self, s: &ShaftSplat<f32x4>, n: &WideNode) -> u32 {
         let mut mask = 0;
         for h in 0..WIDTH / 4 {
-            let half = |v: &[f32; WIDTH]| quarter(v, h);
+            let half = |v: &[f32; WIDTH]| half_row(v, h);
             let mut out = half(&n.b[0][0]).cmp_gt(s.hi[0]);
             for i in 1..3 {
                 out |= half(&n.b[0][i]).cmp_gt(s.hi[i]);
